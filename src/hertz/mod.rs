@@ -1,0 +1,1 @@
+//! The Hertz contact ellipse (placeholder, being written).

@@ -1,0 +1,53 @@
+//! # wheelrail
+//!
+//! Railway wheel/rail contact geometry and Hertzian contact, after Onat, Voltr & Lata (2014),
+//! "Nonlinear wheel/rail contact geometry characteristics & determination of Hertzian contact".
+//!
+//! The pipeline is the module list:
+//!
+//! 1. [`profile`]: wheel and rail profiles (analytic S1002 and UIC60, or read from files),
+//!    their slopes and curvatures;
+//! 2. [`track`]: placing the wheels and rails of a wheelset on the track;
+//! 3. `rigid`: rigid contact search with the wheelset roll solved (paper Eqs. 2-5);
+//! 4. `quasi_elastic`: quasi-elastic contact search (paper Eqs. 6-8);
+//! 5. [`hertz`]: the Hertz contact ellipse (paper Eqs. 9-20);
+//!
+//! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
+//! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
+//!
+//! # Units
+//!
+//! Millimetres, newtons, megapascals (N/mm²) and radians everywhere inside and in every output.
+//! Scene keys and CSV columns carry their unit in the name (`gauge_mm`, `p0_MPa`, `roll_rad`);
+//! other units (`wheel_load_kN`, `young_GPa`) are converted once when a scene is loaded.
+//!
+//! # Frames and signs
+//!
+//! Track frame: x forward, **y lateral positive to the left**, **z up**; origin on the track
+//! centre line at the height of the top of the (inclined) rails. The left rail and wheel are at
+//! y > 0. A wheelset shift `y_ws > 0` moves the wheelset to the left (the left flange approaches
+//! the left rail). Roll is a right-hand rotation about +x: positive roll lifts the left wheel.
+//!
+//! Each wheel and rail is described in its own *mirrored* side frame whose lateral coordinate
+//! grows towards the field side (away from the track centre), so a symmetric wheelset gives the
+//! same numbers on both sides at `y_ws = 0`:
+//!
+//! * wheel: `s` (mm) from the taping line, positive towards the field side (the flange is at
+//!   s < 0); `F(s)` (mm) the radius increase over the nominal radius, positive towards the
+//!   flange tip. The rolling radius is `r = r0 + F(s)`.
+//! * rail: lateral coordinate positive towards the field side, height positive up.
+//! * contact angle `gamma`: angle of the tangent plane to the track plane in the side frame,
+//!   positive on the conical tread and on the flange (about +0.03 rad on the tread, +1.22 rad
+//!   on the S1002 flank); `tan(gamma) = -dF/ds` for the wheel, `dz/dy` for the rail.
+//!
+//! The full statement lives in `ARCHITECTURE.md`; every CSV header repeats it.
+
+pub mod error;
+pub mod hertz;
+pub mod pipeline;
+pub mod profile;
+pub mod report;
+pub mod scene;
+pub mod track;
+
+pub use error::Error;

@@ -1,0 +1,2 @@
+//! The `wheelrail` command line (placeholder, being written).
+fn main() {}

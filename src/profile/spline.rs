@@ -1,0 +1,1 @@
+//! Cubic smoothing splines for sampled profiles (placeholder, being written).

@@ -1,0 +1,1 @@
+//! Reports: CSV tables, charts, HTML (placeholder, being written).

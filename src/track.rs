@@ -1,0 +1,1 @@
+//! Track placement (placeholder, being written).
