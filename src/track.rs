@@ -1,1 +1,574 @@
-//! Track placement (placeholder, being written).
+//! Placing the wheels and rails of a wheelset on the track (standard-gauge layout of
+//! `conventions.md`).
+//!
+//! Each side is described in its *side frame*: `Y` = |y| in the track frame (mm, growing
+//! towards the field side) and `Z` = z (mm, up). The left side maps to the track frame as
+//! `y = Y`, the right side as `y = -Y`.
+//!
+//! * A rail is rotated by its inclination towards the track centre, then translated so that
+//!   its highest point is at `Z = 0` and its gauge point (the most gauge-side point of the head
+//!   within [`TrackLayout::gauge_point_depth_mm`] below the top) is at `Y = gauge / 2`.
+//! * A wheel is fixed to the wheelset: its taping line is at `Y = flange_back / 2 + 70 mm`
+//!   from the wheelset centre and its rolling circle there has the nominal radius `r0`.
+
+use crate::profile::{Profile, ProfileKind};
+use std::fmt;
+
+/// Distance from the inner face of a wheel to its taping line (EN 13715), mm.
+pub const TAPING_LINE_FROM_INNER_FACE_MM: f64 = 70.0;
+
+/// Sampling step used to find the top and the gauge point before refining them (mm).
+/// Fine enough that no local extremum of a rail head (radii >= 5 mm) is stepped over.
+const PLACEMENT_SCAN_STEP_MM: f64 = 0.01;
+/// Placed rail slopes steeper than this (|dZ/dY|, about 88.9 degrees) are no longer treated
+/// as part of the running surface: a vertical or undercut face cannot be written as Z(Y).
+pub const MAX_RAIL_SLOPE: f64 = 50.0;
+
+/// A rail inclination towards the track centre, as an angle in radians.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Inclination(pub f64);
+
+impl Inclination {
+    /// Parses `"1:40"`, `"1:20"`, `"vertical"` (or `"0"`), or an angle in radians (`"0.025"`).
+    ///
+    /// # Errors
+    /// A message saying what was expected when the text is none of these or the angle is not
+    /// in `[0, 0.2]` rad (an inclination outward or above about 11 degrees is not a track).
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::track::Inclination;
+    /// let i = Inclination::parse("1:40").unwrap();
+    /// assert!((i.0 - 0.0249948).abs() < 1e-7);
+    /// ```
+    pub fn parse(text: &str) -> Result<Inclination, String> {
+        let t = text.trim();
+        let angle = if t.eq_ignore_ascii_case("vertical") || t.eq_ignore_ascii_case("upright") {
+            0.0
+        } else if let Some((one, n)) = t.split_once(':') {
+            let one: f64 = one.trim().parse().map_err(|_| expected(text))?;
+            let n: f64 = n.trim().parse().map_err(|_| expected(text))?;
+            if !(one > 0.0 && n > 0.0 && one.is_finite() && n.is_finite()) {
+                return Err(expected(text));
+            }
+            (one / n).atan()
+        } else {
+            t.parse::<f64>().map_err(|_| expected(text))?
+        };
+        if !(0.0..=0.2).contains(&angle) {
+            return Err(format!(
+                "inclination {text:?} is {angle} rad; expected 0 to 0.2 rad towards the track centre"
+            ));
+        }
+        Ok(Inclination(angle))
+    }
+}
+
+fn expected(text: &str) -> String {
+    format!(
+        "inclination {text:?} not understood; expected \"1:40\", \"1:20\", \"1:30\", \"vertical\" or an angle in radians"
+    )
+}
+
+/// Dimensions of the track and wheelset layout (all mm).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrackLayout {
+    /// Track gauge between the gauge points.
+    pub gauge_mm: f64,
+    /// Depth below the top of rail at which the gauge is measured (14 mm).
+    pub gauge_point_depth_mm: f64,
+    /// Rail inclination towards the track centre.
+    pub inclination: Inclination,
+    /// Distance between the inner faces of the wheels (flange-back, 1360 mm).
+    pub flange_back_mm: f64,
+}
+
+impl TrackLayout {
+    /// Lateral position of the taping lines from the wheelset centre, `Y` in the side frame.
+    pub fn taping_line_mm(&self) -> f64 {
+        0.5 * self.flange_back_mm + TAPING_LINE_FROM_INNER_FACE_MM
+    }
+}
+
+/// Why a rail could not be placed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlacementError {
+    /// The profile has no point within the gauge-point depth below its top.
+    NoGaugePoint {
+        /// The profile's name.
+        profile: String,
+    },
+    /// A wheel profile was given where a rail was expected, or the reverse.
+    WrongKind {
+        /// The profile's name.
+        profile: String,
+        /// What was expected.
+        expected: ProfileKind,
+    },
+}
+
+impl fmt::Display for PlacementError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PlacementError::NoGaugePoint { profile } => write!(
+                f,
+                "rail profile {profile}: no point of the head lies within the gauge-point depth below its top"
+            ),
+            PlacementError::WrongKind { profile, expected } => {
+                write!(f, "profile {profile} is not a {expected} profile")
+            }
+        }
+    }
+}
+
+impl std::error::Error for PlacementError {}
+
+/// A point of a placed rail, in the side frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RailPoint {
+    /// The rail profile's own lateral coordinate of the point (mm).
+    pub u: f64,
+    /// Height `Z` (mm).
+    pub z: f64,
+    /// `dZ/dY`: tangent of the rail's contact angle in the side frame.
+    pub slope: f64,
+    /// Convex-positive curvature (1/mm).
+    pub curvature: f64,
+}
+
+/// A rail rotated by its inclination and translated into the side frame.
+#[derive(Debug, Clone)]
+pub struct PlacedRail {
+    profile: Profile,
+    cos: f64,
+    sin: f64,
+    /// Translation added after the rotation: `(Y, Z) = R (u, v) + offset`.
+    offset: [f64; 2],
+    /// Profile coordinates `(u_lo, u_hi)` of the running-surface part (see [`MAX_RAIL_SLOPE`]).
+    surface: (f64, f64),
+    gauge_point: [f64; 2],
+    top: [f64; 2],
+}
+
+impl PlacedRail {
+    /// Places `profile` (upright, or already inclined by `profile_inclination`) for a track
+    /// with `layout`, on the side frame's positive Y.
+    ///
+    /// # Errors
+    /// [`PlacementError`] when the profile is not a rail or has no gauge point.
+    pub fn place(
+        profile: Profile,
+        profile_inclination: Inclination,
+        layout: &TrackLayout,
+    ) -> Result<PlacedRail, PlacementError> {
+        if profile.kind() != ProfileKind::Rail {
+            return Err(PlacementError::WrongKind {
+                profile: profile.name().to_string(),
+                expected: ProfileKind::Rail,
+            });
+        }
+        // Counter-clockwise in (Y field-side, Z up) tilts the head towards the track centre.
+        let angle = layout.inclination.0 - profile_inclination.0;
+        let (sin, cos) = angle.sin_cos();
+        let mut rail = PlacedRail {
+            profile,
+            cos,
+            sin,
+            offset: [0.0, 0.0],
+            surface: (0.0, 0.0),
+            gauge_point: [0.0, 0.0],
+            top: [0.0, 0.0],
+        };
+        let (lo, hi) = rail.profile.domain();
+        let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
+        let us: Vec<f64> = (0..=n)
+            .map(|i| lo + (hi - lo) * i as f64 / n as f64)
+            .collect();
+
+        // Top: maximum of Z(u), refined by bisection on dZ/du (concave near the top).
+        let i_top = (0..us.len())
+            .max_by(|&a, &b| rail.rotated(us[a])[1].total_cmp(&rail.rotated(us[b])[1]))
+            .unwrap_or(0);
+        let u_top = refine_extremum(
+            |u| rail.rotated_tangent(u)[1],
+            us[i_top.saturating_sub(1)],
+            us[(i_top + 1).min(us.len() - 1)],
+        );
+        let top = rail.rotated(u_top);
+
+        // Gauge point: the most gauge-side (smallest Y) point with Z >= top - depth.
+        let floor = top[1] - layout.gauge_point_depth_mm;
+        let mut best: Option<(usize, f64)> = None;
+        for (i, &u) in us.iter().enumerate() {
+            let p = rail.rotated(u);
+            if p[1] >= floor && best.is_none_or(|(_, y)| p[0] < y) {
+                best = Some((i, p[0]));
+            }
+        }
+        let Some((i_gp, _)) = best else {
+            return Err(PlacementError::NoGaugePoint {
+                profile: rail.profile.name().to_string(),
+            });
+        };
+        let below = |i: usize| rail.rotated(us[i])[1] < floor;
+        let u_gp = if i_gp > 0 && below(i_gp - 1) {
+            // The depth line cuts the head between two samples: bisect Z(u) = floor.
+            bisect(|u| rail.rotated(u)[1] - floor, us[i_gp - 1], us[i_gp])
+        } else if i_gp + 1 < us.len() && below(i_gp + 1) {
+            bisect(|u| rail.rotated(u)[1] - floor, us[i_gp + 1], us[i_gp])
+        } else {
+            refine_extremum(
+                |u| rail.rotated_tangent(u)[0],
+                us[i_gp.saturating_sub(1)],
+                us[(i_gp + 1).min(us.len() - 1)],
+            )
+        };
+        let gp = rail.rotated(u_gp);
+        rail.offset = [0.5 * layout.gauge_mm - gp[0], -top[1]];
+        rail.gauge_point = rail.to_side(gp);
+        rail.top = rail.to_side(top);
+
+        // Running surface: the connected stretch around the top where Y(u) increases and the
+        // placed slope stays below MAX_RAIL_SLOPE.
+        let steep = |u: f64| {
+            let [ty, tz] = rail.rotated_tangent(u);
+            ty <= 0.0 || tz.abs() > MAX_RAIL_SLOPE * ty
+        };
+        let mut i_lo = i_top;
+        while i_lo > 0 && !steep(us[i_lo - 1]) {
+            i_lo -= 1;
+        }
+        let mut i_hi = i_top;
+        while i_hi + 1 < us.len() && !steep(us[i_hi + 1]) {
+            i_hi += 1;
+        }
+        rail.surface = (us[i_lo], us[i_hi]);
+        Ok(rail)
+    }
+
+    /// The profile this rail was placed from.
+    pub fn profile(&self) -> &Profile {
+        &self.profile
+    }
+
+    /// The gauge point `(Y, Z)` in the side frame: `Y = gauge / 2` by construction.
+    pub fn gauge_point(&self) -> [f64; 2] {
+        self.gauge_point
+    }
+
+    /// The highest point `(Y, Z)` of the placed head: `Z = 0` by construction.
+    pub fn top(&self) -> [f64; 2] {
+        self.top
+    }
+
+    /// The side-frame interval `(Y_lo, Y_hi)` on which [`PlacedRail::at`] answers.
+    pub fn y_range(&self) -> (f64, f64) {
+        (
+            self.to_side(self.rotated(self.surface.0))[0],
+            self.to_side(self.rotated(self.surface.1))[0],
+        )
+    }
+
+    /// The placed point `(Y, Z)` of the profile coordinate `u`.
+    #[inline]
+    pub fn point_of(&self, u: f64) -> [f64; 2] {
+        self.to_side(self.rotated(u))
+    }
+
+    /// The rail surface above the side-frame lateral position `y` (mm), or `None` outside
+    /// [`PlacedRail::y_range`].
+    ///
+    /// Solves `Y(u) = y` by Newton's method from the linearised inverse (2-3 steps to 1e-13 mm:
+    /// `Y(u)` is the profile rotated by a few hundredths of a radian).
+    #[inline]
+    pub fn at(&self, y: f64) -> Option<RailPoint> {
+        let (y_lo, y_hi) = self.y_range();
+        if !(y_lo..=y_hi).contains(&y) {
+            return None;
+        }
+        let target = y - self.offset[0];
+        let (lo, hi) = self.surface;
+        let mut u = (target / self.cos).clamp(lo, hi);
+        let mut value = self.profile.eval(u);
+        for _ in 0..MAX_NEWTON_STEPS {
+            let yu = self.cos * u - self.sin * value[0];
+            let dyu = self.cos - self.sin * value[1];
+            let step = (yu - target) / dyu;
+            u = (u - step).clamp(lo, hi);
+            value = self.profile.eval(u);
+            if step.abs() < INVERSE_TOL_MM {
+                break;
+            }
+        }
+        let [v, d1, d2] = value;
+        let ty = self.cos - self.sin * d1;
+        let tz = self.sin + self.cos * d1;
+        Some(RailPoint {
+            u,
+            z: self.sin * u + self.cos * v + self.offset[1],
+            slope: tz / ty,
+            curvature: crate::profile::convex_curvature(d1, d2),
+        })
+    }
+
+    #[inline]
+    fn rotated(&self, u: f64) -> [f64; 2] {
+        let v = self.profile.eval(u)[0];
+        [self.cos * u - self.sin * v, self.sin * u + self.cos * v]
+    }
+
+    #[inline]
+    fn rotated_tangent(&self, u: f64) -> [f64; 2] {
+        let d1 = self.profile.eval(u)[1];
+        [self.cos - self.sin * d1, self.sin + self.cos * d1]
+    }
+
+    #[inline]
+    fn to_side(&self, p: [f64; 2]) -> [f64; 2] {
+        [p[0] + self.offset[0], p[1] + self.offset[1]]
+    }
+}
+
+/// Newton steps allowed when inverting the rotated rail; 2-3 are used.
+const MAX_NEWTON_STEPS: usize = 8;
+/// Step size below which the inversion of the rotated rail has converged (mm).
+const INVERSE_TOL_MM: f64 = 1e-13;
+
+/// Bisection for a sign change of `f` between `a` and `b` (60 halvings: below 1e-15 mm for
+/// any bracket shorter than 1 m).
+fn bisect(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    let (mut a, mut b) = (a, b);
+    let fa = f(a);
+    for _ in 0..60 {
+        let m = 0.5 * (a + b);
+        if (f(m) > 0.0) == (fa > 0.0) {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// Zero of a derivative `df` between `a` and `b` if it changes sign there, else the end
+/// with the smaller |df|.
+fn refine_extremum(df: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    if (df(a) > 0.0) != (df(b) > 0.0) {
+        bisect(df, a, b)
+    } else if df(a).abs() < df(b).abs() {
+        a
+    } else {
+        b
+    }
+}
+
+/// A wheel fixed to the wheelset, in the side frame relative to the wheelset centre.
+#[derive(Debug, Clone)]
+pub struct PlacedWheel {
+    profile: Profile,
+    taping_line_mm: f64,
+    nominal_radius_mm: f64,
+}
+
+/// A point of a placed wheel relative to the wheelset centre (side frame, no roll).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelPoint {
+    /// Lateral `Y` from the wheelset centre (mm).
+    pub y: f64,
+    /// Vertical `Z` from the axle (mm): `-(r0 + F(s))`.
+    pub z: f64,
+    /// `dZ/dY` (= `-dF/ds`): tangent of the wheel's contact angle without roll.
+    pub slope: f64,
+    /// Convex-positive curvature (1/mm).
+    pub curvature: f64,
+}
+
+impl PlacedWheel {
+    /// Fixes `profile` to the wheelset with its taping line at `layout.taping_line_mm()`.
+    ///
+    /// # Errors
+    /// [`PlacementError::WrongKind`] when the profile is not a wheel.
+    pub fn place(
+        profile: Profile,
+        nominal_radius_mm: f64,
+        layout: &TrackLayout,
+    ) -> Result<PlacedWheel, PlacementError> {
+        if profile.kind() != ProfileKind::Wheel {
+            return Err(PlacementError::WrongKind {
+                profile: profile.name().to_string(),
+                expected: ProfileKind::Wheel,
+            });
+        }
+        Ok(PlacedWheel {
+            profile,
+            taping_line_mm: layout.taping_line_mm(),
+            nominal_radius_mm,
+        })
+    }
+
+    /// The wheel profile.
+    pub fn profile(&self) -> &Profile {
+        &self.profile
+    }
+
+    /// Nominal rolling radius r0 at the taping line (mm).
+    pub fn nominal_radius_mm(&self) -> f64 {
+        self.nominal_radius_mm
+    }
+
+    /// Lateral position of the taping line from the wheelset centre (mm).
+    pub fn taping_line_mm(&self) -> f64 {
+        self.taping_line_mm
+    }
+
+    /// The wheel point at profile coordinate `s` (mm), relative to the wheelset centre.
+    #[inline]
+    pub fn at(&self, s: f64) -> WheelPoint {
+        let [f, d1, d2] = self.profile.eval(s);
+        WheelPoint {
+            y: self.taping_line_mm + s,
+            z: -(self.nominal_radius_mm + f),
+            slope: -d1,
+            curvature: crate::profile::convex_curvature(d1, d2),
+        }
+    }
+}
+
+/// Left or right side of the track.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Side {
+    /// y > 0.
+    Left,
+    /// y < 0.
+    Right,
+}
+
+impl Side {
+    /// +1 for the left side, -1 for the right: track `y = sign * Y`.
+    pub fn sign(self) -> f64 {
+        match self {
+            Side::Left => 1.0,
+            Side::Right => -1.0,
+        }
+    }
+
+    /// `"left"` or `"right"`, the CSV column prefix.
+    pub fn name(self) -> &'static str {
+        match self {
+            Side::Left => "left",
+            Side::Right => "right",
+        }
+    }
+}
+
+/// One side of the track: a wheel and the rail under it.
+#[derive(Debug, Clone)]
+pub struct SidePair {
+    /// The wheel, fixed to the wheelset.
+    pub wheel: PlacedWheel,
+    /// The placed rail.
+    pub rail: PlacedRail,
+}
+
+/// Both sides of a wheelset on its track.
+#[derive(Debug, Clone)]
+pub struct Placement {
+    /// The layout the sides were placed with.
+    pub layout: TrackLayout,
+    /// Left side (y > 0).
+    pub left: SidePair,
+    /// Right side (y < 0).
+    pub right: SidePair,
+}
+
+impl Placement {
+    /// The side pair of `side`.
+    pub fn side(&self, side: Side) -> &SidePair {
+        match side {
+            Side::Left => &self.left,
+            Side::Right => &self.right,
+        }
+    }
+
+    /// Vertical offset that brings each wheel of the centred, unrolled wheelset down onto
+    /// its rail: the smallest gap between wheel and rail with the axle at height `r0`
+    /// (scanned every 0.01 mm). Used to draw the profiles in contact; the contact search
+    /// solves the real position.
+    pub fn resting_gap(&self, side: Side) -> f64 {
+        let pair = self.side(side);
+        let r0 = pair.wheel.nominal_radius_mm();
+        let (lo, hi) = pair.wheel.profile().domain();
+        let n = ((hi - lo) / 0.01).ceil() as usize;
+        (0..=n)
+            .filter_map(|i| {
+                let p = pair.wheel.at(lo + (hi - lo) * i as f64 / n as f64);
+                pair.rail.at(p.y).map(|r| r0 + p.z - r.z)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn paper_layout() -> TrackLayout {
+        TrackLayout {
+            gauge_mm: 1435.0,
+            gauge_point_depth_mm: 14.0,
+            inclination: Inclination::parse("1:40").unwrap(),
+            flange_back_mm: 1360.0,
+        }
+    }
+
+    #[test]
+    fn uic60_at_1_in_40_has_its_top_43_03_mm_field_side_of_the_gauge_point() {
+        let rail =
+            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+        // Gauge point exactly at half the gauge (bisection to 1e-15).
+        assert!((rail.gauge_point()[0] - 717.5).abs() < 1e-9);
+        assert!((rail.gauge_point()[1] + 14.0).abs() < 1e-9);
+        assert!(rail.top()[1].abs() < 1e-12);
+        // conventions.md: 43.03 mm (2 decimals), so 760.53 from the track centre.
+        let offset = rail.top()[0] - rail.gauge_point()[0];
+        assert!((offset - 43.03).abs() < 0.005, "{offset}");
+    }
+
+    #[test]
+    fn top_offsets_for_other_inclinations() {
+        // conventions.md: upright 35.98 mm, 1:20 46.5 mm (as many decimals as given).
+        for (incl, expected, tol) in [("vertical", 35.98, 0.005), ("1:20", 46.5, 0.05)] {
+            let layout = TrackLayout {
+                inclination: Inclination::parse(incl).unwrap(),
+                ..paper_layout()
+            };
+            let rail = PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &layout).unwrap();
+            let offset = rail.top()[0] - rail.gauge_point()[0];
+            assert!((offset - expected).abs() < tol, "{incl}: {offset}");
+        }
+    }
+
+    #[test]
+    fn rail_inverse_is_exact() {
+        let rail =
+            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+        let (lo, hi) = rail.profile().domain();
+        for i in 0..=200 {
+            let u = lo + (hi - lo) * f64::from(i) / 200.0;
+            let p = rail.point_of(u);
+            if let Some(r) = rail.at(p[0]) {
+                assert!((r.z - p[1]).abs() < 1e-10, "u = {u}");
+            }
+        }
+    }
+
+    #[test]
+    fn inclination_parsing() {
+        assert!(Inclination::parse("vertical").unwrap().0.abs() < 1e-15);
+        assert!((Inclination::parse("1:20").unwrap().0 - 0.05f64.atan()).abs() < 1e-15);
+        assert!((Inclination::parse("0.025").unwrap().0 - 0.025).abs() < 1e-15);
+        assert!(Inclination::parse("1:0").is_err());
+        assert!(Inclination::parse("steep").is_err());
+        assert!(Inclination::parse("-0.1").is_err());
+    }
+}

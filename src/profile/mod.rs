@@ -1,8 +1,24 @@
 //! Wheel and rail profiles: analytic definitions (S1002, UIC60) and sampled profiles read
 //! from files, with their heights, slopes and curvatures.
+//!
+//! A [`Profile`] is a curve `v(u)` in its own side frame (see the crate docs):
+//!
+//! * wheel: `u = s` (mm) from the taping line, + towards the field side; `v = F(s)` (mm), the
+//!   radius increase, + towards the flange tip;
+//! * rail: `u = y` (mm) lateral, + towards the field side; `v = z` (mm) height, + up.
+//!
+//! In both frames the vertical coordinate grows *towards the other body*'s side of the
+//! surface only for the wheel; the functions below hide that: [`Profile::tan_gamma`] is
+//! positive on a tread sloping down towards the field side for both, and
+//! [`Profile::convex_curvature`] is positive where the surface bulges towards the other body
+//! (wheel flange tip, rail crown).
 
 pub mod read;
+pub mod s1002;
 pub mod spline;
+pub mod uic60;
+
+use spline::SmoothingSpline;
 
 /// Whether a profile describes a wheel or a rail; decides its side frame (see the crate docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -20,5 +36,232 @@ impl std::fmt::Display for ProfileKind {
             ProfileKind::Wheel => "wheel",
             ProfileKind::Rail => "rail",
         })
+    }
+}
+
+/// Where a profile comes from, for the report's provenance table.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Source {
+    /// A definition built into wheelrail, described in words.
+    Definition(&'static str),
+    /// A profile file, with the SHA-256 of its bytes (hex).
+    File {
+        /// The path as given in the scene.
+        path: String,
+        /// SHA-256 of the file's bytes, lower-case hex.
+        sha256: String,
+    },
+}
+
+impl std::fmt::Display for Source {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Source::Definition(d) => f.write_str(d),
+            Source::File { path, sha256 } => write!(f, "{path} (sha256 {sha256})"),
+        }
+    }
+}
+
+/// The shape of a profile: an analytic definition or a spline through sampled points.
+#[derive(Debug, Clone)]
+enum Shape {
+    S1002,
+    Uic60,
+    Sampled(Box<SmoothingSpline>),
+}
+
+/// A wheel or rail profile: `v(u)` with exact or spline derivatives, in its side frame.
+#[derive(Debug, Clone)]
+pub struct Profile {
+    kind: ProfileKind,
+    name: String,
+    source: Source,
+    shape: Shape,
+}
+
+/// Names of the built-in profiles accepted in scenes and by `wheelrail profile`.
+pub const BUILT_IN: [&str; 2] = ["S1002", "UIC60E1"];
+
+impl Profile {
+    /// The S1002 wheel (EN 13715, 28 mm flange height, 32.5 mm flange thickness).
+    pub fn s1002() -> Profile {
+        Profile {
+            kind: ProfileKind::Wheel,
+            name: "S1002".into(),
+            source: Source::Definition(
+                "S1002 (EN 13715, flange 28 / 32.5 mm), piecewise analytic definition (DLR, H. Netter)",
+            ),
+            shape: Shape::S1002,
+        }
+    }
+
+    /// The UIC60 (60E1) rail head, upright (EN 13674-1: R300, R80, R13, 1:20 flank).
+    pub fn uic60e1() -> Profile {
+        Profile {
+            kind: ProfileKind::Rail,
+            name: "UIC60E1".into(),
+            source: Source::Definition(
+                "UIC60 / 60E1 head (EN 13674-1): arcs R300, R80, R13 and 1:20 flank, upright",
+            ),
+            shape: Shape::Uic60,
+        }
+    }
+
+    /// A built-in profile by name (case-insensitive: `S1002`, `UIC60E1`, also `UIC60`, `60E1`).
+    pub fn built_in(name: &str) -> Option<Profile> {
+        match name.to_ascii_uppercase().as_str() {
+            "S1002" => Some(Profile::s1002()),
+            "UIC60E1" | "UIC60" | "60E1" => Some(Profile::uic60e1()),
+            _ => None,
+        }
+    }
+
+    /// A profile through sampled points, with a cubic smoothing spline of parameter
+    /// `smoothing` (0 interpolates; see [`spline::SmoothingSpline`]).
+    ///
+    /// # Errors
+    /// [`read::ReadError`] when the spline cannot be fitted to the points.
+    pub fn from_points(
+        points: read::PointProfile,
+        smoothing: f64,
+    ) -> Result<Profile, read::ReadError> {
+        let (x, y): (Vec<f64>, Vec<f64>) = points.points.iter().map(|p| (p[0], p[1])).unzip();
+        let spline = SmoothingSpline::fit(&x, &y, smoothing)
+            .map_err(|e| read::ReadError::spline(&points.source.path, e))?;
+        let name = std::path::Path::new(&points.source.path)
+            .file_name()
+            .map_or_else(
+                || points.source.path.clone(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+        Ok(Profile {
+            kind: points.kind,
+            name,
+            source: Source::File {
+                path: points.source.path.clone(),
+                sha256: points.source.sha256.clone(),
+            },
+            shape: Shape::Sampled(Box::new(spline)),
+        })
+    }
+
+    /// Wheel or rail.
+    pub fn kind(&self) -> ProfileKind {
+        self.kind
+    }
+
+    /// A short name (built-in name or file name).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Where the profile comes from.
+    pub fn source(&self) -> &Source {
+        &self.source
+    }
+
+    /// The lateral extent `(u_min, u_max)` of the definition (mm).
+    pub fn domain(&self) -> (f64, f64) {
+        match &self.shape {
+            Shape::S1002 => (s1002::S_MIN, s1002::S_MAX),
+            Shape::Uic60 => (-uic60::half_width(), uic60::half_width()),
+            Shape::Sampled(sp) => sp.domain(),
+        }
+    }
+
+    /// `[v, dv/du, d2v/du2]` at `u` (mm), `u` clamped to the domain.
+    ///
+    /// # Units
+    /// mm, dimensionless, 1/mm.
+    #[inline]
+    pub fn eval(&self, u: f64) -> [f64; 3] {
+        match &self.shape {
+            Shape::S1002 => s1002::eval(u),
+            Shape::Uic60 => uic60::eval(u),
+            Shape::Sampled(sp) => {
+                let (lo, hi) = sp.domain();
+                sp.eval(u.clamp(lo, hi))
+            }
+        }
+    }
+
+    /// Tangent of the profile's own contact angle at `u` (no inclination, no roll): positive
+    /// where the surface falls towards the field side as a coned tread does
+    /// (`-dF/ds` for a wheel; for a rail `dz/dy`, which is positive where the rail surface
+    /// rises towards the field side, matching a wheel tread that touches it there).
+    ///
+    /// # Example
+    /// ```
+    /// let w = wheelrail::profile::Profile::s1002();
+    /// assert!((w.tan_gamma(0.0) - 0.03359).abs() < 1e-5);
+    /// ```
+    pub fn tan_gamma(&self, u: f64) -> f64 {
+        let d1 = self.eval(u)[1];
+        match self.kind {
+            ProfileKind::Wheel => -d1,
+            ProfileKind::Rail => d1,
+        }
+    }
+
+    /// Curvature of the profile curve at `u` (1/mm), positive where the surface is convex
+    /// towards the other body (S1002 flange tip +1/12, UIC60 crown +1/300).
+    pub fn convex_curvature(&self, u: f64) -> f64 {
+        let [_, d1, d2] = self.eval(u);
+        convex_curvature(d1, d2)
+    }
+
+    /// Section joints or spline knots that lie inside the domain (mm), increasing. Analytic
+    /// profiles give their section joints; sampled ones give nothing (their knots are
+    /// everywhere).
+    pub fn joints(&self) -> Vec<f64> {
+        match &self.shape {
+            Shape::S1002 => {
+                let mut j = s1002::JOINTS.to_vec();
+                j.reverse();
+                j
+            }
+            Shape::Uic60 => uic60::joints().to_vec(),
+            Shape::Sampled(_) => Vec::new(),
+        }
+    }
+
+    /// Samples the profile every `step_mm` over its domain (both ends included), plus the
+    /// section joints, as `[u, v, tan_gamma, convex_curvature]` rows.
+    pub fn sample(&self, step_mm: f64) -> Vec<[f64; 4]> {
+        let (lo, hi) = self.domain();
+        let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
+        let mut us: Vec<f64> = (0..=n).map(|i| (lo + i as f64 * step_mm).min(hi)).collect();
+        us.extend(self.joints());
+        us.sort_by(f64::total_cmp);
+        us.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+        us.into_iter()
+            .map(|u| {
+                let [v, d1, d2] = self.eval(u);
+                [u, v, self.tan_gamma(u), convex_curvature(d1, d2)]
+            })
+            .collect()
+    }
+}
+
+/// Curvature of a graph `v(u)` from its derivatives, positive where the surface is convex
+/// towards the other body (`-v'' / (1 + v'^2)^(3/2)`; both side frames have `v''` < 0 on a
+/// convex bump).
+#[inline]
+pub fn convex_curvature(d1: f64, d2: f64) -> f64 {
+    -d2 / (1.0 + d1 * d1).powf(1.5)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn convex_curvatures_have_the_documented_signs() {
+        let w = Profile::s1002();
+        // Flange tip arc R12: +1/12 at its apex (exact arc).
+        assert!((w.convex_curvature(-55.0) - 1.0 / 12.0).abs() < 1e-12);
+        let r = Profile::uic60e1();
+        assert!((r.convex_curvature(0.0) - 1.0 / 300.0).abs() < 1e-12);
+        assert!((r.convex_curvature(30.0) - 1.0 / 13.0).abs() < 1e-9);
     }
 }
