@@ -1,11 +1,652 @@
-//! Scene files (placeholder, being written).
+//! Scene files: a TOML description of one run (profiles, track, load, sweep, outputs).
+//!
+//! [`RawScene`] mirrors the file exactly (unknown keys are rejected); [`Scene::from_toml`]
+//! checks every value once and converts units, so nothing downstream re-checks. See the
+//! README for the format; `reports/paper/scene.toml` is the paper's scene.
 
-/// Error in a scene file.
+use crate::profile::{Profile, ProfileKind, read};
+use crate::track::{Inclination, TrackLayout};
+use serde::Deserialize;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// The largest number of lateral positions a sweep may have. A sweep of a million positions
+/// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
+pub const MAX_SWEEP_POSITIONS: usize = 100_001;
+
+/// Default smoothing parameter of the spline through a measured profile, mm^3 (see
+/// [`crate::profile::spline`]); 0 interpolates.
+pub const DEFAULT_SMOOTHING_MM3: f64 = 0.0;
+
+/// An error in a scene: the file, the key (dotted path) where known, and what was expected.
 #[derive(Debug)]
-pub struct SceneError;
+pub enum SceneError {
+    /// The scene file could not be read.
+    Io {
+        /// The scene file.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed, has an unknown key or a value of the wrong type.
+    Syntax {
+        /// The scene file.
+        path: String,
+        /// The parser's message (names the key, line and column).
+        message: String,
+    },
+    /// A value is out of its allowed range or inconsistent with another.
+    Invalid {
+        /// The scene file.
+        path: String,
+        /// The dotted key, e.g. `track.gauge_mm`.
+        key: &'static str,
+        /// What is wrong and what was expected.
+        message: String,
+    },
+    /// A profile named by the scene could not be read or placed.
+    Profile {
+        /// The scene file.
+        path: String,
+        /// The dotted key naming the profile.
+        key: &'static str,
+        /// The reader's or placement's error.
+        message: String,
+    },
+}
 
-impl std::fmt::Display for SceneError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("scene error")
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SceneError::Io { path, source } => {
+                write!(f, "{}: cannot read scene: {source}", path.display())
+            }
+            SceneError::Syntax { path, message } => write!(f, "{path}: {message}"),
+            SceneError::Invalid { path, key, message } => {
+                write!(f, "{path}: key `{key}`: {message}")
+            }
+            SceneError::Profile { path, key, message } => {
+                write!(f, "{path}: key `{key}`: {message}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+/// The scene file as written: every key optional where a default exists.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawScene {
+    /// Short name, used for the output folder.
+    pub name: Option<String>,
+    /// Title shown in the report.
+    pub title: Option<String>,
+    /// `[wheel]`.
+    #[serde(default)]
+    pub wheel: RawWheel,
+    /// `[rail]`.
+    #[serde(default)]
+    pub rail: RawRail,
+    /// `[track]`.
+    #[serde(default)]
+    pub track: RawTrack,
+    /// `[wheelset]`.
+    #[serde(default)]
+    pub wheelset: RawWheelset,
+    /// `[load]`.
+    #[serde(default)]
+    pub load: RawLoad,
+    /// `[material]`.
+    #[serde(default)]
+    pub material: RawMaterial,
+    /// `[sweep]`.
+    #[serde(default)]
+    pub sweep: RawSweep,
+    /// `[outputs]`.
+    #[serde(default)]
+    pub outputs: RawOutputs,
+}
+
+/// `[wheel]`: profile (both sides, or per side) and nominal radius.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawWheel {
+    /// Built-in name or a path (relative to the scene file) for both wheels.
+    pub profile: Option<String>,
+    /// Overrides `profile` for the left wheel.
+    pub left_profile: Option<String>,
+    /// Overrides `profile` for the right wheel.
+    pub right_profile: Option<String>,
+    /// Nominal rolling radius at the taping line, both wheels.
+    pub nominal_radius_mm: Option<f64>,
+    /// Overrides `nominal_radius_mm` for the left wheel.
+    pub left_nominal_radius_mm: Option<f64>,
+    /// Overrides `nominal_radius_mm` for the right wheel.
+    pub right_nominal_radius_mm: Option<f64>,
+    /// Smoothing parameter for profiles read from files.
+    pub smoothing_mm3: Option<f64>,
+}
+
+/// `[rail]`: profile (both sides, or per side) and inclination.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawRail {
+    /// Built-in name or a path (relative to the scene file) for both rails.
+    pub profile: Option<String>,
+    /// Overrides `profile` for the left rail.
+    pub left_profile: Option<String>,
+    /// Overrides `profile` for the right rail.
+    pub right_profile: Option<String>,
+    /// Inclination of the rails in the track ("1:40", "1:20", "vertical", radians).
+    pub inclination: Option<String>,
+    /// Inclination already contained in the profile data (default "vertical": upright).
+    pub profile_inclination: Option<String>,
+    /// Smoothing parameter for profiles read from files.
+    pub smoothing_mm3: Option<f64>,
+}
+
+/// `[track]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawTrack {
+    /// Gauge between the gauge points.
+    pub gauge_mm: Option<f64>,
+    /// Depth of the gauge points below the top of rail.
+    pub gauge_point_depth_mm: Option<f64>,
+}
+
+/// `[wheelset]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawWheelset {
+    /// Distance between the inner faces of the wheels.
+    pub flange_back_mm: Option<f64>,
+}
+
+/// `[load]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+#[allow(non_snake_case)]
+pub struct RawLoad {
+    /// Vertical load per wheel in kN.
+    pub wheel_load_kN: Option<f64>,
+}
+
+/// `[material]`: both bodies, or per body.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+#[allow(non_snake_case)]
+pub struct RawMaterial {
+    /// Young's modulus of both bodies, GPa.
+    pub young_GPa: Option<f64>,
+    /// Poisson's ratio of both bodies.
+    pub poisson: Option<f64>,
+    /// Overrides `young_GPa` for the wheel.
+    pub wheel_young_GPa: Option<f64>,
+    /// Overrides `young_GPa` for the rail.
+    pub rail_young_GPa: Option<f64>,
+    /// Overrides `poisson` for the wheel.
+    pub wheel_poisson: Option<f64>,
+    /// Overrides `poisson` for the rail.
+    pub rail_poisson: Option<f64>,
+}
+
+/// `[sweep]`: lateral positions of the wheelset.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawSweep {
+    /// First lateral shift.
+    pub from_mm: Option<f64>,
+    /// Last lateral shift (included when the step divides the range).
+    pub to_mm: Option<f64>,
+    /// Step between lateral shifts.
+    pub step_mm: Option<f64>,
+}
+
+/// `[outputs]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawOutputs {
+    /// Figure names (see [`crate::pipeline::Figure`]).
+    pub figures: Option<Vec<String>>,
+    /// Image formats: "svg", "png".
+    pub formats: Option<Vec<String>>,
+}
+
+/// Where a profile comes from: a built-in definition or a file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ProfileRef {
+    /// A built-in profile by name.
+    BuiltIn(String),
+    /// A file, resolved against the scene's folder.
+    File(PathBuf),
+}
+
+/// Elastic constants of one body.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Elastic {
+    /// Young's modulus, MPa (N/mm²).
+    pub young_mpa: f64,
+    /// Poisson's ratio.
+    pub poisson: f64,
+}
+
+/// Image formats a figure can be written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ImageFormat {
+    /// Scalable vector graphics.
+    Svg,
+    /// Portable network graphics (text drawn with the committed font).
+    Png,
+}
+
+/// A checked scene: all values valid, units converted to mm, N, MPa, rad.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// The scene file (for messages and provenance).
+    pub path: String,
+    /// Short name.
+    pub name: String,
+    /// Report title.
+    pub title: String,
+    /// Left and right wheel profiles.
+    pub wheel_profiles: [ProfileRef; 2],
+    /// Left and right nominal radii, mm.
+    pub nominal_radius_mm: [f64; 2],
+    /// Left and right rail profiles.
+    pub rail_profiles: [ProfileRef; 2],
+    /// Inclination already in the rail profile data.
+    pub rail_profile_inclination: Inclination,
+    /// Smoothing of wheel and rail profiles read from files, mm^3.
+    pub smoothing_mm3: [f64; 2],
+    /// Track and wheelset dimensions.
+    pub layout: TrackLayout,
+    /// Vertical load per wheel, N.
+    pub wheel_load_n: f64,
+    /// Wheel material.
+    pub wheel_material: Elastic,
+    /// Rail material.
+    pub rail_material: Elastic,
+    /// Lateral shifts of the sweep, mm, increasing.
+    pub sweep_mm: Vec<f64>,
+    /// Figures to render.
+    pub figures: Vec<crate::pipeline::Figure>,
+    /// Formats to render them in.
+    pub formats: Vec<ImageFormat>,
+}
+
+impl Scene {
+    /// Reads and checks a scene file.
+    ///
+    /// # Errors
+    /// [`SceneError`] naming the file and key.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let dir = path.parent().unwrap_or(Path::new("."));
+        Scene::from_toml(&text, &path.display().to_string(), dir)
+    }
+
+    /// Checks a scene given as TOML text; `origin` names it in messages, relative profile
+    /// paths are resolved against `dir`.
+    ///
+    /// # Errors
+    /// [`SceneError`] naming the key and what was expected.
+    pub fn from_toml(text: &str, origin: &str, dir: &Path) -> Result<Scene, SceneError> {
+        let raw: RawScene = toml::from_str(text).map_err(|e| SceneError::Syntax {
+            path: origin.to_string(),
+            message: e.to_string().trim_end().to_string(),
+        })?;
+        Scene::check(raw, origin, dir)
+    }
+
+    fn check(raw: RawScene, origin: &str, dir: &Path) -> Result<Scene, SceneError> {
+        let invalid = |key: &'static str, message: String| SceneError::Invalid {
+            path: origin.to_string(),
+            key,
+            message,
+        };
+        let positive =
+            |key: &'static str, v: Option<f64>, default: f64| -> Result<f64, SceneError> {
+                let v = v.unwrap_or(default);
+                if v.is_finite() && v > 0.0 {
+                    Ok(v)
+                } else {
+                    Err(invalid(
+                        key,
+                        format!("{v} must be a positive finite number"),
+                    ))
+                }
+            };
+
+        let name = raw.name.unwrap_or_else(|| "scene".into());
+        if name.is_empty()
+            || !name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+        {
+            return Err(invalid(
+                "name",
+                format!("{name:?} must be non-empty and use only letters, digits, '-' and '_'"),
+            ));
+        }
+        let title = raw.title.unwrap_or_else(|| name.clone());
+
+        let profile_ref = |text: &str| -> ProfileRef {
+            if Profile::built_in(text).is_some() {
+                ProfileRef::BuiltIn(text.to_string())
+            } else {
+                ProfileRef::File(dir.join(text))
+            }
+        };
+        let wheel = raw.wheel.profile.as_deref().unwrap_or("S1002");
+        let wheel_profiles = [
+            profile_ref(raw.wheel.left_profile.as_deref().unwrap_or(wheel)),
+            profile_ref(raw.wheel.right_profile.as_deref().unwrap_or(wheel)),
+        ];
+        let rail = raw.rail.profile.as_deref().unwrap_or("UIC60E1");
+        let rail_profiles = [
+            profile_ref(raw.rail.left_profile.as_deref().unwrap_or(rail)),
+            profile_ref(raw.rail.right_profile.as_deref().unwrap_or(rail)),
+        ];
+
+        let r0 = raw.wheel.nominal_radius_mm;
+        let nominal_radius_mm = [
+            positive(
+                "wheel.left_nominal_radius_mm",
+                raw.wheel.left_nominal_radius_mm.or(r0),
+                460.0,
+            )?,
+            positive(
+                "wheel.right_nominal_radius_mm",
+                raw.wheel.right_nominal_radius_mm.or(r0),
+                460.0,
+            )?,
+        ];
+        for (key, r) in [
+            ("wheel.nominal_radius_mm", nominal_radius_mm[0]),
+            ("wheel.nominal_radius_mm", nominal_radius_mm[1]),
+        ] {
+            if !(100.0..=1000.0).contains(&r) {
+                return Err(invalid(
+                    key,
+                    format!("{r} mm is not a railway wheel radius (expected 100 to 1000 mm)"),
+                ));
+            }
+        }
+
+        let inclination = Inclination::parse(raw.rail.inclination.as_deref().unwrap_or("1:40"))
+            .map_err(|m| invalid("rail.inclination", m))?;
+        let rail_profile_inclination = Inclination::parse(
+            raw.rail
+                .profile_inclination
+                .as_deref()
+                .unwrap_or("vertical"),
+        )
+        .map_err(|m| invalid("rail.profile_inclination", m))?;
+        let smoothing = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
+            let v = v.unwrap_or(DEFAULT_SMOOTHING_MM3);
+            if v.is_finite() && v >= 0.0 {
+                Ok(v)
+            } else {
+                Err(invalid(key, format!("{v} must be a finite number >= 0")))
+            }
+        };
+        let smoothing_mm3 = [
+            smoothing("wheel.smoothing_mm3", raw.wheel.smoothing_mm3)?,
+            smoothing("rail.smoothing_mm3", raw.rail.smoothing_mm3)?,
+        ];
+
+        let gauge_mm = positive("track.gauge_mm", raw.track.gauge_mm, 1435.0)?;
+        let gauge_point_depth_mm = positive(
+            "track.gauge_point_depth_mm",
+            raw.track.gauge_point_depth_mm,
+            14.0,
+        )?;
+        if gauge_point_depth_mm > 30.0 {
+            return Err(invalid(
+                "track.gauge_point_depth_mm",
+                format!(
+                    "{gauge_point_depth_mm} mm is below the rail head (expected 0 to 30 mm, usually 14)"
+                ),
+            ));
+        }
+        let flange_back_mm = positive(
+            "wheelset.flange_back_mm",
+            raw.wheelset.flange_back_mm,
+            1360.0,
+        )?;
+        if !(0.8 * gauge_mm..gauge_mm).contains(&flange_back_mm) {
+            return Err(invalid(
+                "wheelset.flange_back_mm",
+                format!(
+                    "{flange_back_mm} mm does not fit a {gauge_mm} mm gauge (expected between 80 % of the gauge and the gauge)"
+                ),
+            ));
+        }
+        let layout = TrackLayout {
+            gauge_mm,
+            gauge_point_depth_mm,
+            inclination,
+            flange_back_mm,
+        };
+
+        let wheel_load_n = 1000.0 * positive("load.wheel_load_kN", raw.load.wheel_load_kN, 70.0)?;
+
+        let m = &raw.material;
+        let young = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
+            Ok(1000.0 * positive(key, v.or(m.young_GPa), 210.0)?)
+        };
+        let poisson = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
+            let nu = v.or(m.poisson).unwrap_or(0.3);
+            if nu.is_finite() && nu > -1.0 && nu < 0.5 {
+                Ok(nu)
+            } else {
+                Err(invalid(key, format!("{nu} must lie in (-1, 0.5)")))
+            }
+        };
+        let wheel_material = Elastic {
+            young_mpa: young("material.wheel_young_GPa", m.wheel_young_GPa)?,
+            poisson: poisson("material.wheel_poisson", m.wheel_poisson)?,
+        };
+        let rail_material = Elastic {
+            young_mpa: young("material.rail_young_GPa", m.rail_young_GPa)?,
+            poisson: poisson("material.rail_poisson", m.rail_poisson)?,
+        };
+
+        let sweep_mm = sweep(&raw.sweep).map_err(|(key, message)| invalid(key, message))?;
+
+        let figures = match raw.outputs.figures {
+            None => crate::pipeline::Figure::ALL.to_vec(),
+            Some(names) => names
+                .iter()
+                .map(|n| {
+                    crate::pipeline::Figure::from_name(n).ok_or_else(|| {
+                        invalid(
+                            "outputs.figures",
+                            format!(
+                                "unknown figure {n:?}; known figures: {}",
+                                crate::pipeline::Figure::ALL
+                                    .iter()
+                                    .map(|f| f.name())
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            ),
+                        )
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()?,
+        };
+        let formats = match raw.outputs.formats {
+            None => vec![ImageFormat::Svg, ImageFormat::Png],
+            Some(names) => names
+                .iter()
+                .map(|n| match n.to_ascii_lowercase().as_str() {
+                    "svg" => Ok(ImageFormat::Svg),
+                    "png" => Ok(ImageFormat::Png),
+                    _ => Err(invalid(
+                        "outputs.formats",
+                        format!("unknown format {n:?}; expected \"svg\" or \"png\""),
+                    )),
+                })
+                .collect::<Result<Vec<_>, _>>()?,
+        };
+
+        Ok(Scene {
+            path: origin.to_string(),
+            name,
+            title,
+            wheel_profiles,
+            nominal_radius_mm,
+            rail_profiles,
+            rail_profile_inclination,
+            smoothing_mm3,
+            layout,
+            wheel_load_n,
+            wheel_material,
+            rail_material,
+            sweep_mm,
+            figures,
+            formats,
+        })
+    }
+
+    /// Loads the profile `r` of `kind`, naming `key` in errors.
+    ///
+    /// # Errors
+    /// [`SceneError::Profile`] when the file cannot be read or is not a valid profile.
+    pub fn load_profile(
+        &self,
+        r: &ProfileRef,
+        kind: ProfileKind,
+        key: &'static str,
+    ) -> Result<Profile, SceneError> {
+        let err = |message: String| SceneError::Profile {
+            path: self.path.clone(),
+            key,
+            message,
+        };
+        match r {
+            ProfileRef::BuiltIn(name) => {
+                let p = Profile::built_in(name)
+                    .ok_or_else(|| err(format!("unknown profile {name:?}")))?;
+                if p.kind() == kind {
+                    Ok(p)
+                } else {
+                    Err(err(format!(
+                        "{name} is a {} profile, expected a {kind} profile",
+                        p.kind()
+                    )))
+                }
+            }
+            ProfileRef::File(path) => {
+                let points = read::read_profile(path, kind).map_err(|e| err(e.to_string()))?;
+                let smoothing = match kind {
+                    ProfileKind::Wheel => self.smoothing_mm3[0],
+                    ProfileKind::Rail => self.smoothing_mm3[1],
+                };
+                Profile::from_points(points, smoothing).map_err(|e| err(e.to_string()))
+            }
+        }
+    }
+}
+
+/// The lateral shifts of a `[sweep]`, or the offending key and a message.
+fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
+    let from = raw.from_mm.unwrap_or(-15.0);
+    let to = raw.to_mm.unwrap_or(15.0);
+    let step = raw.step_mm.unwrap_or(0.1);
+    for (key, v) in [
+        ("sweep.from_mm", from),
+        ("sweep.to_mm", to),
+        ("sweep.step_mm", step),
+    ] {
+        if !v.is_finite() {
+            return Err((key, format!("{v} must be a finite number")));
+        }
+    }
+    if step <= 0.0 {
+        return Err(("sweep.step_mm", format!("{step} must be positive")));
+    }
+    if to < from {
+        return Err((
+            "sweep.to_mm",
+            format!("{to} is below sweep.from_mm = {from}: the sweep is empty"),
+        ));
+    }
+    for (key, v) in [("sweep.from_mm", from), ("sweep.to_mm", to)] {
+        if v.abs() > 100.0 {
+            return Err((
+                key,
+                format!("{v} mm is beyond any flange clearance (expected -100 to 100 mm)"),
+            ));
+        }
+    }
+    // A step that divides the range to within 1e-9 of a step includes `to`.
+    let n = ((to - from) / step + 1e-9).floor();
+    if n + 1.0 > MAX_SWEEP_POSITIONS as f64 {
+        return Err((
+            "sweep.step_mm",
+            format!(
+                "{step} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
+                n + 1.0
+            ),
+        ));
+    }
+    let n = n as usize;
+    // Positions computed as from + i * step (not accumulated) so that 0.0 is hit exactly
+    // when it lies on the grid, and rounded to 1e-9 mm so printed values stay clean.
+    Ok((0..=n)
+        .map(|i| ((from + i as f64 * step) * 1e9).round() / 1e9)
+        .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(text: &str) -> Result<Scene, SceneError> {
+        Scene::from_toml(text, "test.toml", Path::new("."))
+    }
+
+    #[test]
+    fn defaults_are_the_paper_case() {
+        let s = scene("").unwrap();
+        assert_eq!(s.sweep_mm.len(), 301);
+        assert!(s.sweep_mm[150].abs() < 1e-15 && (s.sweep_mm[300] - 15.0).abs() < 1e-12);
+        assert!((s.wheel_load_n - 70_000.0).abs() < 1e-9);
+        assert!((s.wheel_material.young_mpa - 210_000.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn errors_name_the_key() {
+        let cases = [
+            ("[track]\ngauge_mm = -1435.0", "track.gauge_mm"),
+            ("[material]\npoisson = 0.5", "material.wheel_poisson"),
+            ("[sweep]\nstep_mm = 0.0", "sweep.step_mm"),
+            ("[sweep]\nfrom_mm = 5.0\nto_mm = 1.0", "sweep.to_mm"),
+            (
+                "[sweep]\nfrom_mm = -15.0\nto_mm = 15.0\nstep_mm = 1e-5",
+                "sweep.step_mm",
+            ),
+            ("[load]\nwheel_load_kN = -70.0", "load.wheel_load_kN"),
+            ("[rail]\ninclination = \"1:x\"", "rail.inclination"),
+            ("[outputs]\nfigures = [\"nope\"]", "outputs.figures"),
+        ];
+        for (text, key) in cases {
+            let e = scene(text).unwrap_err().to_string();
+            assert!(e.contains(key), "{text:?} gave {e}");
+        }
+    }
+
+    #[test]
+    fn unknown_keys_are_rejected_with_their_name() {
+        let e = scene("[track]\ngauge = 1435.0").unwrap_err().to_string();
+        assert!(e.contains("gauge") && e.contains("unknown field"), "{e}");
+        let e = scene("colour = \"red\"").unwrap_err().to_string();
+        assert!(e.contains("colour"), "{e}");
     }
 }
