@@ -47,6 +47,7 @@ pub mod hertz;
 pub mod pipeline;
 pub mod profile;
 pub mod report;
+pub mod rigid;
 pub mod scene;
 pub mod track;
 

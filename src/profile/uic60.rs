@@ -28,7 +28,8 @@ const FLANK_OUTWARD_PER_DEPTH: f64 = 1.0 / 20.0;
 /// Where the R13 corner arc meets the flank tangentially: the point of the arc whose outward
 /// normal is perpendicular to the flank direction (1/20, 1) in (lateral, depth).
 fn corner_flank_joint() -> (f64, f64) {
-    let norm = (1.0 + 400.0_f64).sqrt();
+    // sqrt(1 + 20^2), written out so that the hot path does no square root for it.
+    let norm = 20.024_984_394_500_787;
     // Outward normal (20, -1)/sqrt(401): lateral outwards, depth upwards.
     (
         C_CORNER.0 + R_CORNER * 20.0 / norm,
@@ -77,14 +78,14 @@ pub fn eval(y: f64) -> [f64; 3] {
 
 /// Depth below the top and its derivatives for `0 <= u <= half_width()`.
 fn depth_of_half(u: f64) -> [f64; 3] {
-    let (y3, d3) = corner_flank_joint();
     if u <= Y_CROWN_END {
         arc_below_centre((0.0, R_CROWN), R_CROWN, u)
     } else if u <= Y_SHOULDER_END {
         arc_below_centre(C_SHOULDER, R_SHOULDER, u)
-    } else if u <= y3 {
+    } else if u <= corner_flank_joint().0 {
         arc_below_centre(C_CORNER, R_CORNER, u)
     } else {
+        let (y3, d3) = corner_flank_joint();
         let slope = 1.0 / FLANK_OUTWARD_PER_DEPTH;
         [d3 + (u - y3) * slope, slope, 0.0]
     }
@@ -106,6 +107,7 @@ mod tests {
 
     #[test]
     fn joints_and_width_match_the_drawing() {
+        assert!((20.024_984_394_500_787_f64 - 401f64.sqrt()).abs() < 1e-14);
         assert!((eval(Y_CROWN_END)[0] + 0.174404).abs() < DRAWING_TOL_MM);
         assert!((eval(Y_SHOULDER_END)[0] + 2.302524).abs() < DRAWING_TOL_MM);
         let (y3, d3) = corner_flank_joint();

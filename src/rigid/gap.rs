@@ -1,0 +1,393 @@
+//! The vertical gap between one wheel and its rail for a wheelset pose, its minima, and the
+//! derivative of the minimum gap with respect to the roll (envelope theorem).
+//!
+//! Per side the pose is seen in the side frame as a shift `delta = sign * y_ws` and a roll
+//! `phi = sign * roll`. A wheel point `(Yw, Zw)` relative to the axle maps to
+//! `Y = delta + cos(phi) Yw - sin(phi) Zw`, `z = h + sin(phi) Yw + cos(phi) Zw` (rotation about
+//! the axle, paper Sect. 3; the lateral motion caused by roll is kept). The gap is
+//! `d(s) = z(s) - Zrail(Y(s))`; without the axle height `h` it is `g(s) = d(s) - h`.
+
+use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
+
+/// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
+/// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].
+pub const COARSE_STEP_MM: f64 = 0.25;
+/// Step of the uniform table of rail heights used by the coarse scan (mm); linear
+/// interpolation errs by at most kappa h^2 / 8 = 3e-6 mm on the R13 gauge corner.
+pub const RAIL_TABLE_STEP_MM: f64 = 0.02;
+/// Coarse minima within this margin of the lowest coarse minimum are all refined. It bounds
+/// the error of the coarse values (kappa h^2 / 2 = 0.006 mm for a relative curvature of
+/// 1/5 mm^-1 at 0.25 mm) with a safety factor of 8.
+pub const COARSE_MARGIN_MM: f64 = 0.05;
+/// Two minima closer than this in the wheel coordinate are one basin (mm).
+pub const SAME_BASIN_MM: f64 = 0.5;
+/// Convergence of the local minimisation in the wheel coordinate (mm).
+const LOCAL_TOL_MM: f64 = 1e-11;
+/// A local minimum this close to an end of its bracket, with the gap still falling
+/// outwards, lies beyond the bracket (mm); the bisection stops within a few LOCAL_TOL_MM.
+const AT_END_MM: f64 = 1e-8;
+/// A bracket end replaces the Newton point only when its gap is lower by this much (mm).
+const END_PREFERENCE_MM: f64 = 1e-12;
+/// How many bracket widths a basin may slide while its minimum is followed (about 10 mm).
+const MAX_SLIDES: usize = 40;
+/// Iterations of the safeguarded Newton search for one local minimum; 5-8 are used.
+const LOCAL_MAX_ITER: usize = 100;
+
+/// The pose of one side: shift and roll as seen in the side frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SidePose {
+    /// `sign * y_ws` (mm).
+    pub delta: f64,
+    /// `cos(sign * roll)`.
+    pub cos: f64,
+    /// `sin(sign * roll)`.
+    pub sin: f64,
+}
+
+impl SidePose {
+    /// The pose of the side with `sign` (+1 left, -1 right) for a wheelset shift and roll.
+    pub fn new(sign: f64, y_ws: f64, roll: f64) -> SidePose {
+        let (sin, cos) = (sign * roll).sin_cos();
+        SidePose {
+            delta: sign * y_ws,
+            cos,
+            sin,
+        }
+    }
+
+    /// Side-frame lateral position and height above the axle of a wheel point.
+    #[inline]
+    pub fn apply(&self, yw: f64, zw: f64) -> [f64; 2] {
+        [
+            self.delta + self.cos * yw - self.sin * zw,
+            self.sin * yw + self.cos * zw,
+        ]
+    }
+}
+
+/// The gap at one wheel point, with everything the contact quantities need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GapPoint {
+    /// Wheel profile coordinate (mm).
+    pub s: f64,
+    /// `g(s) = z - h - Zrail`: the gap without the axle height (mm).
+    pub g: f64,
+    /// `dg/ds`.
+    pub dg: f64,
+    /// `d2g/ds2` (1/mm).
+    pub ddg: f64,
+    /// Side-frame lateral position of the wheel point (mm).
+    pub y: f64,
+    /// Height of the wheel point above the axle (mm, negative).
+    pub z_rel: f64,
+    /// The wheel point (no roll).
+    pub wheel: WheelPoint,
+    /// The rail under it.
+    pub rail: RailPoint,
+}
+
+impl GapPoint {
+    /// Derivative of the gap at this point with respect to the side roll `phi`, the point
+    /// held fixed: `(Y - delta) + Zrail'(Y) * z_rel`. At a unique minimiser it is the
+    /// derivative of the minimum gap (envelope theorem).
+    #[inline]
+    pub fn dg_dphi(&self, pose: &SidePose) -> f64 {
+        (self.y - pose.delta) + self.rail.slope * self.z_rel
+    }
+}
+
+/// Uniform table of rail heights in the side frame, for the coarse scan only.
+#[derive(Debug, Clone)]
+struct RailTable {
+    y0: f64,
+    inv_step: f64,
+    z: Vec<f64>,
+}
+
+impl RailTable {
+    fn new(rail: &PlacedRail, step_mm: f64) -> RailTable {
+        let (lo, hi) = rail.y_range();
+        let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
+        let step = (hi - lo) / n as f64;
+        let z = (0..=n)
+            .map(|i| {
+                rail.at((lo + i as f64 * step).min(hi))
+                    .map_or(f64::NAN, |p| p.z)
+            })
+            .collect();
+        RailTable {
+            y0: lo,
+            inv_step: 1.0 / step,
+            z,
+        }
+    }
+
+    #[inline]
+    fn height(&self, y: f64) -> Option<f64> {
+        let t = (y - self.y0) * self.inv_step;
+        // Also rejects NaN.
+        if t.is_nan() || t < 0.0 {
+            return None;
+        }
+        let i = t as usize;
+        if i + 1 >= self.z.len() {
+            return if i + 1 == self.z.len() && t <= i as f64 {
+                Some(self.z[i])
+            } else {
+                None
+            };
+        }
+        let f = t - i as f64;
+        Some(self.z[i] + f * (self.z[i + 1] - self.z[i]))
+    }
+}
+
+/// One side's geometry prepared for repeated gap evaluations: the placed pair, the coarse
+/// wheel samples and the rail table. Built once per sweep.
+#[derive(Debug, Clone)]
+pub struct SideGap<'a> {
+    /// The wheel and rail of the side.
+    pub pair: &'a SidePair,
+    /// +1 left, -1 right.
+    pub sign: f64,
+    coarse: Vec<[f64; 3]>,
+    table: RailTable,
+    tabulated: Option<Tables>,
+}
+
+/// Tabulated wheel `(s, Yw, Zw)` and rail, for the paper's solver.
+#[derive(Debug, Clone)]
+struct Tables {
+    wheel: Vec<[f64; 3]>,
+    rail: RailTable,
+}
+
+/// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
+pub type Basin = (f64, f64);
+
+impl<'a> SideGap<'a> {
+    /// Prepares the side with `sign` (+1 left, -1 right).
+    pub fn new(pair: &'a SidePair, sign: f64) -> SideGap<'a> {
+        let (lo, hi) = pair.wheel.profile().domain();
+        let n = ((hi - lo) / COARSE_STEP_MM).ceil() as usize;
+        let coarse = (0..=n)
+            .map(|i| {
+                let s = lo + (hi - lo) * i as f64 / n as f64;
+                let p = pair.wheel.at(s);
+                [s, p.y, p.z]
+            })
+            .collect();
+        SideGap {
+            pair,
+            sign,
+            coarse,
+            table: RailTable::new(&pair.rail, RAIL_TABLE_STEP_MM),
+            tabulated: None,
+        }
+    }
+
+    /// Adds the tables the paper's solver searches: wheel and rail tabulated every
+    /// `step_mm`, the rail height between its table points interpolated linearly.
+    pub fn with_tables(mut self, step_mm: f64) -> SideGap<'a> {
+        let (lo, hi) = self.pair.wheel.profile().domain();
+        let n = ((hi - lo) / step_mm).round().max(1.0) as usize;
+        let wheel = (0..=n)
+            .map(|i| {
+                let s = lo + (hi - lo) * i as f64 / n as f64;
+                let p = self.pair.wheel.at(s);
+                [s, p.y, p.z]
+            })
+            .collect();
+        self.tabulated = Some(Tables {
+            wheel,
+            rail: RailTable::new(&self.pair.rail, step_mm),
+        });
+        self
+    }
+
+    /// The lowest gap over the tabulated wheel points with the tabulated rail (the paper's
+    /// discrete minimum): `(s, g, Y)` of the table point, or `None` without tables or
+    /// without a wheel point above the rail.
+    pub fn tabulated_minimum(&self, pose: &SidePose) -> Option<(f64, f64, f64)> {
+        let t = self.tabulated.as_ref()?;
+        let mut best: Option<(f64, f64, f64)> = None;
+        for &[s, yw, zw] in &t.wheel {
+            let [y, z] = pose.apply(yw, zw);
+            if let Some(zr) = t.rail.height(y) {
+                let g = z - zr;
+                if best.is_none_or(|b| g < b.1) {
+                    best = Some((s, g, y));
+                }
+            }
+        }
+        best
+    }
+
+    /// The wheel.
+    pub fn wheel(&self) -> &PlacedWheel {
+        &self.pair.wheel
+    }
+
+    /// The gap at `s` for `pose`, or `None` where the wheel point is not above the rail.
+    #[inline]
+    pub fn at(&self, s: f64, pose: &SidePose) -> Option<GapPoint> {
+        let wheel = self.pair.wheel.at(s);
+        let [y, z_rel] = pose.apply(wheel.y, wheel.z);
+        let rail = self.pair.rail.at(y)?;
+        // dZw/ds = -F' and dYw/ds = 1; wheel.slope = -F', wheel.d2 = -F''.
+        let f1 = -wheel.slope;
+        let f2 = -wheel.d2;
+        let dy = pose.cos + pose.sin * f1;
+        let dz = pose.sin - pose.cos * f1;
+        let ddy = pose.sin * f2;
+        let ddz = -pose.cos * f2;
+        let rail_dd = rail.d2;
+        Some(GapPoint {
+            s,
+            g: z_rel - rail.z,
+            dg: dz - rail.slope * dy,
+            ddg: ddz - rail_dd * dy * dy - rail.slope * ddy,
+            y,
+            z_rel,
+            wheel,
+            rail,
+        })
+    }
+
+    /// Basins of the gap found by the coarse scan: brackets around every sampled local
+    /// minimum within [`COARSE_MARGIN_MM`] of the lowest, lowest first.
+    pub fn basins(&self, pose: &SidePose, out: &mut Vec<Basin>) {
+        out.clear();
+        // Only wheel samples that can lie above the rail: Y = delta + Yw +- |sin phi| |Zw|.
+        let (y_lo, y_hi) = self.pair.rail.y_range();
+        let reach = pose.sin.abs() * (self.pair.wheel.nominal_radius_mm() + 100.0) + 1.0;
+        let first = self
+            .coarse
+            .partition_point(|c| pose.delta + c[1] < y_lo - reach)
+            .saturating_sub(1);
+        let last = (self
+            .coarse
+            .partition_point(|c| pose.delta + c[1] <= y_hi + reach)
+            + 1)
+        .min(self.coarse.len());
+        let coarse = &self.coarse[first..last];
+        let n = coarse.len();
+        if n == 0 {
+            return;
+        }
+        let gap = |i: usize| -> f64 {
+            let [_, yw, zw] = coarse[i];
+            let [y, z] = pose.apply(yw, zw);
+            self.table.height(y).map_or(f64::INFINITY, |zr| z - zr)
+        };
+        let mut lowest = f64::INFINITY;
+        let (mut prev, mut here) = (f64::INFINITY, gap(0));
+        let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
+        let mut count = 0;
+        for i in 0..n {
+            let next = if i + 1 < n { gap(i + 1) } else { f64::INFINITY };
+            if here.is_finite() && here <= prev && here <= next {
+                lowest = lowest.min(here);
+                if count < found.len() {
+                    found[count] = (here, i);
+                    count += 1;
+                } else if let Some(worst) = found
+                    .iter_mut()
+                    .max_by(|a, b| a.0.total_cmp(&b.0))
+                    .filter(|w| w.0 > here)
+                {
+                    *worst = (here, i);
+                }
+            }
+            prev = here;
+            here = next;
+        }
+        let found = &mut found[..count];
+        found.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for &(g, i) in found.iter() {
+            if g <= lowest + COARSE_MARGIN_MM {
+                let lo = coarse[i.saturating_sub(1)][0];
+                let hi = coarse[(i + 1).min(n - 1)][0];
+                out.push((lo, hi));
+            }
+        }
+    }
+
+    /// The minimum of the gap in a basin: safeguarded Newton on `dg/ds = 0` inside the
+    /// bracket, which slides when the minimum lies beyond it (the basin moved with the pose).
+    pub fn minimum(&self, basin: Basin, start: Option<f64>, pose: &SidePose) -> Option<GapPoint> {
+        let (dom_lo, dom_hi) = self.pair.wheel.profile().domain();
+        let (mut lo, mut hi) = basin;
+        let width = (hi - lo).max(COARSE_STEP_MM);
+        for _slide in 0..MAX_SLIDES {
+            let s0 = start
+                .filter(|s| (lo..=hi).contains(s))
+                .unwrap_or(0.5 * (lo + hi));
+            let p = self.newton_in(lo, hi, s0, pose)?;
+            let at_lo = p.s <= lo + AT_END_MM && p.dg > 0.0 && lo > dom_lo;
+            let at_hi = p.s >= hi - AT_END_MM && p.dg < 0.0 && hi < dom_hi;
+            if at_lo {
+                hi = lo;
+                lo = (lo - width).max(dom_lo);
+            } else if at_hi {
+                lo = hi;
+                hi = (hi + width).min(dom_hi);
+            } else {
+                return Some(p);
+            }
+        }
+        None
+    }
+
+    fn newton_in(&self, mut lo: f64, mut hi: f64, s0: f64, pose: &SidePose) -> Option<GapPoint> {
+        // Keep the bracket ends where the gap is defined.
+        let mut p_lo = self.at(lo, pose);
+        let mut p_hi = self.at(hi, pose);
+        if p_lo.is_none() && p_hi.is_none() {
+            return None;
+        }
+        let mut p = self.at(s0, pose).or(p_lo).or(p_hi)?;
+        for _ in 0..LOCAL_MAX_ITER {
+            // Shrink the bracket with the sign of the derivative (minimum side).
+            if p.dg > 0.0 {
+                hi = p.s;
+                p_hi = Some(p);
+            } else {
+                lo = p.s;
+                p_lo = Some(p);
+            }
+            let newton = p.s - p.dg / p.ddg;
+            let next = if p.ddg > 0.0 && newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if (next - p.s).abs() < LOCAL_TOL_MM || hi - lo < LOCAL_TOL_MM {
+                break;
+            }
+            p = match self.at(next, pose) {
+                Some(q) => q,
+                None => {
+                    // Left the rail: the minimum lies on the defined side.
+                    if p_lo.is_none() {
+                        lo = next;
+                    } else {
+                        hi = next;
+                    }
+                    continue;
+                }
+            };
+        }
+        // The bracket ends are candidates too (a minimum at a value jump of the profile, or
+        // at the end of the rail), but only when clearly lower: gaps near -r0 = -460 mm
+        // resolve to about 1e-13 mm, and an end point "lower" by rounding would replace the
+        // Newton solution by a point 1e-9 mm away from it.
+        let mut best = p;
+        for q in [p_lo, p_hi].into_iter().flatten() {
+            if q.g < best.g - END_PREFERENCE_MM {
+                best = q;
+            }
+        }
+        Some(best)
+    }
+}

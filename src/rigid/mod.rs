@@ -1,0 +1,533 @@
+//! Rigid contact search with the wheelset roll solved (paper Sect. 3, Eqs. 2-5).
+//!
+//! For every lateral shift `y_ws` of the sweep, [`search`] finds the roll `theta` and the
+//! axle height `h` at which both wheels touch their rails (minimum gap zero on both sides) and
+//! nothing penetrates. Zero yaw. Left and right profiles may differ.
+//!
+//! Why it works: the minimum gap of the left wheel `m_L(theta)` is the minimum of functions
+//! that all grow with `theta` (roll lifts the left wheel), and `m_R` of functions that all
+//! fall, so `F(theta) = m_L - m_R` is continuous and strictly increasing even where the
+//! contact point jumps (there only its slope jumps). Its root is unique. By the envelope
+//! theorem `dm/dphi = (Y - delta) + Zrail'(Y) z_rel` at the minimiser: the lever arm of the
+//! contact point about the axle.
+//!
+//! Two solvers ([`Solver`]):
+//!
+//! * `Default`: Newton on `F` with that exact derivative, safeguarded by a bracket
+//!   (bisection when a Newton step leaves it: `F` has kinks where the contact point jumps),
+//!   continuation from the previous position, minima refined exactly inside basins found by
+//!   one coarse scan per position and re-verified by a scan at the solution. Stops at
+//!   `|F| <=` [`ROLL_RESIDUAL_TOL_MM`].
+//! * `Paper`: the paper's iteration, `theta += (d_min,r - d_min,l) / (y_min,l - y_min,r)`
+//!   from `theta = 0` at every position, the minima taken over the wheel profile tabulated
+//!   every [`PAPER_TABLE_STEP_MM`], stopping at `|d_min,r - d_min,l| <` 1e-4 mm (its Eq. 4).
+
+pub mod gap;
+
+use crate::track::{Placement, Side};
+use gap::{Basin, GapPoint, SideGap, SidePose};
+
+/// Residual `|m_L - m_R|` at which the default solver stops (mm). The issue asks for 1e-9;
+/// Newton reaches 1e-12 in one more step, so the margin costs nothing.
+pub const ROLL_RESIDUAL_TOL_MM: f64 = 1e-11;
+/// Iteration cap of the default solver; 3-6 iterations are typical, flange onset up to ~15.
+pub const DEFAULT_MAX_ITER: usize = 60;
+/// The paper's tolerance on `|d_min,r - d_min,l|` (its Eq. 4: "1e-4 is enough"), mm.
+pub const PAPER_TOL_MM: f64 = 1e-4;
+/// Iteration cap of the paper's solver (it states none; 1000 as for its Hertz iteration).
+pub const PAPER_MAX_ITER: usize = 1000;
+/// Spacing of the tabulated wheel profile the paper's solver searches (mm). The paper works
+/// on "tabular data" without stating the spacing; 0.1 mm is a common table step.
+pub const PAPER_TABLE_STEP_MM: f64 = 0.1;
+/// A second local minimum of the gap within this distance of the first is reported as a
+/// second contact point (mm). 0.01 mm is the paper's quasi-elastic regularisation: a smaller
+/// separation is within the elastic approach of a loaded contact.
+pub const TWO_POINT_GAP_TOL_MM: f64 = 0.01;
+
+/// Which rigid solver to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Solver {
+    /// Newton with the exact derivative, continuation, exact minima (the project's).
+    #[default]
+    Default,
+    /// The paper's semi-analytical iteration on tabulated profiles.
+    Paper,
+}
+
+impl Solver {
+    /// Name used in scene files and tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            Solver::Default => "default",
+            Solver::Paper => "paper",
+        }
+    }
+
+    /// The solver of a scene-file name.
+    pub fn from_name(name: &str) -> Option<Solver> {
+        match name {
+            "default" => Some(Solver::Default),
+            "paper" => Some(Solver::Paper),
+            _ => None,
+        }
+    }
+}
+
+/// Why the roll iteration at one position stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stop {
+    /// The residual fell below the solver's tolerance.
+    Converged,
+    /// The iteration cap was hit; the position is flagged and not plotted.
+    IterationCap,
+    /// A wheel is nowhere above its rail (shift beyond the rail head).
+    NoContact,
+    /// The bracket on the roll collapsed without the residual falling below the tolerance
+    /// (the gap minima were not found consistently); flagged, not plotted.
+    Stalled,
+}
+
+impl Stop {
+    /// Text for the `status` column.
+    pub fn name(self) -> &'static str {
+        match self {
+            Stop::Converged => "converged",
+            Stop::IterationCap => "iteration cap",
+            Stop::NoContact => "no contact",
+            Stop::Stalled => "stalled",
+        }
+    }
+}
+
+/// The rigid contact of one wheel at one position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SideContact {
+    /// Wheel profile coordinate of the contact point (mm).
+    pub s: f64,
+    /// Track-frame lateral position of the contact point (mm).
+    pub y: f64,
+    /// Track-frame height of the contact point (mm).
+    pub z: f64,
+    /// Rolling radius `r0 + F(s)` (mm).
+    pub r: f64,
+    /// Contact angle in the track frame, mirrored per side, roll included (rad).
+    pub gamma: f64,
+    /// The rail's profile coordinate of the contact point (mm, rail side frame).
+    pub rail_u: f64,
+    /// Tangent of the rail's contact angle at the point (side frame, inclination included).
+    pub rail_tan_gamma: f64,
+    /// Lateral curvature of the wheel at the point, convex positive (1/mm).
+    pub wheel_curvature: f64,
+    /// Lateral curvature of the rail at the point, convex positive (1/mm).
+    pub rail_curvature: f64,
+    /// A second contact point: another local minimum of the gap within
+    /// [`TWO_POINT_GAP_TOL_MM`]; `(s, gap)` in mm.
+    pub second: Option<(f64, f64)>,
+}
+
+/// The solution at one lateral position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Position {
+    /// Lateral shift of the wheelset (mm).
+    pub y_ws: f64,
+    /// Roll (rad), right-hand about +x: positive lifts the left wheel.
+    pub roll: f64,
+    /// Height of the axle above the track origin (mm).
+    pub axle_height: f64,
+    /// Left and right contacts (`None` when that wheel has no contact).
+    pub contact: [Option<SideContact>; 2],
+    /// Roll iterations used.
+    pub iterations: usize,
+    /// Why the iteration stopped.
+    pub stop: Stop,
+    /// Final `|m_L - m_R|` (mm).
+    pub residual: f64,
+}
+
+impl Position {
+    /// The contact of `side`.
+    pub fn side(&self, side: Side) -> Option<&SideContact> {
+        self.contact[side_index(side)].as_ref()
+    }
+}
+
+/// An interval of `y_ws` across which the contact point of one wheel jumps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Jump {
+    /// The wheel whose contact point jumps.
+    pub side: Side,
+    /// Lower end of the refined interval (mm).
+    pub y_from: f64,
+    /// Upper end of the refined interval (mm), within [`JUMP_REFINE_MM`] of `y_from`.
+    pub y_to: f64,
+    /// Wheel coordinate of the contact point at `y_from` (mm).
+    pub s_from: f64,
+    /// Wheel coordinate of the contact point at `y_to` (mm).
+    pub s_to: f64,
+}
+
+/// A contact point moving more than this between neighbouring positions of the sweep is
+/// examined as a possible jump (mm).
+pub const JUMP_SCREEN_MM: f64 = 0.5;
+/// Jump intervals are refined by bisection to this width in `y_ws` (mm).
+pub const JUMP_REFINE_MM: f64 = 1e-4;
+/// After refinement a jump must still move the contact point this far (mm); a contact point
+/// that only moves fast shrinks its motion with the interval.
+pub const JUMP_CONFIRM_MM: f64 = 0.1;
+
+/// The rigid solution over a sweep.
+#[derive(Debug, Clone)]
+pub struct RigidSweep {
+    /// The solver used.
+    pub solver: Solver,
+    /// One solution per lateral position, in sweep order.
+    pub positions: Vec<Position>,
+    /// The centred solution (`y_ws = 0`), the reference of `z_ws` and `l0`.
+    pub centre: Position,
+    /// Contact-point jumps, by side and `y_ws`.
+    pub jumps: Vec<Jump>,
+}
+
+impl RigidSweep {
+    /// Half the lateral distance between the contact points of the centred wheelset (mm):
+    /// Wickens' `l0`.
+    pub fn l0_mm(&self) -> f64 {
+        match self.centre.contact {
+            [Some(l), Some(r)] => 0.5 * (l.y - r.y),
+            _ => f64::NAN,
+        }
+    }
+
+    /// Vertical displacement of the wheelset relative to the centred position (mm, up).
+    pub fn z_ws(&self, p: &Position) -> f64 {
+        p.axle_height - self.centre.axle_height
+    }
+}
+
+fn side_index(side: Side) -> usize {
+    match side {
+        Side::Left => 0,
+        Side::Right => 1,
+    }
+}
+
+/// Solves the rigid contact at every lateral shift of `sweep_mm` (increasing).
+///
+/// # Example
+/// ```
+/// use wheelrail::{scene::Scene, pipeline, rigid};
+/// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
+/// let placement = pipeline::place(&scene).unwrap();
+/// let sweep = rigid::search(&placement, &[0.0, 3.0], rigid::Solver::Default);
+/// // A symmetric wheelset at y_ws = 0 does not roll.
+/// assert!(sweep.positions[0].roll.abs() < 1e-12);
+/// // Shifted to the left it rolls to lift the left wheel (conventions.md).
+/// assert!(sweep.positions[1].roll > 0.0);
+/// ```
+pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidSweep {
+    let mut sides = [
+        SideGap::new(&placement.left, 1.0),
+        SideGap::new(&placement.right, -1.0),
+    ];
+    if solver == Solver::Paper {
+        sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
+    }
+    let mut scratch = Scratch::default();
+    let solve = |y: f64, theta0: f64, scratch: &mut Scratch| match solver {
+        Solver::Default => solve_default(&sides, y, theta0, scratch),
+        Solver::Paper => solve_paper(&sides, y),
+    };
+    let centre = solve(0.0, 0.0, &mut scratch);
+    let mut positions = Vec::with_capacity(sweep_mm.len());
+    let mut theta = centre.roll;
+    // Continue outwards from the position nearest the centre, so each start is close.
+    let start = sweep_mm
+        .iter()
+        .enumerate()
+        .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .map_or(0, |(i, _)| i);
+    let mut solved = vec![None; sweep_mm.len()];
+    for i in start..sweep_mm.len() {
+        let p = solve(sweep_mm[i], theta, &mut scratch);
+        theta = if p.stop == Stop::Converged {
+            p.roll
+        } else {
+            theta
+        };
+        solved[i] = Some(p);
+    }
+    theta = solved[start].map_or(0.0, |p: Position| p.roll);
+    for i in (0..start).rev() {
+        let p = solve(sweep_mm[i], theta, &mut scratch);
+        theta = if p.stop == Stop::Converged {
+            p.roll
+        } else {
+            theta
+        };
+        solved[i] = Some(p);
+    }
+    positions.extend(solved.into_iter().flatten());
+    let jumps = find_jumps(&positions, |y, theta0| {
+        solve(y, theta0, &mut Scratch::default())
+    });
+    RigidSweep {
+        solver,
+        positions,
+        centre,
+        jumps,
+    }
+}
+
+/// Buffers reused across positions (no allocation per position). The basins of the last
+/// solution start the next position (continuation): its scan at the solution verifies them.
+#[derive(Debug, Default)]
+struct Scratch {
+    basins: [Vec<Basin>; 2],
+    /// Whether `basins` holds the basins of a previous solution.
+    warm: bool,
+}
+
+/// The lowest minimum of one side over its basins, and a second one within the two-point
+/// tolerance in another basin.
+fn side_minimum(
+    side: &SideGap,
+    pose: &SidePose,
+    basins: &[Basin],
+    hint: Option<f64>,
+) -> Option<(GapPoint, Option<GapPoint>)> {
+    let mut best: Option<GapPoint> = None;
+    let mut second: Option<GapPoint> = None;
+    for &b in basins {
+        let Some(p) = side.minimum(b, hint, pose) else {
+            continue;
+        };
+        match best {
+            Some(q) if p.g >= q.g => {
+                if (p.s - q.s).abs() > gap::SAME_BASIN_MM && second.is_none_or(|r| p.g < r.g) {
+                    second = Some(p);
+                }
+            }
+            _ => {
+                if let Some(q) = best.filter(|q| (p.s - q.s).abs() > gap::SAME_BASIN_MM) {
+                    second = Some(q);
+                }
+                best = Some(p);
+            }
+        }
+    }
+    best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
+}
+
+/// Roll change after which the default solver scans for basins again (rad): wheel points
+/// move by about r0 * 2e-5 = 0.01 mm, well inside the bracket of a basin.
+const RESCAN_ROLL_RAD: f64 = 2e-5;
+/// A bracket on the roll narrower than this has collapsed (rad).
+const BRACKET_COLLAPSE_RAD: f64 = 1e-15;
+
+fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scratch) -> Position {
+    let poses = |theta: f64| {
+        [
+            SidePose::new(1.0, y_ws, theta),
+            SidePose::new(-1.0, y_ws, theta),
+        ]
+    };
+    let mut theta = theta0;
+    // Warm basins came from the previous position's verified solution: treat them as
+    // scanned at the start roll (they are verified again at the solution).
+    let mut scanned_at: Option<f64> = scratch.warm.then_some(theta0);
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    let mut hints: [Option<f64>; 2] = [None, None];
+    let mut iterations = 0;
+    loop {
+        iterations += 1;
+        let p = poses(theta);
+        let fresh = scanned_at.is_none_or(|t| (theta - t).abs() > RESCAN_ROLL_RAD);
+        if fresh {
+            for k in 0..2 {
+                sides[k].basins(&p[k], &mut scratch.basins[k]);
+            }
+            scanned_at = Some(theta);
+        }
+        let mins = [
+            side_minimum(&sides[0], &p[0], &scratch.basins[0], hints[0]),
+            side_minimum(&sides[1], &p[1], &scratch.basins[1], hints[1]),
+        ];
+        let (Some(left), Some(right)) = (mins[0], mins[1]) else {
+            if !fresh {
+                // The warm basins may have slid off the rail: scan before giving up.
+                scanned_at = None;
+                continue;
+            }
+            scratch.warm = false;
+            return no_contact(y_ws, theta, iterations);
+        };
+        hints = [Some(left.0.s), Some(right.0.s)];
+        let f = left.0.g - right.0.g;
+        let done = |stop: Stop| {
+            let mut pos = finish(sides, y_ws, theta, [left, right], iterations, f);
+            pos.stop = stop;
+            pos
+        };
+        if f.abs() <= ROLL_RESIDUAL_TOL_MM {
+            if fresh {
+                scratch.warm = true;
+                return done(Stop::Converged);
+            }
+            // Verify against a scan at the solution: a basin that was not a coarse minimum
+            // where the scan was made may hold the lowest gap now. The bracket was built on
+            // the old basins and is dropped.
+            scanned_at = None;
+            (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
+            continue;
+        }
+        if iterations >= DEFAULT_MAX_ITER {
+            scratch.warm = false;
+            return done(Stop::IterationCap);
+        }
+        if f > 0.0 {
+            hi = hi.min(theta);
+        } else {
+            lo = lo.max(theta);
+        }
+        if hi - lo <= BRACKET_COLLAPSE_RAD * theta.abs().max(1.0) {
+            scratch.warm = false;
+            return done(Stop::Stalled);
+        }
+        // dF/dtheta = dm_L/dphi_L + dm_R/dphi_R (phi_R = -theta): envelope theorem.
+        let slope = left.0.dg_dphi(&p[0]) + right.0.dg_dphi(&p[1]);
+        let newton = theta - f / slope;
+        theta = if slope > 0.0 && newton > lo && newton < hi {
+            newton
+        } else if lo.is_finite() && hi.is_finite() {
+            0.5 * (lo + hi)
+        } else {
+            // No bracket yet and a useless slope: step by the tread's lever arm, 2 x 750 mm.
+            theta - f / 1500.0
+        };
+    }
+}
+
+fn solve_paper(sides: &[SideGap; 2], y_ws: f64) -> Position {
+    let mut theta = 0.0;
+    let mut iterations = 0;
+    loop {
+        iterations += 1;
+        let p = [
+            SidePose::new(1.0, y_ws, theta),
+            SidePose::new(-1.0, y_ws, theta),
+        ];
+        let (Some(left), Some(right)) = (
+            sides[0].tabulated_minimum(&p[0]),
+            sides[1].tabulated_minimum(&p[1]),
+        ) else {
+            return no_contact(y_ws, theta, iterations);
+        };
+        let f = left.1 - right.1;
+        let converged = f.abs() < PAPER_TOL_MM;
+        if converged || iterations >= PAPER_MAX_ITER {
+            // Contact quantities at the table points where the minima were found.
+            let at = |k: usize, s: f64| sides[k].at(s, &p[k]);
+            let (Some(l), Some(r)) = (at(0, left.0), at(1, right.0)) else {
+                return no_contact(y_ws, theta, iterations);
+            };
+            let mut pos = finish(sides, y_ws, theta, [(l, None), (r, None)], iterations, f);
+            // The paper's height closes the tabulated gaps.
+            pos.axle_height = -0.5 * (left.1 + right.1);
+            if !converged {
+                pos.stop = Stop::IterationCap;
+            }
+            return pos;
+        }
+        // Paper Eq. 3 with track-frame positions y_min,l = Y_l and y_min,r = -Y_r.
+        theta += (right.1 - left.1) / (left.2 + right.2);
+    }
+}
+
+fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> Position {
+    Position {
+        y_ws,
+        roll: theta,
+        axle_height: f64::NAN,
+        contact: [None, None],
+        iterations,
+        stop: Stop::NoContact,
+        residual: f64::NAN,
+    }
+}
+
+fn finish(
+    sides: &[SideGap; 2],
+    y_ws: f64,
+    theta: f64,
+    mins: [(GapPoint, Option<GapPoint>); 2],
+    iterations: usize,
+    residual: f64,
+) -> Position {
+    // Both minimum gaps are (nearly) equal; the axle height closes the mean of them.
+    let axle_height = -0.5 * (mins[0].0.g + mins[1].0.g);
+    let contact = [0, 1].map(|k| {
+        let (m, second) = mins[k];
+        let sign = sides[k].sign;
+        let phi = sign * theta;
+        Some(SideContact {
+            s: m.s,
+            y: sign * m.y,
+            z: m.rail.z,
+            r: sides[k].wheel().nominal_radius_mm() + sides[k].wheel().profile().eval(m.s)[0],
+            gamma: m.wheel.slope.atan() + phi,
+            rail_u: m.rail.u,
+            rail_tan_gamma: m.rail.slope,
+            wheel_curvature: m.wheel.curvature(),
+            rail_curvature: m.rail.curvature(),
+            second: second.map(|q| (q.s, q.g - m.g)),
+        })
+    });
+    Position {
+        y_ws,
+        roll: theta,
+        axle_height,
+        contact,
+        iterations,
+        stop: Stop::Converged,
+        residual: residual.abs(),
+    }
+}
+
+/// Finds the intervals of `y_ws` across which a contact point jumps, refined by bisection.
+fn find_jumps(positions: &[Position], mut solve: impl FnMut(f64, f64) -> Position) -> Vec<Jump> {
+    let mut jumps = Vec::new();
+    for w in positions.windows(2) {
+        for side in [Side::Left, Side::Right] {
+            let (Some(a), Some(b)) = (w[0].side(side), w[1].side(side)) else {
+                continue;
+            };
+            if (a.s - b.s).abs() <= JUMP_SCREEN_MM {
+                continue;
+            }
+            let (mut pa, mut pb) = (w[0], w[1]);
+            while pb.y_ws - pa.y_ws > JUMP_REFINE_MM {
+                let mid = solve(0.5 * (pa.y_ws + pb.y_ws), pa.roll);
+                let Some(m) = mid.side(side) else { break };
+                let sa = pa.side(side).map_or(f64::NAN, |c| c.s);
+                let sb = pb.side(side).map_or(f64::NAN, |c| c.s);
+                if (m.s - sa).abs() >= (m.s - sb).abs() {
+                    pb = mid;
+                } else {
+                    pa = mid;
+                }
+            }
+            if let (Some(ca), Some(cb)) = (pa.side(side), pb.side(side))
+                && (ca.s - cb.s).abs() > JUMP_CONFIRM_MM
+            {
+                jumps.push(Jump {
+                    side,
+                    y_from: pa.y_ws,
+                    y_to: pb.y_ws,
+                    s_from: ca.s,
+                    s_to: cb.s,
+                });
+            }
+        }
+    }
+    jumps
+}
