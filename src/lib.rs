@@ -46,6 +46,7 @@ pub mod error;
 pub mod hertz;
 pub mod pipeline;
 pub mod profile;
+pub mod quasi_elastic;
 pub mod report;
 pub mod rigid;
 pub mod scene;

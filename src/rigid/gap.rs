@@ -313,6 +313,35 @@ impl<'a> SideGap<'a> {
         }
     }
 
+    /// Stretches of the wheel (`(s_lo, s_hi)`, increasing, disjoint) where the coarse gap
+    /// lies below `threshold` (mm, same reference as [`GapPoint::g`]), each widened by one
+    /// coarse step so that the fine gap below the threshold lies inside.
+    pub fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
+        out.clear();
+        let n = self.coarse.len();
+        let mut open: Option<usize> = None;
+        for i in 0..=n {
+            let low = i < n && {
+                let [_, yw, zw] = self.coarse[i];
+                let [y, z] = pose.apply(yw, zw);
+                self.table.height(y).is_some_and(|zr| z - zr < threshold)
+            };
+            match (low, open) {
+                (true, None) => open = Some(i),
+                (false, Some(first)) => {
+                    let lo = self.coarse[first.saturating_sub(1)][0];
+                    let hi = self.coarse[i.min(n - 1)][0];
+                    match out.last_mut() {
+                        Some(last) if last.1 >= lo => last.1 = hi,
+                        _ => out.push((lo, hi)),
+                    }
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+    }
+
     /// The minimum of the gap in a basin: safeguarded Newton on `dg/ds = 0` inside the
     /// bracket, which slides when the minimum lies beyond it (the basin moved with the pose).
     pub fn minimum(&self, basin: Basin, start: Option<f64>, pose: &SidePose) -> Option<GapPoint> {

@@ -1,0 +1,210 @@
+//! Quasi-elastic search: analytic averages, convergence to the rigid solution as eps -> 0,
+//! smoothing of the rigid jumps, and mirror symmetry.
+
+use proptest::prelude::*;
+use std::path::Path;
+use std::sync::OnceLock;
+use wheelrail::quasi_elastic::{self, Settings, average};
+use wheelrail::rigid::{self, Solver};
+use wheelrail::scene::Scene;
+use wheelrail::track::{Placement, Side};
+
+fn placement() -> &'static Placement {
+    static P: OnceLock<Placement> = OnceLock::new();
+    P.get_or_init(|| {
+        let scene = Scene::from_toml("", "paper defaults", Path::new(".")).unwrap();
+        wheelrail::pipeline::place(&scene).unwrap()
+    })
+}
+
+fn eps(e: f64) -> Settings {
+    Settings {
+        epsilon_mm: e,
+        ..Settings::default()
+    }
+}
+
+#[test]
+fn parabolic_gap_on_even_and_uneven_grids() {
+    // d(s) = kappa s^2 / 2: the weight is a Gaussian centred at 0, so the averaged location
+    // is 0 (to rounding, by symmetry on the even grid; to the trapezoid error on the uneven
+    // one) and a constant field averages to itself exactly.
+    let kappa = 0.004;
+    let e = 0.01;
+    let even: Vec<f64> = (-2000..=2000).map(|i| f64::from(i) * 0.01).collect();
+    // Uneven: spacing alternating 0.004 / 0.016 mm, then stretched near one end.
+    let mut uneven = vec![-20.0];
+    let mut k = 0;
+    while *uneven.last().unwrap() < 20.0 {
+        let h = if k % 2 == 0 { 0.004 } else { 0.016 }
+            * if uneven.last().unwrap() > &5.0 {
+                3.0
+            } else {
+                1.0
+            };
+        uneven.push(uneven.last().unwrap() + h);
+        k += 1;
+    }
+    for (nodes, tol) in [(&even, 1e-13), (&uneven, 1e-5)] {
+        let gaps: Vec<f64> = nodes.iter().map(|s| 0.5 * kappa * s * s).collect();
+        let fields: Vec<[f64; 2]> = nodes.iter().map(|&s| [s, kappa]).collect();
+        let a = average(nodes, &gaps, &fields, e, 37.0);
+        assert_eq!(a.len(), 1);
+        assert!(a[0].mean[0].abs() < tol, "location {}", a[0].mean[0]);
+        // A constant averages to itself up to the rounding of 4000 weighted additions.
+        assert!(
+            (a[0].mean[1] - kappa).abs() < 1e-13 * kappa,
+            "curvature {}",
+            a[0].mean[1]
+        );
+        // Integral of the weight: sqrt(2 pi eps / kappa) (Gaussian), trapezoid-exact here.
+        let exact = (2.0 * std::f64::consts::PI * e / kappa).sqrt();
+        assert!(
+            (a[0].weight - exact).abs() < 1e-4 * exact,
+            "{} vs {exact}",
+            a[0].weight
+        );
+    }
+}
+
+#[test]
+fn two_equal_minima_give_two_patches() {
+    // d(s) = kappa/2 min((s - 3)^2, (s + 3)^2): two equal wells, barrier 0.018 mm >> eps.
+    let nodes: Vec<f64> = (-800..=800).map(|i| f64::from(i) * 0.01).collect();
+    let gaps: Vec<f64> = nodes
+        .iter()
+        .map(|s| 0.002 * ((s - 3.0) * (s - 3.0)).min((s + 3.0) * (s + 3.0)))
+        .collect();
+    let fields: Vec<[f64; 1]> = nodes.iter().map(|&s| [s]).collect();
+    let a = average(&nodes, &gaps, &fields, 0.001, 37.0);
+    assert_eq!(a.len(), 2);
+    // Each patch is cut at the barrier s = 0, where its weight is exp(-0.018 / 0.001) =
+    // 1.5e-8: the one-sided truncation biases each location by about 3e-9 mm.
+    assert!(
+        (a[0].mean[0] + 3.0).abs() < 1e-8 && (a[1].mean[0] - 3.0).abs() < 1e-8,
+        "{a:?}"
+    );
+    assert!((a[0].weight - a[1].weight).abs() < 1e-12 * a[0].weight);
+}
+
+#[test]
+fn cutoff_changes_nothing_at_output_precision() {
+    // Cutting at exp(-37) against cutting at exp(-60) (3 ulps of the weight): same averages
+    // to 1e-12 mm at every position of a coarse paper sweep.
+    let sweep: Vec<f64> = (0..=30).map(|i| -15.0 + f64::from(i)).collect();
+    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let a = quasi_elastic::search(placement(), &r, &Settings::default());
+    let b = quasi_elastic::search(
+        placement(),
+        &r,
+        &Settings {
+            cutoff: 60.0,
+            ..Settings::default()
+        },
+    );
+    for (p, q) in a.positions.iter().zip(&b.positions) {
+        for side in [Side::Left, Side::Right] {
+            let (x, y) = (p.side(side).main().unwrap(), q.side(side).main().unwrap());
+            assert!(
+                (x.s - y.s).abs() < 1e-12,
+                "y_ws {}: {} vs {}",
+                p.y_ws,
+                x.s,
+                y.s
+            );
+        }
+    }
+}
+
+#[test]
+fn converges_to_rigid_as_eps_decreases() {
+    // Away from the jumps (0.226, 4.99, 6.26 mm) the quasi-elastic contact location tends to
+    // the rigid one: the error shrinks with eps (about like sqrt(eps) on the tread, where the
+    // weight is a Gaussian of width sqrt(eps / d'') skewed by d''').
+    let sweep = [-12.0, -8.0, -3.0, 2.0, 3.5, 9.0, 13.0];
+    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let errs: Vec<f64> = [0.01, 0.001, 0.0001]
+        .iter()
+        .map(|&e| {
+            let q = quasi_elastic::search(placement(), &r, &eps(e));
+            r.positions
+                .iter()
+                .zip(&q.positions)
+                .flat_map(|(rp, qp)| {
+                    [Side::Left, Side::Right].map(|side| {
+                        (rp.side(side).unwrap().s - qp.side(side).main().unwrap().s).abs()
+                    })
+                })
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    println!("max |s_qe - s_rigid| for eps 0.01, 0.001, 0.0001 mm: {errs:?}");
+    assert!(
+        errs[1] < 0.6 * errs[0] && errs[2] < 0.6 * errs[1],
+        "{errs:?}"
+    );
+    assert!(errs[2] < 0.05, "{errs:?}");
+}
+
+#[test]
+fn smooths_the_rigid_jumps() {
+    // At the paper's eps no patch that carries weight jumps: between neighbouring positions
+    // of the 0.1 mm sweep every patch with more than 5 % of the weight has a patch within
+    // 1 mm at the other position, where the rigid contact point jumps by 9.8 mm (near
+    // centre) and 10.9 mm (to the flange root). Near 5 mm the weight passes continuously
+    // from the tread patch to the flange-root patch instead. The flange onset (6.26 mm) is
+    // excluded: there the flange is a new body in contact.
+    let sweep: Vec<f64> = (0..=60).map(|i| 0.1 * f64::from(i)).collect();
+    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let q = quasi_elastic::search(placement(), &r, &Settings::default());
+    let mut rigid_max: f64 = 0.0;
+    for (a, b) in r.positions.iter().zip(&r.positions[1..]) {
+        rigid_max =
+            rigid_max.max((a.side(Side::Left).unwrap().s - b.side(Side::Left).unwrap().s).abs());
+    }
+    let mut qe_max: f64 = 0.0;
+    for (a, b) in q.positions.iter().zip(&q.positions[1..]) {
+        for (x, z) in [(a, b), (b, a)] {
+            for p in x
+                .side(Side::Left)
+                .patches
+                .iter()
+                .filter(|p| p.weight_share > 0.05)
+            {
+                let nearest = z
+                    .side(Side::Left)
+                    .patches
+                    .iter()
+                    .map(|o| (o.s - p.s).abs())
+                    .fold(f64::INFINITY, f64::min);
+                qe_max = qe_max.max(nearest);
+            }
+        }
+    }
+    println!(
+        "largest step of the left contact, 0..6 mm: rigid {rigid_max:.3} mm, quasi-elastic patches {qe_max:.3} mm"
+    );
+    assert!(rigid_max > 9.0, "{rigid_max}");
+    assert!(qe_max < 1.0, "{qe_max}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+    #[test]
+    fn mirror_symmetry(y in 0.0f64..15.0) {
+        let r = rigid::search(placement(), &[-y, y], Solver::Default);
+        let q = quasi_elastic::search(placement(), &r, &Settings::default());
+        let (m, p) = (&q.positions[0], &q.positions[1]);
+        let pairs = [(m.side(Side::Left), p.side(Side::Right)), (m.side(Side::Right), p.side(Side::Left))];
+        for (a, b) in pairs {
+            prop_assert_eq!(a.patches.len(), b.patches.len());
+            for (x, z) in a.patches.iter().zip(&b.patches) {
+                prop_assert!((x.s - z.s).abs() < 1e-9, "{} {}", x.s, z.s);
+                prop_assert!((x.y + z.y).abs() < 1e-9);
+                prop_assert!((x.gamma - z.gamma).abs() < 1e-9);
+                prop_assert!((x.wheel_curvature - z.wheel_curvature).abs() < 1e-9);
+                prop_assert!((x.weight_share - z.weight_share).abs() < 1e-9);
+            }
+        }
+    }
+}
