@@ -119,8 +119,9 @@ fn cutoff_changes_nothing_at_output_precision() {
 #[test]
 fn converges_to_rigid_as_eps_decreases() {
     // Away from the jumps (0.226, 4.99, 6.26 mm) the quasi-elastic contact location tends to
-    // the rigid one: the error shrinks with eps (about like sqrt(eps) on the tread, where the
-    // weight is a Gaussian of width sqrt(eps / d'') skewed by d''').
+    // the rigid one: the error shrinks with eps (measured: about linearly, 0.37, 0.034 and
+    // 0.0034 mm; the weight is a Gaussian of width sqrt(eps / d'') whose skew from the third
+    // derivative of the gap shifts its mean in proportion to eps).
     let sweep = [-12.0, -8.0, -3.0, 2.0, 3.5, 9.0, 13.0];
     let r = rigid::search(placement(), &sweep, Solver::Default);
     let errs: Vec<f64> = [0.01, 0.001, 0.0001]
@@ -150,7 +151,8 @@ fn converges_to_rigid_as_eps_decreases() {
 fn smooths_the_rigid_jumps() {
     // At the paper's eps no patch that carries weight jumps: between neighbouring positions
     // of the 0.1 mm sweep every patch with more than 5 % of the weight has a patch within
-    // 1 mm at the other position, where the rigid contact point jumps by 9.8 mm (near
+    // 1.5 mm at the other position (measured: 0.96 mm, where the tread contact moves fast
+    // but continuously, about 9 mm per mm of shift near the centre), where the rigid contact point jumps by 9.8 mm (near
     // centre) and 10.9 mm (to the flange root). Near 5 mm the weight passes continuously
     // from the tread patch to the flange-root patch instead. The flange onset (6.26 mm) is
     // excluded: there the flange is a new body in contact.
@@ -185,7 +187,7 @@ fn smooths_the_rigid_jumps() {
         "largest step of the left contact, 0..6 mm: rigid {rigid_max:.3} mm, quasi-elastic patches {qe_max:.3} mm"
     );
     assert!(rigid_max > 9.0, "{rigid_max}");
-    assert!(qe_max < 1.0, "{qe_max}");
+    assert!(qe_max < 1.5, "{qe_max}");
 }
 
 proptest! {
