@@ -33,7 +33,7 @@ pub const DEFAULT_CUTOFF: f64 = 37.0;
 pub const DEFAULT_MAX_STEP_MM: f64 = 0.05;
 /// Steps per weight width `sqrt(eps / d'')` at the rigid contact point.
 const STEPS_PER_WIDTH: f64 = 8.0;
-/// Smallest quadrature step (mm): bounds the cost where `eps / d''` is tiny.
+/// Smallest quadrature step wanted (mm): bounds the cost where `eps / d''` is tiny.
 const MIN_STEP_MM: f64 = 1e-4;
 /// Local minima of the gap separated by a barrier lower than `BARRIER_EPS * eps` above the
 /// higher of the two belong to one patch: the weight barely dips between them.
@@ -215,7 +215,12 @@ fn side_average(
     // The rigid minimum, and the quadrature step from the weight's width there.
     let d_min = at_rigid.g + axle_height;
     let width = (eps / at_rigid.ddg.max(1e-12)).sqrt();
-    let step = (width / STEPS_PER_WIDTH).clamp(MIN_STEP_MM, settings.max_step_mm);
+    // The step is the largest step halved until it resolves the width, and the nodes are
+    // its multiples: a fixed grid, the same on both sides of a symmetric wheelset (a grid
+    // anchored at the rigid point would move with its last-digit differences).
+    let wanted = (width / STEPS_PER_WIDTH).max(MIN_STEP_MM);
+    let halvings = (settings.max_step_mm / wanted).log2().ceil().max(0.0);
+    let step = settings.max_step_mm / halvings.exp2();
     let limit = settings.cutoff * eps;
     // Regions where the gap may be below the cut-off; the coarse gap errs by less than
     // the margin (see rigid::gap::COARSE_MARGIN_MM).
@@ -228,15 +233,13 @@ fn side_average(
     let mut total_weight = 0.0;
     let regions = std::mem::take(&mut work.regions);
     for &(lo, hi) in &regions {
-        // Nodes on the grid through the rigid point, so that a symmetric wheelset gives
-        // mirror-identical nodes.
         work.nodes.clear();
         work.gaps.clear();
         work.fields.clear();
-        let k_lo = ((lo - s_rigid) / step).floor() as i64;
-        let k_hi = ((hi - s_rigid) / step).ceil() as i64;
+        let k_lo = (lo / step).floor() as i64;
+        let k_hi = (hi / step).ceil() as i64;
         for k in k_lo..=k_hi {
-            let s = s_rigid + k as f64 * step;
+            let s = k as f64 * step;
             let Some(p) = side.at(s, &pose) else { continue };
             let d = p.g + axle_height - d_min;
             work.nodes.push(s);
