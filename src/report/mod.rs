@@ -9,6 +9,7 @@
 //!   [`render_png`]);
 //! * [`html`]: a static, self-contained report page ([`render_html`]).
 
+pub mod chart;
 pub mod golden;
 pub mod table;
 
