@@ -177,3 +177,81 @@ pub(super) fn equalize(frame: &mut Frame, (w, h): (u32, u32)) {
     frame.x = widen(frame.x, w);
     frame.y = widen(frame.y, h);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const UNIT: Frame = Frame {
+        x: (0.0, 1.0),
+        y: (0.0, 1.0),
+    };
+
+    #[test]
+    fn nan_breaks_a_line_into_pieces() {
+        let nan = f64::NAN;
+        let pts = [
+            (0.1, 0.1),
+            (0.2, 0.2),
+            (nan, 0.5),
+            (0.3, 0.3),
+            (0.4, 0.4),
+            (0.5, nan),
+            (0.6, 0.6),
+        ];
+        let lines = polylines(&pts, &UNIT);
+        assert_eq!(
+            lines,
+            vec![
+                vec![(0.1, 0.1), (0.2, 0.2)],
+                vec![(0.3, 0.3), (0.4, 0.4)],
+                vec![(0.6, 0.6)]
+            ]
+        );
+    }
+
+    #[test]
+    fn leaving_and_reentering_the_frame_splits_the_line() {
+        let pts = [(0.5, 0.5), (1.5, 0.5), (1.5, 0.8), (0.5, 0.8)];
+        let lines = polylines(&pts, &UNIT);
+        assert_eq!(
+            lines,
+            vec![vec![(0.5, 0.5), (1.0, 0.5)], vec![(1.0, 0.8), (0.5, 0.8)]]
+        );
+    }
+
+    #[test]
+    fn clip_crossing_segment() {
+        let (a, b, moved_a, moved_b) = UNIT.clip((-1.0, 0.5), (2.0, 0.5)).unwrap();
+        assert_eq!(
+            (a, b, moved_a, moved_b),
+            ((0.0, 0.5), (1.0, 0.5), true, true)
+        );
+        assert!(UNIT.clip((-1.0, 2.0), (2.0, 2.0)).is_none());
+    }
+
+    #[test]
+    fn zero_span_and_missing_data_give_usable_ranges() {
+        let lin = AxisMap { log: false };
+        assert_eq!(axis_range(None, None, lin), (0.0, 1.0));
+        assert_eq!(axis_range(None, Some((0.0, 0.0)), lin), (-1.0, 1.0));
+        let (lo, hi) = axis_range(None, Some((5.0, 5.0)), lin);
+        assert!((lo - 4.5).abs() < 1e-12 && (hi - 5.5).abs() < 1e-12);
+        let log = AxisMap { log: true };
+        assert_eq!(axis_range(Some((1.0, 100.0)), None, log), (0.0, 2.0));
+        assert!(log.forward(0.0).is_nan() && log.forward(-1.0).is_nan());
+    }
+
+    #[test]
+    fn equalize_gives_same_units_per_pixel() {
+        let mut f = Frame {
+            x: (0.0, 100.0),
+            y: (0.0, 10.0),
+        };
+        equalize(&mut f, (500, 400));
+        let per_px_x = (f.x.1 - f.x.0) / 500.0;
+        let per_px_y = (f.y.1 - f.y.0) / 400.0;
+        assert!((per_px_x - per_px_y).abs() < 1e-12);
+        assert!((f.y.0 + f.y.1 - 10.0).abs() < 1e-12, "centred");
+    }
+}
