@@ -217,7 +217,7 @@ pub struct TextFailure {
     pub actual: String,
 }
 
-/// How many failures each column diff keeps in [`ColumnDiff::first`]-style lists.
+/// How many failures a [`ColumnDiff`] keeps in its `first` list.
 pub const KEPT_FAILURES: usize = 5;
 
 /// What differs in one column present in both tables.
