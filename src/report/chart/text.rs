@@ -129,9 +129,22 @@ pub(super) fn draw_text<DB: DrawingBackend>(
         .pos(Pos::new(HPos::Left, VPos::Top))
         .transform(transform);
     match mode {
-        TextMode::Whole => root
-            .draw(&Text::new(text.to_owned(), (x0, y0), style))
-            .map_err(drawing_error),
+        // Let the viewer align the text, so it stays aligned with whatever font it substitutes.
+        TextMode::Whole => {
+            let h = match place.along {
+                Align::Start => HPos::Left,
+                Align::Middle => HPos::Center,
+                Align::End => HPos::Right,
+            };
+            let v = match place.across {
+                Align::Start => VPos::Top,
+                Align::Middle => VPos::Center,
+                Align::End => VPos::Bottom,
+            };
+            let style = style.pos(Pos::new(h, v));
+            root.draw(&Text::new(text.to_owned(), place.at, style))
+                .map_err(drawing_error)
+        }
         TextMode::PerGlyph => {
             let font = spec.font();
             // plotters puts the bitmap baseline at half the size below the top; SVG puts it at
