@@ -1,0 +1,186 @@
+//! Text drawing with the bundled font, placed by us rather than by plotters' layout.
+//!
+//! plotters 0.3.7 rasterises ab_glyph glyphs without their left side bearing, so in bitmaps a
+//! narrow glyph such as `1` sits too far left and words look unevenly spaced ("S1 002"). For
+//! bitmaps we therefore draw glyph by glyph: each at its pen position from the font's advances
+//! (kerning included) plus an estimate of its side bearing, namely half the space its advance
+//! leaves around its ink. For SVG we write plain `<text>` and the viewer lays it out.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::{ChartError, FONT_FAMILY, drawing_error};
+
+/// Alignment along or across a line of text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Align {
+    /// Left (along) or top (across).
+    Start,
+    /// Centre.
+    Middle,
+    /// Right (along) or bottom (across).
+    End,
+}
+
+impl Align {
+    fn fraction(self) -> f64 {
+        match self {
+            Align::Start => 0.0,
+            Align::Middle => 0.5,
+            Align::End => 1.0,
+        }
+    }
+}
+
+/// How text reaches the backend; see the module docs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum TextMode {
+    /// One `<text>` element per string (SVG).
+    Whole,
+    /// One glyph at a time with side-bearing correction (bitmaps).
+    PerGlyph,
+}
+
+/// One text style: size in pixels (the font's ascent-to-descent height) and colour.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct TextSpec {
+    pub(super) px: f64,
+    pub(super) color: RGBColor,
+}
+
+impl TextSpec {
+    pub(super) fn new(px: f64) -> Self {
+        TextSpec { px, color: BLACK }
+    }
+
+    pub(super) fn color(self, color: RGBColor) -> Self {
+        TextSpec { color, ..self }
+    }
+
+    fn font(&self) -> FontDesc<'static> {
+        FontDesc::new(FontFamily::Name(FONT_FAMILY), self.px, FontStyle::Normal)
+    }
+
+    /// Advance width and line height in pixels.
+    pub(super) fn size(&self, text: &str) -> (i32, i32) {
+        self.font()
+            .box_size(text)
+            .map(|(w, h)| (w as i32, h as i32))
+            .unwrap_or((0, 0))
+    }
+}
+
+/// A text placement: the anchor point in pixels of the root area, alignment along and across
+/// the line, and whether the line runs upwards (rotated by 270°, as y-axis titles).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Place {
+    pub(super) at: (i32, i32),
+    pub(super) along: Align,
+    pub(super) across: Align,
+    pub(super) upwards: bool,
+}
+
+impl Place {
+    pub(super) fn new(at: (i32, i32), along: Align, across: Align) -> Self {
+        Place {
+            at,
+            along,
+            across,
+            upwards: false,
+        }
+    }
+
+    pub(super) fn upwards(self) -> Self {
+        Place {
+            upwards: true,
+            ..self
+        }
+    }
+}
+
+/// Draws `text` on `root` (pixel coordinates of the whole figure).
+pub(super) fn draw_text<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    mode: TextMode,
+    text: &str,
+    spec: TextSpec,
+    place: Place,
+) -> Result<(), ChartError> {
+    if text.is_empty() {
+        return Ok(());
+    }
+    let (w, h) = spec.size(text);
+    let along = (place.along.fraction() * f64::from(w)).round() as i32;
+    let across = (place.across.fraction() * f64::from(h)).round() as i32;
+    // Start of the line (left end, or bottom end when upwards) and its top (left) edge.
+    let (x0, y0) = if place.upwards {
+        (place.at.0 - across, place.at.1 + along)
+    } else {
+        (place.at.0 - along, place.at.1 - across)
+    };
+    let transform = if place.upwards {
+        FontTransform::Rotate270
+    } else {
+        FontTransform::None
+    };
+    let style = TextStyle::from(spec.font())
+        .color(&spec.color)
+        .pos(Pos::new(HPos::Left, VPos::Top))
+        .transform(transform);
+    match mode {
+        // Let the viewer align the text, so it stays aligned with whatever font it substitutes.
+        TextMode::Whole => {
+            let h = match place.along {
+                Align::Start => HPos::Left,
+                Align::Middle => HPos::Center,
+                Align::End => HPos::Right,
+            };
+            let v = match place.across {
+                Align::Start => VPos::Top,
+                Align::Middle => VPos::Center,
+                Align::End => VPos::Bottom,
+            };
+            let style = style.pos(Pos::new(h, v));
+            root.draw(&Text::new(text.to_owned(), place.at, style))
+                .map_err(drawing_error)
+        }
+        TextMode::PerGlyph => {
+            let font = spec.font();
+            // plotters puts the bitmap baseline at half the size below the top; SVG puts it at
+            // about 0.61 of the size. Shift bitmaps down so both outputs agree.
+            let baseline = (0.11 * spec.px).round() as i32;
+            let mut glyph = [0u8; 4];
+            for (i, c) in text.char_indices() {
+                let c: &str = c.encode_utf8(&mut glyph);
+                let pen = spec.size(&text[..i]).0;
+                let advance = spec.size(c).0;
+                let Some(ink) = ink_width(&font, c) else {
+                    continue; // blank glyph such as a space
+                };
+                let offset = pen + (advance - ink).max(0) / 2;
+                let at = if place.upwards {
+                    (x0 + baseline, y0 - offset)
+                } else {
+                    (x0 + offset, y0 + baseline)
+                };
+                root.draw(&Text::new(c.to_owned(), at, style.clone()))
+                    .map_err(drawing_error)?;
+            }
+            Ok(())
+        }
+    }
+}
+
+/// Width in pixels of the glyph's rasterised ink, `None` if it draws nothing.
+fn ink_width(font: &FontDesc<'_>, glyph: &str) -> Option<i32> {
+    let mut max_x: Option<i32> = None;
+    let drawn = font.draw(glyph, (0, 0), |x, _y, _alpha| {
+        max_x = Some(max_x.map_or(x, |m| m.max(x)));
+        Ok::<(), ()>(())
+    });
+    match drawn {
+        Ok(Ok(())) => max_x.map(|m| m + 1),
+        _ => None,
+    }
+}

@@ -1,0 +1,710 @@
+//! Golden-file comparison: tables compared column by column with stated tolerances.
+//!
+//! A golden file is a CSV [`Table`] that a reviewer accepted. A test recomputes the table and
+//! calls [`compare`] with a [`TolerancePolicy`] naming the tolerance of every column; the
+//! resulting [`Comparison`] says whether they match and, through `Display`, prints a diff a
+//! person can act on: per column the number of failing rows, the worst row (expected, actual,
+//! difference, allowance) and the first few failing rows.
+//!
+//! Comment lines are not compared: they carry provenance (versions, dates) that may change
+//! without the numbers changing.
+//!
+//! [`compare_files`] does the same for a set of files whose texts the caller has read, so the
+//! comparison itself never touches the file system.
+
+use std::fmt;
+
+use super::table::{ColumnData, NumberFormat, Table, TableError, format_number};
+
+/// How far an actual value may be from the expected one: `|actual - expected| <= abs + rel *
+/// |expected|`.
+///
+/// `NaN` equals `NaN` (a point that could not be computed must stay so) and differs from every
+/// number; an infinity equals only the same infinity.
+///
+/// # Examples
+///
+/// ```
+/// use wheelrail::report::golden::Tolerance;
+///
+/// let tol = Tolerance { abs: 1e-6, rel: 1e-9 };
+/// assert!(tol.accepts(1000.0, 1000.0 + 1.9e-6)); // allowance 1e-6 + 1e-9 * 1000 = 2e-6
+/// assert!(!tol.accepts(1000.0, 1000.0 + 2.1e-6));
+/// assert!(tol.accepts(f64::NAN, f64::NAN));
+/// assert!(!tol.accepts(f64::NAN, 0.0));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tolerance {
+    /// Absolute allowance, in the column's unit.
+    pub abs: f64,
+    /// Relative allowance, as a fraction of `|expected|`.
+    pub rel: f64,
+}
+
+impl Tolerance {
+    /// Only identical values pass.
+    pub const EXACT: Tolerance = Tolerance { abs: 0.0, rel: 0.0 };
+
+    /// Absolute tolerance only.
+    pub const fn abs(abs: f64) -> Self {
+        Tolerance { abs, rel: 0.0 }
+    }
+
+    /// Relative tolerance only.
+    pub const fn rel(rel: f64) -> Self {
+        Tolerance { abs: 0.0, rel }
+    }
+
+    /// The largest difference accepted around `expected`: `abs + rel * |expected|`.
+    pub fn allowance(&self, expected: f64) -> f64 {
+        self.abs + self.rel * expected.abs()
+    }
+
+    /// Whether `actual` is within tolerance of `expected`.
+    pub fn accepts(&self, expected: f64, actual: f64) -> bool {
+        match (expected.is_nan(), actual.is_nan()) {
+            (true, true) => return true,
+            (true, false) | (false, true) => return false,
+            (false, false) => {}
+        }
+        if expected.is_infinite() || actual.is_infinite() {
+            return expected.is_infinite()
+                && actual.is_infinite()
+                && expected.is_sign_positive() == actual.is_sign_positive();
+        }
+        (actual - expected).abs() <= self.allowance(expected)
+    }
+}
+
+impl fmt::Display for Tolerance {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "abs {:e} + rel {:e}", self.abs, self.rel)
+    }
+}
+
+/// Which tolerance applies to which column: exact names first, then the longest matching
+/// name suffix, then the default.
+///
+/// It may also name a key column (such as `y_ws_mm`) whose value is printed next to each failing
+/// row, so a reader sees *where* a curve differs, not only in which row.
+///
+/// # Examples
+///
+/// ```
+/// use wheelrail::report::golden::{Tolerance, TolerancePolicy};
+///
+/// let policy = TolerancePolicy::new(Tolerance::rel(1e-9))
+///     .suffix("_mm", Tolerance::abs(1e-6))
+///     .suffix("_rad", Tolerance::abs(1e-9))
+///     .suffix("p0_MPa", Tolerance::rel(1e-6))
+///     .column("roll_rad", Tolerance::abs(1e-12));
+/// assert_eq!(policy.tolerance_for("y_ws_mm"), Tolerance::abs(1e-6));
+/// assert_eq!(policy.tolerance_for("roll_rad"), Tolerance::abs(1e-12));
+/// assert_eq!(policy.tolerance_for("left_gamma_rad"), Tolerance::abs(1e-9));
+/// assert_eq!(policy.tolerance_for("left_p0_MPa"), Tolerance::rel(1e-6));
+/// assert_eq!(policy.tolerance_for("count"), Tolerance::rel(1e-9));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct TolerancePolicy {
+    default: Tolerance,
+    columns: Vec<(String, Tolerance)>,
+    suffixes: Vec<(String, Tolerance)>,
+    key_column: Option<String>,
+}
+
+impl TolerancePolicy {
+    /// A policy applying `default` to every column.
+    pub fn new(default: Tolerance) -> Self {
+        TolerancePolicy {
+            default,
+            columns: Vec::new(),
+            suffixes: Vec::new(),
+            key_column: None,
+        }
+    }
+
+    /// Applies `tol` to the column named exactly `name` (replacing an earlier rule for it).
+    pub fn column(mut self, name: impl Into<String>, tol: Tolerance) -> Self {
+        let name = name.into();
+        self.columns.retain(|(n, _)| *n != name);
+        self.columns.push((name, tol));
+        self
+    }
+
+    /// Applies `tol` to columns whose name ends with `suffix` (replacing an earlier rule for it).
+    pub fn suffix(mut self, suffix: impl Into<String>, tol: Tolerance) -> Self {
+        let suffix = suffix.into();
+        self.suffixes.retain(|(s, _)| *s != suffix);
+        self.suffixes.push((suffix, tol));
+        self
+    }
+
+    /// Names the column whose value identifies a row in diff reports.
+    pub fn key_column(mut self, name: impl Into<String>) -> Self {
+        self.key_column = Some(name.into());
+        self
+    }
+
+    /// The tolerance for column `name`.
+    pub fn tolerance_for(&self, name: &str) -> Tolerance {
+        if let Some((_, tol)) = self.columns.iter().find(|(n, _)| n == name) {
+            return *tol;
+        }
+        self.suffixes
+            .iter()
+            .filter(|(s, _)| name.ends_with(s.as_str()))
+            .max_by_key(|(s, _)| s.len())
+            .map_or(self.default, |(_, tol)| *tol)
+    }
+}
+
+impl Default for TolerancePolicy {
+    /// Exact comparison of every column.
+    fn default() -> Self {
+        TolerancePolicy::new(Tolerance::EXACT)
+    }
+}
+
+/// One numeric value outside its tolerance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumericFailure {
+    /// Data row, counted from 0 after the header.
+    pub row: usize,
+    /// Value of the policy's key column in this row of the expected table, if there is one.
+    pub key: Option<f64>,
+    /// Golden value.
+    pub expected: f64,
+    /// Computed value.
+    pub actual: f64,
+    /// `|actual - expected|` (`NaN` when exactly one of them is `NaN`).
+    pub difference: f64,
+    /// The tolerance's allowance at `expected`.
+    pub allowance: f64,
+}
+
+impl NumericFailure {
+    /// How many allowances the difference spans; infinite for a NaN mismatch or a zero
+    /// allowance.
+    pub fn excess(&self) -> f64 {
+        if self.difference.is_nan() {
+            f64::INFINITY
+        } else if self.allowance > 0.0 {
+            self.difference / self.allowance
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// Order of badness: a NaN mismatch, then the larger excess, then the larger difference.
+    fn is_worse_than(&self, other: &NumericFailure) -> bool {
+        let key = |f: &NumericFailure| (f.difference.is_nan(), f.excess(), f.difference);
+        let (a, b) = (key(self), key(other));
+        a.0.cmp(&b.0)
+            .then(a.1.total_cmp(&b.1))
+            .then(a.2.total_cmp(&b.2))
+            .is_gt()
+    }
+}
+
+/// One text cell that differs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct TextFailure {
+    /// Data row, counted from 0 after the header.
+    pub row: usize,
+    /// Golden text.
+    pub expected: String,
+    /// Computed text.
+    pub actual: String,
+}
+
+/// How many failures a [`ColumnDiff`] keeps in its `first` list.
+pub const KEPT_FAILURES: usize = 5;
+
+/// What differs in one column present in both tables.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ColumnDiff {
+    /// One table has numbers, the other text.
+    KindMismatch {
+        /// `"numeric"` or `"text"`.
+        expected: &'static str,
+        /// `"numeric"` or `"text"`.
+        actual: &'static str,
+    },
+    /// Numbers outside tolerance.
+    Numeric {
+        /// The tolerance applied.
+        tolerance: Tolerance,
+        /// Number of failing rows.
+        failing: usize,
+        /// Number of rows compared (those both tables have).
+        compared: usize,
+        /// The worst failure: a NaN mismatch, else the largest [`NumericFailure::excess`], else
+        /// the largest difference (the first one on ties).
+        worst: NumericFailure,
+        /// The first failures in row order, at most [`KEPT_FAILURES`].
+        first: Vec<NumericFailure>,
+    },
+    /// Text cells that differ.
+    Text {
+        /// Number of failing rows.
+        failing: usize,
+        /// Number of rows compared (those both tables have).
+        compared: usize,
+        /// The first failures in row order, at most [`KEPT_FAILURES`].
+        first: Vec<TextFailure>,
+    },
+}
+
+/// The result of comparing an actual table with a golden one; see [`compare`].
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Comparison {
+    /// Columns of the golden table that the actual one lacks.
+    pub missing_columns: Vec<String>,
+    /// Columns of the actual table that the golden one lacks.
+    pub extra_columns: Vec<String>,
+    /// `(expected, actual)` row counts, when they differ.
+    pub row_counts: Option<(usize, usize)>,
+    /// Differences in shared columns, in the golden table's column order.
+    pub columns: Vec<(String, ColumnDiff)>,
+    /// Name of the key column, for the report.
+    pub key_column: Option<String>,
+}
+
+impl Comparison {
+    /// `true` when nothing differs beyond tolerance.
+    pub fn is_match(&self) -> bool {
+        self.missing_columns.is_empty()
+            && self.extra_columns.is_empty()
+            && self.row_counts.is_none()
+            && self.columns.is_empty()
+    }
+}
+
+/// Compares `actual` with the golden `expected`, column by column.
+///
+/// Columns are matched by name (order does not matter). Shared columns are compared over the
+/// rows both tables have, so a row-count mismatch still shows the differences in the common
+/// rows. Numeric columns use `policy.tolerance_for(name)`; text columns must be equal. Comment
+/// lines are ignored.
+///
+/// # Examples
+///
+/// ```
+/// use wheelrail::report::golden::{compare, Tolerance, TolerancePolicy};
+/// use wheelrail::report::table::Table;
+///
+/// let golden = Table::builder().numeric("x_mm", vec![1.0, 2.0]).build()?;
+/// let close = Table::builder().numeric("x_mm", vec![1.0, 2.0 + 5e-7]).build()?;
+/// let far = Table::builder().numeric("x_mm", vec![1.0, 2.0 + 2e-6]).build()?;
+/// let policy = TolerancePolicy::new(Tolerance::abs(1e-6));
+/// assert!(compare(&golden, &close, &policy).is_match());
+/// let diff = compare(&golden, &far, &policy);
+/// assert!(!diff.is_match());
+/// assert!(diff.to_string().contains("x_mm: 1 of 2 rows outside"));
+/// # Ok::<(), wheelrail::report::table::TableError>(())
+/// ```
+pub fn compare(expected: &Table, actual: &Table, policy: &TolerancePolicy) -> Comparison {
+    let mut out = Comparison {
+        key_column: policy.key_column.clone(),
+        ..Comparison::default()
+    };
+    out.missing_columns = expected
+        .column_names()
+        .filter(|n| actual.column(n).is_none())
+        .map(str::to_owned)
+        .collect();
+    out.extra_columns = actual
+        .column_names()
+        .filter(|n| expected.column(n).is_none())
+        .map(str::to_owned)
+        .collect();
+    if expected.n_rows() != actual.n_rows() {
+        out.row_counts = Some((expected.n_rows(), actual.n_rows()));
+    }
+    let keys = policy
+        .key_column
+        .as_deref()
+        .and_then(|k| expected.numeric(k));
+    for e in expected.columns() {
+        let Some(a) = actual.column(&e.name) else {
+            continue;
+        };
+        let diff = match (&e.data, &a.data) {
+            (ColumnData::Numeric(ev), ColumnData::Numeric(av)) => {
+                compare_numeric(ev, av, policy.tolerance_for(&e.name), keys)
+            }
+            (ColumnData::Text(ev), ColumnData::Text(av)) => compare_text(ev, av),
+            // A column without rows reads back as numeric whatever it held.
+            (ed, ad) if ed.is_empty() || ad.is_empty() => None,
+            (ed, ad) => Some(ColumnDiff::KindMismatch {
+                expected: ed.kind(),
+                actual: ad.kind(),
+            }),
+        };
+        if let Some(diff) = diff {
+            out.columns.push((e.name.clone(), diff));
+        }
+    }
+    out
+}
+
+fn compare_numeric(
+    expected: &[f64],
+    actual: &[f64],
+    tolerance: Tolerance,
+    keys: Option<&[f64]>,
+) -> Option<ColumnDiff> {
+    let mut failing = 0;
+    let mut worst: Option<NumericFailure> = None;
+    let mut first = Vec::new();
+    for (row, (&e, &a)) in expected.iter().zip(actual).enumerate() {
+        if tolerance.accepts(e, a) {
+            continue;
+        }
+        failing += 1;
+        let failure = NumericFailure {
+            row,
+            key: keys.and_then(|k| k.get(row).copied()),
+            expected: e,
+            actual: a,
+            difference: (a - e).abs(),
+            allowance: tolerance.allowance(e),
+        };
+        if worst.as_ref().is_none_or(|w| failure.is_worse_than(w)) {
+            worst = Some(failure.clone());
+        }
+        if first.len() < KEPT_FAILURES {
+            first.push(failure);
+        }
+    }
+    worst.map(|worst| ColumnDiff::Numeric {
+        tolerance,
+        failing,
+        compared: expected.len().min(actual.len()),
+        worst,
+        first,
+    })
+}
+
+fn compare_text(expected: &[String], actual: &[String]) -> Option<ColumnDiff> {
+    let mut failing = 0;
+    let mut first = Vec::new();
+    for (row, (e, a)) in expected.iter().zip(actual).enumerate() {
+        if e != a {
+            failing += 1;
+            if first.len() < KEPT_FAILURES {
+                first.push(TextFailure {
+                    row,
+                    expected: e.clone(),
+                    actual: a.clone(),
+                });
+            }
+        }
+    }
+    (failing > 0).then_some(ColumnDiff::Text {
+        failing,
+        compared: expected.len().min(actual.len()),
+        first,
+    })
+}
+
+/// At most this many columns are detailed by `Display for Comparison`; the rest are counted.
+pub const SHOWN_COLUMNS: usize = 12;
+
+fn num(x: f64) -> String {
+    format_number(x, NumberFormat::Significant(10))
+}
+
+impl NumericFailure {
+    fn describe(&self, key_name: Option<&str>) -> String {
+        let key = match (key_name, self.key) {
+            (Some(name), Some(k)) => {
+                format!(" ({name} = {})", format_number(k, NumberFormat::Shortest))
+            }
+            _ => String::new(),
+        };
+        format!(
+            "row {}{key}: expected {}, actual {}, |diff| {}, allowed {}",
+            self.row,
+            num(self.expected),
+            num(self.actual),
+            num(self.difference),
+            num(self.allowance)
+        )
+    }
+}
+
+impl fmt::Display for Comparison {
+    /// A readable diff, at most about 8 lines per column and [`SHOWN_COLUMNS`] columns.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.is_match() {
+            return f.write_str("tables match within tolerance\n");
+        }
+        if !self.missing_columns.is_empty() {
+            writeln!(f, "missing columns: {}", self.missing_columns.join(", "))?;
+        }
+        if !self.extra_columns.is_empty() {
+            writeln!(f, "extra columns: {}", self.extra_columns.join(", "))?;
+        }
+        if let Some((e, a)) = self.row_counts {
+            writeln!(
+                f,
+                "row count: expected {e}, actual {a} (common rows compared)"
+            )?;
+        }
+        let key = self.key_column.as_deref();
+        for (name, diff) in self.columns.iter().take(SHOWN_COLUMNS) {
+            match diff {
+                ColumnDiff::KindMismatch { expected, actual } => {
+                    writeln!(f, "{name}: expected a {expected} column, found {actual}")?;
+                }
+                ColumnDiff::Numeric {
+                    tolerance,
+                    failing,
+                    compared,
+                    worst,
+                    first,
+                } => {
+                    writeln!(
+                        f,
+                        "{name}: {failing} of {compared} rows outside tolerance ({tolerance})"
+                    )?;
+                    writeln!(f, "  worst {}", worst.describe(key))?;
+                    for failure in first {
+                        writeln!(f, "  {}", failure.describe(key))?;
+                    }
+                    if *failing > first.len() {
+                        writeln!(f, "  ... {} more", failing - first.len())?;
+                    }
+                }
+                ColumnDiff::Text {
+                    failing,
+                    compared,
+                    first,
+                } => {
+                    writeln!(f, "{name}: {failing} of {compared} text cells differ")?;
+                    for t in first {
+                        writeln!(
+                            f,
+                            "  row {}: expected {:?}, actual {:?}",
+                            t.row, t.expected, t.actual
+                        )?;
+                    }
+                    if *failing > first.len() {
+                        writeln!(f, "  ... {} more", failing - first.len())?;
+                    }
+                }
+            }
+        }
+        if self.columns.len() > SHOWN_COLUMNS {
+            writeln!(
+                f,
+                "... and {} more differing columns",
+                self.columns.len() - SHOWN_COLUMNS
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// The outcome for one file of [`compare_files`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum FileOutcome {
+    /// The tables match within tolerance.
+    Match,
+    /// The tables differ.
+    Differs(Comparison),
+    /// There is no golden text for a produced file (a new output: review and accept it).
+    MissingExpected,
+    /// A golden file was not produced.
+    MissingActual,
+    /// The golden text is not a valid table.
+    InvalidExpected(TableError),
+    /// The produced text is not a valid table.
+    InvalidActual(TableError),
+}
+
+/// The outcomes of [`compare_files`], in the order given.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct FilesComparison {
+    /// `(file name, outcome)` pairs.
+    pub files: Vec<(String, FileOutcome)>,
+}
+
+impl FilesComparison {
+    /// `true` when every file matches.
+    pub fn is_match(&self) -> bool {
+        self.files.iter().all(|(_, o)| *o == FileOutcome::Match)
+    }
+
+    /// Names of the files that do not match.
+    pub fn failing(&self) -> impl Iterator<Item = &str> {
+        self.files
+            .iter()
+            .filter(|(_, o)| *o != FileOutcome::Match)
+            .map(|(n, _)| n.as_str())
+    }
+}
+
+impl fmt::Display for FilesComparison {
+    /// One block per file that does not match; a one-line summary when all match.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let failing = self.failing().count();
+        if failing == 0 {
+            return writeln!(f, "all {} files match within tolerance", self.files.len());
+        }
+        writeln!(f, "{failing} of {} files differ", self.files.len())?;
+        for (name, outcome) in &self.files {
+            match outcome {
+                FileOutcome::Match => {}
+                FileOutcome::Differs(c) => {
+                    writeln!(f, "--- {name}")?;
+                    for line in c.to_string().lines() {
+                        writeln!(f, "  {line}")?;
+                    }
+                }
+                FileOutcome::MissingExpected => {
+                    writeln!(
+                        f,
+                        "--- {name}: no golden file (new output; review and accept it)"
+                    )?;
+                }
+                FileOutcome::MissingActual => writeln!(f, "--- {name}: not produced")?,
+                FileOutcome::InvalidExpected(e) => writeln!(f, "--- {name}: golden file: {e}")?,
+                FileOutcome::InvalidActual(e) => writeln!(f, "--- {name}: produced file: {e}")?,
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Compares sets of CSV texts: each item is `(file name, golden text, produced text)`, a
+/// `None` standing for a file that does not exist. The caller reads the files.
+///
+/// # Examples
+///
+/// ```
+/// use wheelrail::report::golden::{compare_files, FileOutcome, TolerancePolicy};
+///
+/// let files = [
+///     ("a.csv", Some("x_mm\n1\n"), Some("x_mm\n1\n")),
+///     ("b.csv", None, Some("x_mm\n1\n")),
+/// ];
+/// let result = compare_files(&files, &TolerancePolicy::default());
+/// assert!(!result.is_match());
+/// assert_eq!(result.files[1].1, FileOutcome::MissingExpected);
+/// assert_eq!(result.failing().collect::<Vec<_>>(), ["b.csv"]);
+/// ```
+pub fn compare_files(
+    files: &[(&str, Option<&str>, Option<&str>)],
+    policy: &TolerancePolicy,
+) -> FilesComparison {
+    let files = files
+        .iter()
+        .map(|&(name, expected, actual)| {
+            let outcome = match (expected, actual) {
+                (None, _) => FileOutcome::MissingExpected,
+                (Some(_), None) => FileOutcome::MissingActual,
+                (Some(e), Some(a)) => match (Table::parse_csv(e), Table::parse_csv(a)) {
+                    (Err(e), _) => FileOutcome::InvalidExpected(e),
+                    (_, Err(a)) => FileOutcome::InvalidActual(a),
+                    (Ok(e), Ok(a)) => {
+                        let c = compare(&e, &a, policy);
+                        if c.is_match() {
+                            FileOutcome::Match
+                        } else {
+                            FileOutcome::Differs(c)
+                        }
+                    }
+                },
+            };
+            (name.to_owned(), outcome)
+        })
+        .collect();
+    FilesComparison { files }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(name: &str, v: Vec<f64>) -> Table {
+        Table::builder().numeric(name, v).build().unwrap()
+    }
+
+    #[test]
+    fn just_within_passes_and_just_beyond_fails_abs() {
+        // allowance = 1e-6; the perturbations are 0.1 % inside and outside it.
+        let policy = TolerancePolicy::new(Tolerance::abs(1e-6));
+        let golden = one("x_mm", vec![1.0, -3.0]);
+        let within = one("x_mm", vec![1.0 + 0.999e-6, -3.0 - 0.999e-6]);
+        let beyond = one("x_mm", vec![1.0 + 1.001e-6, -3.0]);
+        assert!(compare(&golden, &within, &policy).is_match());
+        assert!(!compare(&golden, &beyond, &policy).is_match());
+    }
+
+    #[test]
+    fn just_within_passes_and_just_beyond_fails_rel() {
+        // allowance = 1e-6 * |1000| = 1e-3, taken relative to the golden value.
+        let policy = TolerancePolicy::new(Tolerance::rel(1e-6));
+        let golden = one("p0_MPa", vec![1000.0]);
+        assert!(compare(&golden, &one("p0_MPa", vec![1000.000999]), &policy).is_match());
+        assert!(!compare(&golden, &one("p0_MPa", vec![1000.001001]), &policy).is_match());
+        assert!(compare(&golden, &one("p0_MPa", vec![999.999001]), &policy).is_match());
+        assert!(!compare(&golden, &one("p0_MPa", vec![999.998999]), &policy).is_match());
+    }
+
+    #[test]
+    fn infinities_equal_only_themselves() {
+        let tol = Tolerance::abs(1.0);
+        assert!(tol.accepts(f64::INFINITY, f64::INFINITY));
+        assert!(!tol.accepts(f64::INFINITY, f64::NEG_INFINITY));
+        assert!(!tol.accepts(f64::INFINITY, 1e308));
+        assert!(!tol.accepts(0.0, f64::INFINITY));
+    }
+
+    #[test]
+    fn worst_is_largest_excess_and_nan_mismatch_is_worst() {
+        let policy = TolerancePolicy::new(Tolerance::abs(1.0));
+        let golden = one("a", vec![0.0, 0.0, 0.0, 0.0]);
+        let actual = one("a", vec![2.0, 5.0, f64::NAN, 3.0]);
+        let c = compare(&golden, &actual, &policy);
+        let ColumnDiff::Numeric {
+            failing,
+            worst,
+            first,
+            ..
+        } = &c.columns[0].1
+        else {
+            panic!("numeric diff expected")
+        };
+        assert_eq!(*failing, 4);
+        assert_eq!(worst.row, 2);
+        assert_eq!(first.len(), 4);
+    }
+
+    #[test]
+    fn suffix_rules_longest_wins_and_later_rule_replaces() {
+        let p = TolerancePolicy::new(Tolerance::EXACT)
+            .suffix("_mm", Tolerance::abs(1.0))
+            .suffix("radius_mm", Tolerance::abs(2.0))
+            .suffix("_mm", Tolerance::abs(3.0));
+        assert_eq!(p.tolerance_for("left_radius_mm"), Tolerance::abs(2.0));
+        assert_eq!(p.tolerance_for("y_mm"), Tolerance::abs(3.0));
+    }
+
+    #[test]
+    fn display_is_capped() {
+        let n = 1000;
+        let golden = Table::builder()
+            .numeric("a_mm", vec![0.0; n])
+            .build()
+            .unwrap();
+        let actual = one("a_mm", (0..n).map(|i| i as f64).collect());
+        let text = compare(&golden, &actual, &TolerancePolicy::default()).to_string();
+        assert!(text.lines().count() <= 8, "{text}");
+        assert!(text.contains("a_mm: 999 of 1000 rows outside tolerance"));
+        assert!(text.contains("worst row 999"));
+        assert!(text.contains("... 994 more"));
+    }
+}
