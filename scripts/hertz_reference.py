@@ -5,8 +5,12 @@ Regenerate with:
 
     python3 scripts/hertz_reference.py > tests/data/hertz_reference.csv
 
+With `--fit` it prints instead the Chebyshev fits of the Newton starting value used in
+src/hertz/exact.rs (START_PIECES): ln(b/a) - (2/3) ln(A/B) on pieces of x = ln(A/B), as
+polynomials in t = (2x - lo - hi)/(hi - lo), highest degree first, with the fit's error bound.
+
 Requires mpmath (tested with 1.3). Independent of the Rust code: the shape equation is solved
-in its textbook form (Johnson 1985, Eq. 4.39; paper Eq. 14) with mpmath's ellipk/ellipe and
+in its textbook form (Johnson 1985, §4.2; paper Eq. 14) with mpmath's ellipk/ellipe and
 findroot, at a working precision of 50 digits (the cancellation near the circle costs at most
 ~25 of them for the cases below).
 
@@ -15,7 +19,7 @@ For A' = min(A, B), B' = max(A, B), g = b/a <= 1, m = 1 - g^2:
     A'/B' = g^2 (K(m) - E(m)) / (E(m) - g^2 K(m))            (paper Eq. 14)
     a_major^3 = 3 P (K - E) / (2 pi E* m A')                   (paper Eq. 20)
     b_minor = g a_major,  p0 = 3 P / (2 pi a b)                (paper Eq. 11)
-    approach = 3 P K / (2 pi a_major E*)                       (Johnson 1985, Eq. 4.40)
+    approach = 3 P K / (2 pi a_major E*)                       (Johnson 1985, §4.2)
 
 and a_mm is reported along A, b_mm along B. Inputs are written as the exact decimal expansion
 of the f64 the test will read (repr), and the computation uses exactly that binary value.
@@ -83,7 +87,29 @@ def cases():
     yield 3.7e-4, 0.8, 12.5, 2.0e3
 
 
+# Pieces of ln(A/B) for the starting-value fits and the number of coefficients of each;
+# chosen so that every piece is fitted to better than 1e-9 in ln(b/a).
+FIT_PIECES = ((-3.0, 0.0, 13), (-10.0, -3.0, 13), (-28.0, -10.0, 13))
+
+
+def fit():
+    mp.mp.dps = 30
+    for lo, hi, n in FIT_PIECES:
+
+        def deviation(t):
+            x = lo + (t + 1) / 2 * (hi - lo)
+            return mp.log(shape(mp.exp(x))) - x * 2 / 3
+
+        poly, err = mp.chebyfit(deviation, [-1, 1], n, error=True)
+        coeffs = ", ".join(repr(float(c)) for c in poly)
+        print(f"// lo = {lo}, hi = {hi}, max error {mp.nstr(err, 3)}")
+        print(f"[{coeffs}]")
+
+
 def main():
+    if sys.argv[1:] == ["--fit"]:
+        fit()
+        return
     out = sys.stdout
     out.write("# Hertz ellipse references from scripts/hertz_reference.py (mpmath, 50 digits).\n")
     out.write("# Regenerate: python3 scripts/hertz_reference.py > tests/data/hertz_reference.csv\n")

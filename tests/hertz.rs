@@ -91,7 +91,7 @@ fn classical_coefficients_m_n() {
 }
 
 /// Sphere on plane, A = B = 1/(2R): a = (3PR/(4E*))^(1/3), δ = a²/R, p0 = 3P/(2πa²)
-/// (Johnson 1985, Eqs. 4.22-4.23). 1e-14: a few roundings in cbrt and the products.
+/// (Johnson 1985, §4.2). 1e-14: a few roundings in cbrt and the products.
 #[test]
 fn sphere_on_plane_closed_form() {
     for (r, load, e_star) in [
@@ -290,7 +290,7 @@ proptest! {
     }
 
     /// Hertz scaling: a, b ∝ P^(1/3), p0 ∝ P^(1/3), δ ∝ P^(2/3), so 8 P doubles a, b and p0
-    /// and quadruples δ (Johnson 1985, Eqs. 4.36-4.40). 1e-15: cbrt and a few roundings.
+    /// and quadruples δ (Johnson 1985, §4.2). 1e-15: cbrt and a few roundings.
     #[test]
     fn eight_times_the_load_doubles_a_b_p0(
         a in 1e-6..1.0f64, b in 1e-6..1.0f64, load in 1.0..1e6f64,

@@ -66,6 +66,6 @@ pub fn paper_ratio_error(a_over_b_curv: f64) -> (f64, u32) {
     let paper = eccentricity(ratio, &PaperSettings::default());
     let e = paper.eccentricity;
     let g_paper = ((1.0 - e) * (1.0 + e)).sqrt();
-    let g_exact = exact::shape(ratio.ln()).g;
+    let g_exact = exact::shape(ratio, ratio.ln()).g;
     (g_paper / g_exact - 1.0, paper.iterations)
 }
