@@ -141,7 +141,7 @@ mod tests {
     #[test]
     fn matches_mpmath_over_the_range() {
         // (g, K, E, (K - E)/m, (E - g² K)/m): mpmath 1.3 at 40 digits with m = 1 - g² formed
-        // exactly, rounded to 18 digits. Tolerance (4 + 2 K) ε: a few roundings, plus the
+        // exactly, rounded to f64. Tolerance (4 + 2 K) ε: a few roundings, plus the
         // factor ~K the form D' = K (1/2 - m σ) (and E = m D' + g² K) loses for small g
         // (module docs).
         let table = [
