@@ -1,0 +1,297 @@
+//! `wheelrail hertz`: one Hertz solve from the command line, printed as CSV.
+//!
+//! Input either as relative curvatures (`--A`, `--B`, 1/mm) or as the four signed principal
+//! radii of wheel (1) and rail (2) (`--r1x --r1y --r2x --r2y`, mm, convex positive, `inf` for
+//! a straight direction, principal directions aligned: ψ = 0). Both bodies have the same
+//! material.
+//!
+//! # Output
+//!
+//! A header and one row:
+//!
+//! ```text
+//! a_mm,b_mm,p0_MPa,approach_mm,e,method,iterations,stop
+//! ```
+//!
+//! numbers in shortest round-trip form, `e` the eccentricity, `stop` the solver's
+//! [`StopReason`](super::StopReason) (`converged`, `iteration_cap`, `left_domain`), so that a
+//! non-converged paper solve is visible.
+//!
+//! A non-Hertzian case (`A + B <= 0`, `A <= 0` or `B <= 0`) is a result, not an error: the row
+//! carries `NaN` in the numeric columns, the method, `0` iterations and the reason in the
+//! `stop` column (`not_hertzian: ...`), and [`run`] returns `Ok` (exit code 0). This follows
+//! the crate's CSV convention (a row that could not be computed carries NaN and a status; it
+//! is never dropped) and lets a script loop over cases without treating geometry as failure.
+//! Invalid input (non-positive load, Poisson's ratio out of range, a zero radius, ...) is an
+//! error.
+
+use super::{
+    Contact, HertzError, Material, Method, PrincipalCurvatures, effective_modulus, ellipse,
+    relative_curvatures,
+};
+
+/// Arguments of `wheelrail hertz`.
+#[derive(Debug, Clone, PartialEq, clap::Args)]
+#[command(group(
+    clap::ArgGroup::new("curvatures")
+        .args(["a", "b"])
+        .multiple(true)
+        .conflicts_with("radii")
+))]
+#[command(group(
+    clap::ArgGroup::new("radii")
+        .args(["r1x", "r1y", "r2x", "r2y"])
+        .multiple(true)
+))]
+pub struct HertzArgs {
+    /// Relative curvature A in the rolling direction, 1/mm.
+    #[arg(long = "A", value_name = "1/mm", allow_negative_numbers = true)]
+    #[arg(required_unless_present = "radii")]
+    pub a: Option<f64>,
+    /// Relative curvature B in the lateral direction, 1/mm.
+    #[arg(long = "B", value_name = "1/mm", allow_negative_numbers = true)]
+    #[arg(required_unless_present = "radii")]
+    pub b: Option<f64>,
+    /// Wheel principal radius, rolling direction, mm (convex positive, `inf` for flat).
+    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(required_unless_present = "curvatures")]
+    pub r1x: Option<f64>,
+    /// Wheel principal radius, lateral direction, mm (convex positive, `inf` for flat).
+    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(required_unless_present = "curvatures")]
+    pub r1y: Option<f64>,
+    /// Rail principal radius, rolling direction, mm (convex positive, `inf` for flat).
+    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(required_unless_present = "curvatures")]
+    pub r2x: Option<f64>,
+    /// Rail principal radius, lateral direction, mm (convex positive, `inf` for flat).
+    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(required_unless_present = "curvatures")]
+    pub r2y: Option<f64>,
+    /// Normal load, N.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub load: f64,
+    /// Young's modulus of both bodies, GPa.
+    #[arg(long, value_name = "GPa", default_value_t = 210.0)]
+    pub young_gpa: f64,
+    /// Poisson's ratio of both bodies.
+    #[arg(long, default_value_t = 0.3, allow_negative_numbers = true)]
+    pub poisson: f64,
+    /// Numerical method.
+    #[arg(long, value_enum, default_value_t = Method::Exact)]
+    pub method: Method,
+}
+
+/// The CSV header printed by [`run`].
+pub const HEADER: &str = "a_mm,b_mm,p0_MPa,approach_mm,e,method,iterations,stop";
+
+/// MPa per GPa: the one unit conversion of this command.
+const MPA_PER_GPA: f64 = 1e3;
+
+/// Solves the case described by `args` and returns the text to print (header and one row,
+/// newline-terminated).
+///
+/// # Units
+///
+/// Inputs as documented on [`HertzArgs`]; output columns carry their unit.
+///
+/// # Errors
+///
+/// The [`HertzError`] of [`Material::new`] or [`ellipse`] for invalid input,
+/// [`HertzError::ZeroRadius`] for a radius of 0, [`HertzError::NonFinite`] for a NaN radius.
+/// A non-Hertzian geometry is **not** an error (see the module docs).
+///
+/// # Example
+///
+/// ```
+/// use clap::Parser;
+/// use wheelrail::hertz::cli::{HertzArgs, run};
+/// #[derive(Parser)]
+/// struct Cli {
+///     #[command(flatten)]
+///     hertz: HertzArgs,
+/// }
+/// let cli = Cli::parse_from(["hertz", "--A", "0.05", "--B", "0.05", "--load", "100"]);
+/// let out = run(&cli.hertz)?;
+/// assert!(out.starts_with("a_mm,b_mm,p0_MPa,approach_mm,e,method,iterations,stop\n"));
+/// assert!(out.lines().nth(1).unwrap().ends_with(",exact,0,converged"));
+/// # Ok::<(), wheelrail::hertz::HertzError>(())
+/// ```
+pub fn run(args: &HertzArgs) -> Result<String, HertzError> {
+    let material = Material::new(args.young_gpa * MPA_PER_GPA, args.poisson)?;
+    let e_star = effective_modulus(&material, &material);
+    let (a, b) = match (args.a, args.b) {
+        (Some(a), Some(b)) => (a, b),
+        _ => {
+            // clap guarantees all four radii when A and B are absent; a library caller that
+            // builds HertzArgs by hand and leaves one out gets NaN, reported as NonFinite.
+            let curvature = |quantity: &'static str, r: Option<f64>| -> Result<f64, HertzError> {
+                let r = r.unwrap_or(f64::NAN);
+                if r.is_nan() {
+                    return Err(HertzError::NonFinite { quantity, value: r });
+                }
+                if r == 0.0 {
+                    return Err(HertzError::ZeroRadius { quantity });
+                }
+                Ok(1.0 / r)
+            };
+            let k = PrincipalCurvatures {
+                wheel_rolling: curvature("r1x", args.r1x)?,
+                wheel_lateral: curvature("r1y", args.r1y)?,
+                rail_rolling: curvature("r2x", args.r2x)?,
+                rail_lateral: curvature("r2y", args.r2y)?,
+            };
+            relative_curvatures(&k, 0.0)
+        }
+    };
+    let row = match ellipse(a, b, args.load, e_star, args.method)? {
+        Contact::Hertzian(c) => format!(
+            "{:e},{:e},{:e},{:e},{:e},{},{},{}",
+            c.a_mm, c.b_mm, c.p0_mpa, c.approach_mm, c.eccentricity, c.method, c.iterations, c.stop
+        ),
+        Contact::NotHertzian(reason) => {
+            format!(
+                "NaN,NaN,NaN,NaN,NaN,{},0,not_hertzian: {reason}",
+                args.method
+            )
+        }
+    };
+    Ok(format!("{HEADER}\n{row}\n"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Debug, Parser)]
+    struct Cli {
+        #[command(flatten)]
+        hertz: HertzArgs,
+    }
+
+    fn parse(args: &[&str]) -> Result<HertzArgs, clap::Error> {
+        let mut argv = vec!["hertz"];
+        argv.extend_from_slice(args);
+        Cli::try_parse_from(argv).map(|c| c.hertz)
+    }
+
+    fn row(out: &str) -> Vec<String> {
+        let mut lines = out.lines();
+        assert_eq!(lines.next(), Some(HEADER));
+        let fields = lines
+            .next()
+            .expect("one row")
+            .split(',')
+            .map(String::from)
+            .collect();
+        assert_eq!(lines.next(), None);
+        fields
+    }
+
+    fn num(s: &str) -> f64 {
+        s.parse().expect("a number")
+    }
+
+    #[test]
+    fn curvatures_and_radii_give_the_same_row() {
+        // Wheel r = 460 mm, flat tread; rail crown 300 mm, straight: A = 1/920, B = 1/600.
+        let by_curv = parse(&[
+            "--A",
+            "0.0010869565217391304",
+            "--B",
+            "0.0016666666666666668",
+            "--load",
+            "70000",
+        ])
+        .unwrap();
+        let by_radii = parse(&[
+            "--r1x", "460", "--r1y", "inf", "--r2x", "inf", "--r2y", "300", "--load", "70000",
+        ])
+        .unwrap();
+        let (x, y) = (row(&run(&by_curv).unwrap()), row(&run(&by_radii).unwrap()));
+        for col in 0..5 {
+            // 1e-15: the two inputs differ only in the rounding of 1/(2 R).
+            assert!(
+                (num(&x[col]) / num(&y[col]) - 1.0).abs() <= 1e-15,
+                "column {col}"
+            );
+        }
+        assert_eq!(&x[5..], ["exact", &x[6], "converged"]);
+        // a along rolling (A = 1/920 < B = 1/600, so a is the major axis).
+        assert!(num(&x[0]) > num(&x[1]));
+    }
+
+    #[test]
+    fn paper_method_and_material_are_passed_through() {
+        let args = parse(&[
+            "--A",
+            "0.001",
+            "--B",
+            "0.002",
+            "--load",
+            "1e5",
+            "--method",
+            "paper",
+            "--young-gpa",
+            "200",
+            "--poisson",
+            "0.25",
+        ])
+        .unwrap();
+        assert_eq!(args.method, Method::Paper);
+        let r = row(&run(&args).unwrap());
+        assert_eq!(r[5], "paper");
+        // Exact p0 for these inputs from the library; the paper method is within 5 % at
+        // A/B = 0.5 (see the accuracy table in the module docs).
+        let e_star = 200e3 / (2.0 * (1.0 - 0.0625));
+        let exact = ellipse(0.001, 0.002, 1e5, e_star, Method::Exact).unwrap();
+        let p0 = exact.ellipse().unwrap().p0_mpa;
+        assert!((num(&r[2]) / p0 - 1.0).abs() < 0.05);
+    }
+
+    #[test]
+    fn non_hertzian_prints_nan_and_the_reason() {
+        // Concave wheel flange root (r1y = -12 mm) against a 13 mm gauge corner: B < 0.
+        let args = parse(&[
+            "--r1x", "460", "--r1y", "-12", "--r2x", "inf", "--r2y", "13", "--load", "5e4",
+        ])
+        .unwrap();
+        let r = row(&run(&args).unwrap());
+        assert!(r[..5].iter().all(|v| v == "NaN"));
+        assert!(r[7].starts_with("not_hertzian"), "{}", r[7]);
+    }
+
+    #[test]
+    fn invalid_inputs_are_errors() {
+        let zero_radius = parse(&[
+            "--r1x", "0", "--r1y", "inf", "--r2x", "inf", "--r2y", "300", "--load", "1",
+        ])
+        .unwrap();
+        assert_eq!(
+            run(&zero_radius),
+            Err(HertzError::ZeroRadius { quantity: "r1x" })
+        );
+        let negative_load = parse(&["--A", "1", "--B", "1", "--load", "-1"]).unwrap();
+        assert!(matches!(
+            run(&negative_load),
+            Err(HertzError::NonPositiveLoad { .. })
+        ));
+        let bad_poisson = parse(&["--A", "1", "--B", "1", "--load", "1", "--poisson", "0.5"]);
+        assert!(matches!(
+            run(&bad_poisson.unwrap()),
+            Err(HertzError::PoissonOutOfRange { .. })
+        ));
+    }
+
+    #[test]
+    fn clap_enforces_one_complete_input_style() {
+        // Mixed styles, a lone --A, three radii, nothing: all rejected by the parser.
+        assert!(parse(&["--A", "1", "--B", "1", "--r1x", "1", "--load", "1"]).is_err());
+        assert!(parse(&["--A", "1", "--load", "1"]).is_err());
+        assert!(parse(&["--r1x", "1", "--r1y", "1", "--r2x", "1", "--load", "1"]).is_err());
+        assert!(parse(&["--load", "1"]).is_err());
+        assert!(parse(&["--A", "1", "--B", "1"]).is_err());
+        assert!(parse(&["--A", "1", "--B", "1", "--load", "1"]).is_ok());
+    }
+}
