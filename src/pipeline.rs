@@ -3,29 +3,71 @@
 //!
 //! ```text
 //! Profiles ──> Rigid ──> QuasiElastic ──> Hertz
+//!                    └─> EpsilonSensitivity
+//! HertzAccuracy (no inputs: the paper's Hertz numerics against the exact ones)
 //! ```
 //!
 //! Every figure declares the one stage whose result it draws ([`Figure::stage`]); the run
-//! computes that stage and its predecessors, nothing else, and records what it ran in a
-//! [`RunRecord`] (printed by `wheelrail report --timings`).
+//! computes that stage and the stages it depends on ([`Stage::requires`]), nothing else, and
+//! records what it ran in a [`RunRecord`] (printed by `wheelrail report --timings`).
 
+use crate::hertz;
 use crate::profile::ProfileKind;
+use crate::quasi_elastic::{self, QuasiElasticSweep};
+use crate::rigid::{self, RigidSweep};
 use crate::scene::Scene;
 use crate::track::{PlacedRail, PlacedWheel, Placement, SidePair};
 use std::time::Instant;
 
-/// A stage of the pipeline, in the order they depend on each other.
+/// A stage of the pipeline.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Stage {
     /// Profiles loaded, slopes and curvatures, wheels and rails placed.
     Profiles,
+    /// Rigid contact search over the sweep.
+    Rigid,
+    /// Quasi-elastic contact search over the sweep.
+    QuasiElastic,
+    /// Quasi-elastic search repeated for the scene's sensitivity values of eps.
+    EpsilonSensitivity,
+    /// Hertz ellipses over the sweep.
+    Hertz,
+    /// Accuracy of the paper's Hertz numerics against the exact method (scene-independent).
+    HertzAccuracy,
 }
 
 impl Stage {
+    /// Every stage, in an order that respects the dependencies.
+    pub const ALL: [Stage; 6] = [
+        Stage::Profiles,
+        Stage::Rigid,
+        Stage::QuasiElastic,
+        Stage::EpsilonSensitivity,
+        Stage::Hertz,
+        Stage::HertzAccuracy,
+    ];
+
     /// The stage's name as printed in run records.
     pub fn name(self) -> &'static str {
         match self {
             Stage::Profiles => "profiles",
+            Stage::Rigid => "rigid",
+            Stage::QuasiElastic => "quasi_elastic",
+            Stage::EpsilonSensitivity => "epsilon_sensitivity",
+            Stage::Hertz => "hertz",
+            Stage::HertzAccuracy => "hertz_accuracy",
+        }
+    }
+
+    /// The stages whose results this stage uses directly.
+    pub fn requires(self) -> &'static [Stage] {
+        match self {
+            Stage::Profiles | Stage::HertzAccuracy => &[],
+            Stage::Rigid => &[Stage::Profiles],
+            Stage::QuasiElastic | Stage::EpsilonSensitivity => &[Stage::Rigid],
+            // Hertz may use the rigid contact only; the closure below adds QuasiElastic when
+            // the scene says so (see `needed_stages`).
+            Stage::Hertz => &[Stage::Rigid],
         }
     }
 }
@@ -33,17 +75,57 @@ impl Stage {
 /// A figure a scene can ask for in `[outputs] figures`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Figure {
-    /// Wheel and rail profiles in their placed positions (paper Fig. 1, left).
+    /// Wheel and rail profiles in their placed positions (paper Fig. 1).
     Profiles,
-    /// tan(gamma) of wheel and rail against the lateral coordinate (paper Fig. 1, right).
+    /// tan(gamma) of wheel and rail against the lateral coordinate (paper Fig. 1).
     Conicity,
     /// Lateral curvature of wheel and rail against the lateral coordinate.
     Curvature,
+    /// Rigid contact points on wheel and rail against the shift (paper Fig. 2).
+    ContactPoints,
+    /// Rolling radius difference against the shift (paper Fig. 2).
+    RollingRadius,
+    /// Contact angles against the shift (paper Fig. 2).
+    ContactAngles,
+    /// Roll angle against the shift (paper Fig. 2).
+    Roll,
+    /// Wickens' contact angle parameter against the shift (paper Fig. 2).
+    ContactAngleParameter,
+    /// Profiles with the rigid contact points of the whole sweep.
+    ContactMap,
+    /// Rigid against quasi-elastic contact points (paper Fig. 4).
+    QuasiElasticPoints,
+    /// Contact map with rigid and quasi-elastic points (paper Fig. 5).
+    QuasiElasticMap,
+    /// Quasi-elastic contact position for several eps.
+    EpsilonSensitivity,
+    /// Semi-axes of the contact ellipses (paper Fig. 6).
+    SemiAxes,
+    /// Maximum contact pressure.
+    Pressure,
+    /// Accuracy of the paper's Hertz numerics.
+    HertzAccuracy,
 }
 
 impl Figure {
     /// Every figure, in report order.
-    pub const ALL: [Figure; 3] = [Figure::Profiles, Figure::Conicity, Figure::Curvature];
+    pub const ALL: [Figure; 15] = [
+        Figure::Profiles,
+        Figure::Conicity,
+        Figure::Curvature,
+        Figure::ContactPoints,
+        Figure::RollingRadius,
+        Figure::ContactAngles,
+        Figure::Roll,
+        Figure::ContactAngleParameter,
+        Figure::ContactMap,
+        Figure::QuasiElasticPoints,
+        Figure::QuasiElasticMap,
+        Figure::EpsilonSensitivity,
+        Figure::SemiAxes,
+        Figure::Pressure,
+        Figure::HertzAccuracy,
+    ];
 
     /// The name used in scene files and as the file stem.
     pub fn name(self) -> &'static str {
@@ -51,6 +133,18 @@ impl Figure {
             Figure::Profiles => "profiles",
             Figure::Conicity => "conicity",
             Figure::Curvature => "curvature",
+            Figure::ContactPoints => "contact_points",
+            Figure::RollingRadius => "rolling_radius",
+            Figure::ContactAngles => "contact_angles",
+            Figure::Roll => "roll",
+            Figure::ContactAngleParameter => "contact_angle_parameter",
+            Figure::ContactMap => "contact_map",
+            Figure::QuasiElasticPoints => "qe_contact_points",
+            Figure::QuasiElasticMap => "qe_contact_map",
+            Figure::EpsilonSensitivity => "qe_epsilon",
+            Figure::SemiAxes => "semi_axes",
+            Figure::Pressure => "pressure",
+            Figure::HertzAccuracy => "hertz_accuracy",
         }
     }
 
@@ -63,6 +157,16 @@ impl Figure {
     pub fn stage(self) -> Stage {
         match self {
             Figure::Profiles | Figure::Conicity | Figure::Curvature => Stage::Profiles,
+            Figure::ContactPoints
+            | Figure::RollingRadius
+            | Figure::ContactAngles
+            | Figure::Roll
+            | Figure::ContactAngleParameter
+            | Figure::ContactMap => Stage::Rigid,
+            Figure::QuasiElasticPoints | Figure::QuasiElasticMap => Stage::QuasiElastic,
+            Figure::EpsilonSensitivity => Stage::EpsilonSensitivity,
+            Figure::SemiAxes | Figure::Pressure => Stage::Hertz,
+            Figure::HertzAccuracy => Stage::HertzAccuracy,
         }
     }
 }
@@ -89,23 +193,57 @@ impl RunRecord {
     }
 }
 
-/// The results of the stages a scene needed.
+/// The quasi-elastic solution for each sensitivity value of eps.
+#[derive(Debug, Clone)]
+pub struct EpsilonSweeps {
+    /// `(eps in mm, solution)`, in the scene's order.
+    pub runs: Vec<(f64, QuasiElasticSweep)>,
+}
+
+/// The results of the stages a scene needed; a stage that was not needed is `None`.
 #[derive(Debug, Clone)]
 pub struct Results {
     /// Profiles placed on the track (always computed).
     pub placement: Placement,
+    /// Rigid contact over the sweep.
+    pub rigid: Option<RigidSweep>,
+    /// Quasi-elastic contact over the sweep.
+    pub quasi_elastic: Option<QuasiElasticSweep>,
+    /// Quasi-elastic contact for the sensitivity values of eps.
+    pub epsilon: Option<EpsilonSweeps>,
+    /// Hertz ellipses over the sweep.
+    pub hertz: Option<Vec<hertz::sweep::Position>>,
+    /// Accuracy of the paper's Hertz numerics.
+    pub hertz_accuracy: Option<HertzAccuracy>,
     /// What ran, and how long it took.
     pub record: RunRecord,
 }
 
-/// The last stage any of the scene's outputs needs.
-pub fn last_stage(scene: &Scene) -> Stage {
-    scene
-        .figures
-        .iter()
-        .map(|f| f.stage())
-        .max()
-        .unwrap_or(Stage::Profiles)
+/// Errors of the paper's Hertz numerics on fixed grids (scene-independent).
+#[derive(Debug, Clone)]
+pub struct HertzAccuracy {
+    /// `(e, relative error of K, relative error of E)` of the paper's series.
+    pub series: Vec<(f64, f64, f64)>,
+    /// `(A/B, relative error of b/a, iterations)` of the paper's fixed-point iteration.
+    pub ratio: Vec<(f64, f64, u32)>,
+}
+
+/// The stages `scene`'s outputs need, closed under dependencies, in run order. The
+/// profile stage always runs (placement is validated for every scene).
+pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
+    let mut wanted: Vec<Stage> = vec![Stage::Profiles];
+    wanted.extend(scene.figures.iter().map(|f| f.stage()));
+    wanted.extend(scene.extra_stages.iter().copied());
+    let mut closed = std::collections::BTreeSet::new();
+    while let Some(s) = wanted.pop() {
+        if closed.insert(s) {
+            wanted.extend_from_slice(s.requires());
+            if s == Stage::Hertz && scene.hertz.source == hertz::sweep::ContactSource::QuasiElastic {
+                wanted.push(Stage::QuasiElastic);
+            }
+        }
+    }
+    Stage::ALL.into_iter().filter(|s| closed.contains(s)).collect()
 }
 
 /// Runs the stages `scene`'s outputs need.
@@ -113,9 +251,93 @@ pub fn last_stage(scene: &Scene) -> Stage {
 /// # Errors
 /// [`crate::Error`] when a profile cannot be read or placed.
 pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
+    let stages = needed_stages(scene);
     let mut record = RunRecord::default();
     let placement = record.time(Stage::Profiles, || place(scene))?;
-    Ok(Results { placement, record })
+    let mut results = Results {
+        placement,
+        rigid: None,
+        quasi_elastic: None,
+        epsilon: None,
+        hertz: None,
+        hertz_accuracy: None,
+        record,
+    };
+    for stage in stages {
+        let record = &mut results.record;
+        match stage {
+            Stage::Profiles => {}
+            Stage::Rigid => {
+                let r = record.time(stage, || {
+                    rigid::search(&results.placement, &scene.sweep_mm, scene.rigid_solver)
+                });
+                results.rigid = Some(r);
+            }
+            Stage::QuasiElastic => {
+                let rigid = results.rigid.as_ref().expect("rigid runs before quasi-elastic");
+                let q = record.time(stage, || {
+                    quasi_elastic::search(&results.placement, rigid, &scene.quasi_elastic)
+                });
+                results.quasi_elastic = Some(q);
+            }
+            Stage::EpsilonSensitivity => {
+                let rigid = results.rigid.as_ref().expect("rigid runs before the sensitivity");
+                let e = record.time(stage, || EpsilonSweeps {
+                    runs: scene
+                        .epsilon_sensitivity_mm
+                        .iter()
+                        .map(|&eps| {
+                            let settings = quasi_elastic::Settings {
+                                epsilon_mm: eps,
+                                ..scene.quasi_elastic
+                            };
+                            (eps, quasi_elastic::search(&results.placement, rigid, &settings))
+                        })
+                        .collect(),
+                });
+                results.epsilon = Some(e);
+            }
+            Stage::Hertz => {
+                let rigid = results.rigid.as_ref().expect("rigid runs before Hertz");
+                let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+                let h = record.time(stage, || {
+                    hertz::sweep::sweep(
+                        rigid,
+                        results.quasi_elastic.as_ref(),
+                        scene.wheel_load_n,
+                        e_star,
+                        &scene.hertz,
+                    )
+                });
+                results.hertz = Some(h);
+            }
+            Stage::HertzAccuracy => {
+                let a = record.time(stage, hertz_accuracy);
+                results.hertz_accuracy = Some(a);
+            }
+        }
+    }
+    Ok(results)
+}
+
+/// The paper's Hertz numerics against the exact ones, on log-spaced grids.
+fn hertz_accuracy() -> HertzAccuracy {
+    let series = (0..=200)
+        .map(|i| {
+            // e from 0.01 to 1 - 1e-6, denser near 1 (log-spaced in 1 - e).
+            let e = 1.0 - 10f64.powf(-0.0043648 - 5.9956352 * f64::from(i) / 200.0);
+            let (k, ee) = hertz::accuracy::series_error(e);
+            (e, k, ee)
+        })
+        .collect();
+    let ratio = (0..=120)
+        .map(|i| {
+            let r = 10f64.powf(-6.0 + 6.0 * f64::from(i) / 120.0);
+            let (err, it) = hertz::accuracy::paper_ratio_error(r);
+            (r, err, it)
+        })
+        .collect();
+    HertzAccuracy { series, ratio }
 }
 
 /// Loads the scene's four profiles and places them.
@@ -127,8 +349,7 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     const RAIL_KEYS: [&str; 2] = ["rail.left_profile", "rail.right_profile"];
     let mut pairs = Vec::with_capacity(2);
     for i in 0..2 {
-        let wheel =
-            scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?;
+        let wheel = scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?;
         let rail = scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, RAIL_KEYS[i])?;
         let placement_error = |key: &'static str, e: crate::track::PlacementError| {
             crate::scene::SceneError::Profile {

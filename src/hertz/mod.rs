@@ -72,6 +72,7 @@ pub mod cli;
 mod elliptic;
 mod exact;
 pub mod paper;
+pub mod sweep;
 
 use std::f64::consts::PI;
 use std::fmt;

@@ -1,0 +1,162 @@
+//! Hertz contact over a lateral sweep: the contact ellipse of each wheel at each position,
+//! from the quasi-elastic (default) or the rigid contact.
+//!
+//! Curvatures at the contact point (`shared/reference/hertz.md`, psi = 0 on straight track):
+//! wheel rolling `cos(gamma) / r` (the normal meets the axle at `r / cos(gamma)`), wheel
+//! lateral and rail lateral from the contact search (convex positive), rail rolling 0; so
+//! `A = cos(gamma) / (2 r)` and `B = (k_wheel + k_rail) / 2`.
+//!
+//! Normal load from the vertical wheel load `Q`: `P = Q / cos(gamma)` (projected, default:
+//! the normal force whose vertical component carries `Q`, lateral force ignored) or `P = Q`
+//! (vertical). Where the quasi-elastic search found two patches, the load is split between
+//! them in proportion to their weight shares (an approximation: the weights follow the gap,
+//! not the elastic load sharing), the heaviest patch is reported, and the status says so.
+
+use super::{Contact, Method, PrincipalCurvatures, ellipse, relative_curvatures};
+use crate::quasi_elastic::QuasiElasticSweep;
+use crate::rigid::{RigidSweep, Stop};
+
+/// Which contact the ellipses are computed for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ContactSource {
+    /// The heaviest quasi-elastic patch (paper Fig. 6).
+    #[default]
+    QuasiElastic,
+    /// The rigid contact point.
+    Rigid,
+}
+
+/// How the normal load follows from the vertical wheel load.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum NormalLoad {
+    /// `P = Q / cos(gamma)`.
+    #[default]
+    Projected,
+    /// `P = Q`.
+    Vertical,
+}
+
+/// Settings of the sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Settings {
+    /// Ellipse method.
+    pub method: Method,
+    /// Contact the ellipses are computed for.
+    pub source: ContactSource,
+    /// Normal-load rule.
+    pub normal_load: NormalLoad,
+}
+
+/// The Hertz result of one wheel at one position.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SideHertz {
+    /// Relative curvature in the rolling direction, 1/mm (NaN without contact).
+    pub a_curvature: f64,
+    /// Relative curvature in the lateral direction, 1/mm (NaN without contact).
+    pub b_curvature: f64,
+    /// Normal load on the reported patch, N (NaN without contact).
+    pub normal_load_n: f64,
+    /// The ellipse, or why there is none (`None`: no contact to compute).
+    pub contact: Option<Contact>,
+    /// `ok`, or why the row is incomplete or approximate.
+    pub status: String,
+}
+
+/// The Hertz results at one position.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Position {
+    /// Lateral shift of the wheelset (mm).
+    pub y_ws: f64,
+    /// Left and right wheels.
+    pub sides: [SideHertz; 2],
+}
+
+/// Computes the ellipses of both wheels over a sweep. `quasi_elastic` must be given when
+/// `settings.source` is [`ContactSource::QuasiElastic`].
+///
+/// # Units
+/// `wheel_load_n` in N, `e_star_mpa` in MPa.
+pub fn sweep(
+    rigid: &RigidSweep,
+    quasi_elastic: Option<&QuasiElasticSweep>,
+    wheel_load_n: f64,
+    e_star_mpa: f64,
+    settings: &Settings,
+) -> Vec<Position> {
+    rigid
+        .positions
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let sides = [0, 1].map(|k| {
+                if p.stop != Stop::Converged {
+                    return missing(format!("rigid search: {}", p.stop.name()));
+                }
+                // (r, gamma, wheel curvature, rail curvature, weight share, patches)
+                let contact = match settings.source {
+                    ContactSource::Rigid => p.contact[k].map(|c| {
+                        (c.r, c.gamma, c.wheel_curvature, c.rail_curvature, 1.0, 1)
+                    }),
+                    ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
+                        let side = &q.positions[i].sides[k];
+                        side.main().map(|m| {
+                            (m.r, m.gamma, m.wheel_curvature, m.rail_curvature, m.weight_share, side.patches.len())
+                        })
+                    }),
+                };
+                let Some((r, gamma, kw, kr, share, patches)) = contact else {
+                    return missing("no contact".into());
+                };
+                let (a, b) = relative_curvatures(
+                    &PrincipalCurvatures {
+                        wheel_rolling: gamma.cos() / r,
+                        wheel_lateral: kw,
+                        rail_rolling: 0.0,
+                        rail_lateral: kr,
+                    },
+                    0.0,
+                );
+                let vertical = wheel_load_n * share;
+                let load = match settings.normal_load {
+                    NormalLoad::Projected => vertical / gamma.cos(),
+                    NormalLoad::Vertical => vertical,
+                };
+                let (contact, mut status) = match ellipse(a, b, load, e_star_mpa, settings.method) {
+                    Ok(c @ Contact::Hertzian(e)) => {
+                        let status = match e.stop {
+                            super::StopReason::Converged => "ok".to_string(),
+                            other => format!("ellipse: {other}"),
+                        };
+                        (Some(c), status)
+                    }
+                    Ok(c @ Contact::NotHertzian(reason)) => (Some(c), reason.to_string()),
+                    Err(e) => (None, format!("error: {e}")),
+                };
+                if patches > 1 {
+                    status.push_str(&format!(
+                        "; {patches} patches, load split by weight (reported patch {:.0} %)",
+                        100.0 * share
+                    ));
+                }
+                SideHertz {
+                    a_curvature: a,
+                    b_curvature: b,
+                    normal_load_n: load,
+                    contact,
+                    status,
+                }
+            });
+            Position { y_ws: p.y_ws, sides }
+        })
+        .collect()
+}
+
+fn missing(status: String) -> SideHertz {
+    SideHertz {
+        a_curvature: f64::NAN,
+        b_curvature: f64::NAN,
+        normal_load_n: f64::NAN,
+        contact: None,
+        status,
+    }
+}
