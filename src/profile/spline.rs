@@ -664,7 +664,13 @@ mod tests {
         let x: Vec<f64> = (0..21).map(|i| i as f64).collect();
         let y: Vec<f64> = x
             .iter()
-            .map(|x| if (*x as usize).is_multiple_of(2) { 1.0 } else { -1.0 })
+            .map(|x| {
+                if (*x as usize).is_multiple_of(2) {
+                    1.0
+                } else {
+                    -1.0
+                }
+            })
             .collect();
         let s = SmoothingSpline::fit(&x, &y, 1e12).unwrap();
         // Least-squares line through alternating +-1 on 0..=20 (11 "+1", 10 "-1").

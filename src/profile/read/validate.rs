@@ -4,10 +4,19 @@
 //! In order:
 //!
 //! 1. at least one point ([`ReadError::NoPoints`]) and at least [`MIN_POINTS`]
-//!    ([`ReadError::TooFewPoints`]);
+//!    ([`ReadError::TooFewPoints`]), all finite after the reader's conversions
+//!    ([`ReadError::NonFinite`]);
 //! 2. orientation: a file listed from the field side towards the flange/gauge side is
 //!    reversed (that is fine, only the order changes);
-//! 3. for measured MiniProf files only, the end faces are dropped (see [`trim_end_faces`]);
+//! 3. for measured MiniProf files only, the end faces are dropped: the flange-back and outer
+//!    faces of a wheel, the side faces below a rail head. They are vertical or undercut, so
+//!    their lateral coordinate jitters or goes back, and no contact happens there. From the
+//!    crest (the highest point: flange tip or rail crown) the run of strictly increasing
+//!    lateral coordinate is followed to each side; where it stops early, the remaining end
+//!    points are dropped if they lie in the shadow of the last kept point (the anchor):
+//!    every one lower than the anchor and sticking out beyond it (away from the crest) by no
+//!    more than [`END_FACE_LATERAL_JITTER_MM`]. Otherwise the step where the run stopped is
+//!    reported (step 4), so a zig-zag at a flange tip names its line;
 //! 4. consecutive points closer than [`DUPLICATE_TOLERANCE_MM`] in both coordinates are a
 //!    [`ReadError::DuplicatePoint`]; any other step that does not increase the lateral
 //!    coordinate is a [`ReadError::NonMonotonic`] naming the line;
@@ -40,7 +49,7 @@ pub const MAX_VERTICAL_EXTENT_MM: f64 = 500.0;
 
 /// Lateral scatter, mm, that MiniProf shows on a vertical face: up to 0.16 mm on the flange
 /// backs of Car7216_0001r.whl and Car7358_0001r.whl. A dropped end-face point may stick out
-/// this much beyond the last kept point (see [`trim_end_faces`]).
+/// this much beyond the last kept point (step 3 of the module docs).
 pub const END_FACE_LATERAL_JITTER_MM: f64 = 0.2;
 
 /// Runs the checks listed in the module docs and returns the points sorted by strictly
