@@ -233,17 +233,20 @@ pub struct HertzAccuracy {
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
     let mut wanted: Vec<Stage> = vec![Stage::Profiles];
     wanted.extend(scene.figures.iter().map(|f| f.stage()));
-    wanted.extend(scene.extra_stages.iter().copied());
     let mut closed = std::collections::BTreeSet::new();
     while let Some(s) = wanted.pop() {
         if closed.insert(s) {
             wanted.extend_from_slice(s.requires());
-            if s == Stage::Hertz && scene.hertz.source == hertz::sweep::ContactSource::QuasiElastic {
+            if s == Stage::Hertz && scene.hertz.source == hertz::sweep::ContactSource::QuasiElastic
+            {
                 wanted.push(Stage::QuasiElastic);
             }
         }
     }
-    Stage::ALL.into_iter().filter(|s| closed.contains(s)).collect()
+    Stage::ALL
+        .into_iter()
+        .filter(|s| closed.contains(s))
+        .collect()
 }
 
 /// Runs the stages `scene`'s outputs need.
@@ -274,14 +277,20 @@ pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
                 results.rigid = Some(r);
             }
             Stage::QuasiElastic => {
-                let rigid = results.rigid.as_ref().expect("rigid runs before quasi-elastic");
+                let rigid = results
+                    .rigid
+                    .as_ref()
+                    .expect("rigid runs before quasi-elastic");
                 let q = record.time(stage, || {
                     quasi_elastic::search(&results.placement, rigid, &scene.quasi_elastic)
                 });
                 results.quasi_elastic = Some(q);
             }
             Stage::EpsilonSensitivity => {
-                let rigid = results.rigid.as_ref().expect("rigid runs before the sensitivity");
+                let rigid = results
+                    .rigid
+                    .as_ref()
+                    .expect("rigid runs before the sensitivity");
                 let e = record.time(stage, || EpsilonSweeps {
                     runs: scene
                         .epsilon_sensitivity_mm
@@ -291,7 +300,10 @@ pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
                                 epsilon_mm: eps,
                                 ..scene.quasi_elastic
                             };
-                            (eps, quasi_elastic::search(&results.placement, rigid, &settings))
+                            (
+                                eps,
+                                quasi_elastic::search(&results.placement, rigid, &settings),
+                            )
                         })
                         .collect(),
                 });
@@ -349,7 +361,8 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     const RAIL_KEYS: [&str; 2] = ["rail.left_profile", "rail.right_profile"];
     let mut pairs = Vec::with_capacity(2);
     for i in 0..2 {
-        let wheel = scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?;
+        let wheel =
+            scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?;
         let rail = scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, RAIL_KEYS[i])?;
         let placement_error = |key: &'static str, e: crate::track::PlacementError| {
             crate::scene::SceneError::Profile {

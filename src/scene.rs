@@ -14,9 +14,13 @@ use std::path::{Path, PathBuf};
 /// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
 pub const MAX_SWEEP_POSITIONS: usize = 100_001;
 
-/// Default smoothing parameter of the spline through a measured profile, mm^3 (see
-/// [`crate::profile::spline`]); 0 interpolates.
-pub const DEFAULT_SMOOTHING_MM3: f64 = 0.0;
+/// Default filter wavelength of the spline through profile points read from files (mm): 0,
+/// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
+/// [`crate::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM`]); exact benchmark files do not.
+pub const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
+
+/// The sensitivity values of eps of the `qe_epsilon` figure (mm).
+pub const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
 
 /// An error in a scene: the file, the key (dotted path) where known, and what was expected.
 #[derive(Debug)]
@@ -106,6 +110,49 @@ pub struct RawScene {
     /// `[outputs]`.
     #[serde(default)]
     pub outputs: RawOutputs,
+    /// `[rigid]`.
+    #[serde(default)]
+    pub rigid: RawRigid,
+    /// `[quasi_elastic]`.
+    #[serde(default)]
+    pub quasi_elastic: RawQuasiElastic,
+    /// `[hertz]`.
+    #[serde(default)]
+    pub hertz: RawHertz,
+}
+
+/// `[rigid]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawRigid {
+    /// "default" or "paper".
+    pub solver: Option<String>,
+}
+
+/// `[quasi_elastic]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawQuasiElastic {
+    /// Regularisation parameter eps (mm).
+    pub epsilon_mm: Option<f64>,
+    /// Values of eps for the sensitivity figure (mm).
+    pub sensitivity_epsilon_mm: Option<Vec<f64>>,
+    /// Cut-off of the weight in units of eps.
+    pub cutoff: Option<f64>,
+    /// Largest quadrature step (mm).
+    pub max_step_mm: Option<f64>,
+}
+
+/// `[hertz]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawHertz {
+    /// "exact" or "paper".
+    pub method: Option<String>,
+    /// "quasi_elastic" or "rigid".
+    pub contact: Option<String>,
+    /// "projected" or "vertical".
+    pub normal_load: Option<String>,
 }
 
 /// `[wheel]`: profile (both sides, or per side) and nominal radius.
@@ -124,8 +171,8 @@ pub struct RawWheel {
     pub left_nominal_radius_mm: Option<f64>,
     /// Overrides `nominal_radius_mm` for the right wheel.
     pub right_nominal_radius_mm: Option<f64>,
-    /// Smoothing parameter for profiles read from files.
-    pub smoothing_mm3: Option<f64>,
+    /// Filter wavelength of the spline through wheel profiles read from files (0: none).
+    pub smoothing_wavelength_mm: Option<f64>,
 }
 
 /// `[rail]`: profile (both sides, or per side) and inclination.
@@ -142,8 +189,8 @@ pub struct RawRail {
     pub inclination: Option<String>,
     /// Inclination already contained in the profile data (default "vertical": upright).
     pub profile_inclination: Option<String>,
-    /// Smoothing parameter for profiles read from files.
-    pub smoothing_mm3: Option<f64>,
+    /// Filter wavelength of the spline through rail profiles read from files (0: none).
+    pub smoothing_wavelength_mm: Option<f64>,
 }
 
 /// `[track]`.
@@ -223,15 +270,6 @@ pub enum ProfileRef {
     File(PathBuf),
 }
 
-/// Elastic constants of one body.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Elastic {
-    /// Young's modulus, MPa (N/mm²).
-    pub young_mpa: f64,
-    /// Poisson's ratio.
-    pub poisson: f64,
-}
-
 /// Image formats a figure can be written in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ImageFormat {
@@ -258,22 +296,30 @@ pub struct Scene {
     pub rail_profiles: [ProfileRef; 2],
     /// Inclination already in the rail profile data.
     pub rail_profile_inclination: Inclination,
-    /// Smoothing of wheel and rail profiles read from files, mm^3.
-    pub smoothing_mm3: [f64; 2],
+    /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
+    pub smoothing_wavelength_mm: [f64; 2],
     /// Track and wheelset dimensions.
     pub layout: TrackLayout,
     /// Vertical load per wheel, N.
     pub wheel_load_n: f64,
     /// Wheel material.
-    pub wheel_material: Elastic,
+    pub wheel_material: crate::hertz::Material,
     /// Rail material.
-    pub rail_material: Elastic,
+    pub rail_material: crate::hertz::Material,
     /// Lateral shifts of the sweep, mm, increasing.
     pub sweep_mm: Vec<f64>,
     /// Figures to render.
     pub figures: Vec<crate::pipeline::Figure>,
     /// Formats to render them in.
     pub formats: Vec<ImageFormat>,
+    /// Rigid solver.
+    pub rigid_solver: crate::rigid::Solver,
+    /// Quasi-elastic settings.
+    pub quasi_elastic: crate::quasi_elastic::Settings,
+    /// Values of eps for the sensitivity figure (mm).
+    pub epsilon_sensitivity_mm: Vec<f64>,
+    /// Hertz settings over the sweep.
+    pub hertz: crate::hertz::sweep::Settings,
 }
 
 impl Scene {
@@ -388,16 +434,22 @@ impl Scene {
         )
         .map_err(|m| invalid("rail.profile_inclination", m))?;
         let smoothing = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
-            let v = v.unwrap_or(DEFAULT_SMOOTHING_MM3);
+            let v = v.unwrap_or(DEFAULT_SMOOTHING_WAVELENGTH_MM);
             if v.is_finite() && v >= 0.0 {
                 Ok(v)
             } else {
                 Err(invalid(key, format!("{v} must be a finite number >= 0")))
             }
         };
-        let smoothing_mm3 = [
-            smoothing("wheel.smoothing_mm3", raw.wheel.smoothing_mm3)?,
-            smoothing("rail.smoothing_mm3", raw.rail.smoothing_mm3)?,
+        let smoothing_wavelength_mm = [
+            smoothing(
+                "wheel.smoothing_wavelength_mm",
+                raw.wheel.smoothing_wavelength_mm,
+            )?,
+            smoothing(
+                "rail.smoothing_wavelength_mm",
+                raw.rail.smoothing_wavelength_mm,
+            )?,
         ];
 
         let gauge_mm = positive("track.gauge_mm", raw.track.gauge_mm, 1435.0)?;
@@ -448,14 +500,28 @@ impl Scene {
                 Err(invalid(key, format!("{nu} must lie in (-1, 0.5)")))
             }
         };
-        let wheel_material = Elastic {
-            young_mpa: young("material.wheel_young_GPa", m.wheel_young_GPa)?,
-            poisson: poisson("material.wheel_poisson", m.wheel_poisson)?,
+        let material = |young_key: &'static str, nu_key: &'static str, e: f64, nu: f64| {
+            crate::hertz::Material::new(e, nu).map_err(|err| {
+                let key = if matches!(err, crate::hertz::HertzError::PoissonOutOfRange { .. }) {
+                    nu_key
+                } else {
+                    young_key
+                };
+                invalid(key, err.to_string())
+            })
         };
-        let rail_material = Elastic {
-            young_mpa: young("material.rail_young_GPa", m.rail_young_GPa)?,
-            poisson: poisson("material.rail_poisson", m.rail_poisson)?,
-        };
+        let wheel_material = material(
+            "material.wheel_young_GPa",
+            "material.wheel_poisson",
+            young("material.wheel_young_GPa", m.wheel_young_GPa)?,
+            poisson("material.wheel_poisson", m.wheel_poisson)?,
+        )?;
+        let rail_material = material(
+            "material.rail_young_GPa",
+            "material.rail_poisson",
+            young("material.rail_young_GPa", m.rail_young_GPa)?,
+            poisson("material.rail_poisson", m.rail_poisson)?,
+        )?;
 
         let sweep_mm = sweep(&raw.sweep).map_err(|(key, message)| invalid(key, message))?;
 
@@ -495,6 +561,92 @@ impl Scene {
                 .collect::<Result<Vec<_>, _>>()?,
         };
 
+        let rigid_solver = match raw.rigid.solver.as_deref() {
+            None => crate::rigid::Solver::Default,
+            Some(name) => crate::rigid::Solver::from_name(name).ok_or_else(|| {
+                invalid(
+                    "rigid.solver",
+                    format!("unknown solver {name:?}; expected \"default\" or \"paper\""),
+                )
+            })?,
+        };
+        let qe = &raw.quasi_elastic;
+        let quasi_elastic = crate::quasi_elastic::Settings {
+            epsilon_mm: positive(
+                "quasi_elastic.epsilon_mm",
+                qe.epsilon_mm,
+                crate::quasi_elastic::DEFAULT_EPSILON_MM,
+            )?,
+            cutoff: positive(
+                "quasi_elastic.cutoff",
+                qe.cutoff,
+                crate::quasi_elastic::DEFAULT_CUTOFF,
+            )?,
+            max_step_mm: positive(
+                "quasi_elastic.max_step_mm",
+                qe.max_step_mm,
+                crate::quasi_elastic::DEFAULT_MAX_STEP_MM,
+            )?,
+        };
+        if quasi_elastic.epsilon_mm > 1.0 {
+            return Err(invalid(
+                "quasi_elastic.epsilon_mm",
+                format!(
+                    "{} mm is far beyond any elastic approach (paper: 0.01 to 0.05 mm); expected at most 1 mm",
+                    quasi_elastic.epsilon_mm
+                ),
+            ));
+        }
+        let epsilon_sensitivity_mm = qe
+            .sensitivity_epsilon_mm
+            .clone()
+            .unwrap_or_else(|| DEFAULT_EPSILON_SENSITIVITY_MM.to_vec());
+        if epsilon_sensitivity_mm.is_empty()
+            || epsilon_sensitivity_mm
+                .iter()
+                .any(|e| !(e.is_finite() && *e > 0.0 && *e <= 1.0))
+        {
+            return Err(invalid(
+                "quasi_elastic.sensitivity_epsilon_mm",
+                "expected a non-empty list of values in (0, 1] mm".into(),
+            ));
+        }
+        let h = &raw.hertz;
+        let hertz = crate::hertz::sweep::Settings {
+            method: match h.method.as_deref() {
+                None | Some("exact") => crate::hertz::Method::Exact,
+                Some("paper") => crate::hertz::Method::Paper,
+                Some(other) => {
+                    return Err(invalid(
+                        "hertz.method",
+                        format!("unknown method {other:?}; expected \"exact\" or \"paper\""),
+                    ));
+                }
+            },
+            source: match h.contact.as_deref() {
+                None | Some("quasi_elastic") => crate::hertz::sweep::ContactSource::QuasiElastic,
+                Some("rigid") => crate::hertz::sweep::ContactSource::Rigid,
+                Some(other) => {
+                    return Err(invalid(
+                        "hertz.contact",
+                        format!(
+                            "unknown contact {other:?}; expected \"quasi_elastic\" or \"rigid\""
+                        ),
+                    ));
+                }
+            },
+            normal_load: match h.normal_load.as_deref() {
+                None | Some("projected") => crate::hertz::sweep::NormalLoad::Projected,
+                Some("vertical") => crate::hertz::sweep::NormalLoad::Vertical,
+                Some(other) => {
+                    return Err(invalid(
+                        "hertz.normal_load",
+                        format!("unknown rule {other:?}; expected \"projected\" or \"vertical\""),
+                    ));
+                }
+            },
+        };
+
         Ok(Scene {
             path: origin.to_string(),
             name,
@@ -503,7 +655,7 @@ impl Scene {
             nominal_radius_mm,
             rail_profiles,
             rail_profile_inclination,
-            smoothing_mm3,
+            smoothing_wavelength_mm,
             layout,
             wheel_load_n,
             wheel_material,
@@ -511,6 +663,10 @@ impl Scene {
             sweep_mm,
             figures,
             formats,
+            rigid_solver,
+            quasi_elastic,
+            epsilon_sensitivity_mm,
+            hertz,
         })
     }
 
@@ -545,10 +701,11 @@ impl Scene {
             ProfileRef::File(path) => {
                 let points = read::read_profile(path, kind).map_err(|e| err(e.to_string()))?;
                 let smoothing = match kind {
-                    ProfileKind::Wheel => self.smoothing_mm3[0],
-                    ProfileKind::Rail => self.smoothing_mm3[1],
+                    ProfileKind::Wheel => self.smoothing_wavelength_mm[0],
+                    ProfileKind::Rail => self.smoothing_wavelength_mm[1],
                 };
-                Profile::from_points(points, smoothing).map_err(|e| err(e.to_string()))
+                Profile::from_points(points, smoothing)
+                    .map_err(|e| err(format!("{}: {e}", path.display())))
             }
         }
     }

@@ -94,13 +94,19 @@ pub fn sweep(
                 }
                 // (r, gamma, wheel curvature, rail curvature, weight share, patches)
                 let contact = match settings.source {
-                    ContactSource::Rigid => p.contact[k].map(|c| {
-                        (c.r, c.gamma, c.wheel_curvature, c.rail_curvature, 1.0, 1)
-                    }),
+                    ContactSource::Rigid => p.contact[k]
+                        .map(|c| (c.r, c.gamma, c.wheel_curvature, c.rail_curvature, 1.0, 1)),
                     ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
                         let side = &q.positions[i].sides[k];
                         side.main().map(|m| {
-                            (m.r, m.gamma, m.wheel_curvature, m.rail_curvature, m.weight_share, side.patches.len())
+                            (
+                                m.r,
+                                m.gamma,
+                                m.wheel_curvature,
+                                m.rail_curvature,
+                                m.weight_share,
+                                side.patches.len(),
+                            )
                         })
                     }),
                 };
@@ -146,7 +152,10 @@ pub fn sweep(
                     status,
                 }
             });
-            Position { y_ws: p.y_ws, sides }
+            Position {
+                y_ws: p.y_ws,
+                sides,
+            }
         })
         .collect()
 }

@@ -116,18 +116,27 @@ impl Profile {
         }
     }
 
-    /// A profile through sampled points, with a cubic smoothing spline of parameter
-    /// `smoothing` (0 interpolates; see [`spline::SmoothingSpline`]).
+    /// A profile through sampled points: a cubic spline that filters out waves shorter than
+    /// about `smoothing_wavelength_mm` (0 interpolates the points; see
+    /// [`spline::lambda_for_wavelength`]).
     ///
     /// # Errors
-    /// [`read::ReadError`] when the spline cannot be fitted to the points.
+    /// [`spline::SplineError`] when the spline cannot be fitted to the points.
     pub fn from_points(
         points: read::PointProfile,
-        smoothing: f64,
-    ) -> Result<Profile, read::ReadError> {
-        let (x, y): (Vec<f64>, Vec<f64>) = points.points.iter().map(|p| (p[0], p[1])).unzip();
-        let spline = SmoothingSpline::fit(&x, &y, smoothing)
-            .map_err(|e| read::ReadError::spline(&points.source.path, e))?;
+        smoothing_wavelength_mm: f64,
+    ) -> Result<Profile, spline::SplineError> {
+        let (x, y) = points.columns();
+        let lambda = match (x.first(), x.last()) {
+            (Some(a), Some(b)) if x.len() > 1 && smoothing_wavelength_mm > 0.0 => {
+                spline::lambda_for_wavelength(
+                    smoothing_wavelength_mm,
+                    (b - a) / (x.len() - 1) as f64,
+                )
+            }
+            _ => 0.0,
+        };
+        let spline = SmoothingSpline::fit(&x, &y, lambda)?;
         let name = std::path::Path::new(&points.source.path)
             .file_name()
             .map_or_else(

@@ -1,0 +1,132 @@
+//! The project's CSV profile format (defined in the [parent module docs](super)).
+
+use super::error::{Field, ReadError};
+use super::fields::{self, RawPoint};
+use crate::profile::ProfileKind;
+
+const EXPECTED: &str = "a number in mm";
+
+/// Parses the CSV text into side-frame points (the file is in the side frame already).
+pub(super) fn parse(
+    text: &str,
+    kind: ProfileKind,
+    origin: &str,
+) -> Result<Vec<RawPoint>, ReadError> {
+    let mut reader = ::csv::ReaderBuilder::new()
+        .has_headers(false)
+        .comment(Some(b'#'))
+        .flexible(true)
+        .trim(::csv::Trim::All)
+        .from_reader(text.as_bytes());
+    let mut header_seen = false;
+    let mut points = Vec::new();
+    for record in reader.records() {
+        let record = record.map_err(|e| ReadError::Malformed {
+            origin: origin.to_owned(),
+            line: e
+                .position()
+                .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX)),
+            problem: format!("CSV syntax error: {e}"),
+        })?;
+        let line = record
+            .position()
+            .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX));
+        if !header_seen {
+            check_header(&record, kind, origin, line)?;
+            header_seen = true;
+            continue;
+        }
+        let value = |column: usize| match record.get(column - 1) {
+            None | Some("") => Err(ReadError::MissingField {
+                origin: origin.to_owned(),
+                line,
+                column,
+            }),
+            Some(t) => fields::number(t, origin, line, Field::Column(column), EXPECTED),
+        };
+        let lat = value(1)?;
+        let vert = value(2)?;
+        points.push(RawPoint { lat, vert, line });
+    }
+    if !header_seen {
+        // Only comments: nothing to read.
+        return Err(ReadError::Empty {
+            origin: origin.to_owned(),
+        });
+    }
+    Ok(points)
+}
+
+fn check_header(
+    record: &::csv::StringRecord,
+    kind: ProfileKind,
+    origin: &str,
+    line: usize,
+) -> Result<(), ReadError> {
+    if record.get(0).is_some_and(fields::is_number) {
+        return Err(ReadError::MissingHeader {
+            origin: origin.to_owned(),
+            line,
+        });
+    }
+    for column in 1..=2 {
+        let name = match record.get(column - 1) {
+            None | Some("") => {
+                return Err(ReadError::MissingField {
+                    origin: origin.to_owned(),
+                    line,
+                    column,
+                });
+            }
+            Some(name) => name,
+        };
+        check_unit(name, origin, line, column)?;
+    }
+    let first = record.get(0).unwrap_or_default().to_ascii_lowercase();
+    let declared = match first.as_str() {
+        "s_mm" => Some(ProfileKind::Wheel),
+        "y_mm" => Some(ProfileKind::Rail),
+        _ => None,
+    };
+    if let Some(found) = declared
+        && found != kind
+    {
+        return Err(ReadError::WrongKind {
+            origin: origin.to_owned(),
+            line: Some(line),
+            expected: kind,
+            found,
+        });
+    }
+    Ok(())
+}
+
+fn check_unit(name: &str, origin: &str, line: usize, column: usize) -> Result<(), ReadError> {
+    let lower = name.to_ascii_lowercase();
+    if lower.ends_with("_mm") {
+        return Ok(());
+    }
+    let other = [
+        ("_um", "micrometres"),
+        ("_cm", "centimetres"),
+        ("_m", "metres"),
+        ("_in", "inches"),
+    ]
+    .into_iter()
+    .find(|(suffix, _)| lower.ends_with(suffix));
+    Err(match other {
+        Some((_, unit)) => ReadError::WrongUnits {
+            origin: origin.to_owned(),
+            line,
+            column,
+            name: name.to_owned(),
+            unit,
+        },
+        None => ReadError::MissingUnits {
+            origin: origin.to_owned(),
+            line,
+            column,
+            name: name.to_owned(),
+        },
+    })
+}
