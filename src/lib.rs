@@ -42,8 +42,10 @@
 //!
 //! The full statement lives in `ARCHITECTURE.md`; every CSV header repeats it.
 
+pub mod app;
 pub mod error;
 pub mod hertz;
+pub mod outputs;
 pub mod pipeline;
 pub mod profile;
 pub mod quasi_elastic;

@@ -226,7 +226,13 @@ pub struct HertzAccuracy {
     pub series: Vec<(f64, f64, f64)>,
     /// `(A/B, relative error of b/a, iterations)` of the paper's fixed-point iteration.
     pub ratio: Vec<(f64, f64, u32)>,
+    /// `(A/B, relative error of b/a)` of the exact method against the mpmath references
+    /// of `tests/data/hertz_reference.csv` (50 digits, `scripts/hertz_reference.py`).
+    pub exact_ratio: Vec<(f64, f64)>,
 }
+
+/// The mpmath references, compiled in so that the accuracy figure needs no files.
+const HERTZ_REFERENCE: &str = include_str!("../tests/data/hertz_reference.csv");
 
 /// The stages `scene`'s outputs need, closed under dependencies, in run order. The
 /// profile stage always runs (placement is validated for every scene).
@@ -349,7 +355,25 @@ fn hertz_accuracy() -> HertzAccuracy {
             (r, err, it)
         })
         .collect();
-    HertzAccuracy { series, ratio }
+    let exact_ratio = HERTZ_REFERENCE
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("A_per_mm"))
+        .filter_map(|l| {
+            let v: Vec<f64> = l.split(',').filter_map(|x| x.trim().parse().ok()).collect();
+            let [a, b, load, e_star, ra, rb, ..] = v[..] else {
+                return None;
+            };
+            let e = hertz::ellipse(a, b, load, e_star, hertz::Method::Exact).ok()?;
+            let e = e.ellipse()?;
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            Some((lo / hi, (e.b_mm / e.a_mm) / (rb / ra) - 1.0))
+        })
+        .collect();
+    HertzAccuracy {
+        series,
+        ratio,
+        exact_ratio,
+    }
 }
 
 /// Loads the scene's four profiles and places them.

@@ -1,0 +1,613 @@
+//! Charts of stage results. Each function takes the stage result it draws (its dependency
+//! is its signature) and returns a [`report::Figure`](crate::report::Figure); rendering to
+//! SVG/PNG bytes happens in [`super`].
+//!
+//! Jumps of a contact point are drawn as gaps (a NaN breaks the line), positions that did
+//! not converge are left out, never joined across.
+
+use crate::pipeline::{EpsilonSweeps, HertzAccuracy};
+use crate::quasi_elastic::QuasiElasticSweep;
+use crate::report::{Chart, Figure, LegendPosition, Series};
+use crate::rigid::{Position, RigidSweep, SideContact, Stop};
+use crate::track::{Placement, Side};
+
+/// Contact angle above which a wheel is in flange contact (rad), for the onset marker.
+pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
+/// Vertical offset of the wheel above the rail in contact maps (mm), so that the lines
+/// linking contact points are visible.
+const MAP_LIFT_MM: f64 = 8.0;
+
+const LEFT: usize = 0;
+const RIGHT: usize = 1;
+const RIGID: usize = 2;
+const QE: usize = 3;
+
+/// A polyline of `(x, y)` points.
+type Line = Vec<(f64, f64)>;
+
+/// Points of the wheel in its resting position on the rail (no shift, no roll) and of the
+/// rail, in the side frame of `side`.
+fn drawn_profiles(
+    placement: &Placement,
+    side: Side,
+    lift: f64,
+) -> (Line, Line) {
+    let pair = placement.side(side);
+    let axle = pair.wheel.nominal_radius_mm() - placement.resting_gap(side) + lift;
+    let wheel = pair
+        .wheel
+        .profile()
+        .sample(0.2)
+        .iter()
+        .map(|r| {
+            let p = pair.wheel.at(r[0]);
+            (p.y, axle + p.z)
+        })
+        .collect();
+    let rail = pair
+        .rail
+        .profile()
+        .sample(0.2)
+        .iter()
+        .map(|r| {
+            let p = pair.rail.point_of(r[0]);
+            (p[0], p[1])
+        })
+        .collect();
+    (wheel, rail)
+}
+
+/// Wheel and rail of the left side in their placed positions (paper Fig. 1, left).
+pub fn profiles(placement: &Placement) -> Figure {
+    let (wheel, rail) = drawn_profiles(placement, Side::Left, 0.0);
+    let g = placement.left.rail.gauge_point();
+    Figure::single(
+        Chart::new(
+            "Wheel and rail profiles, left side, centred wheelset",
+            "lateral position y from the track centre (mm)",
+            "height z (mm)",
+        )
+        .series(
+            Series::line(
+                format!("wheel {}", placement.left.wheel.profile().name()),
+                wheel,
+            )
+            .color(0),
+        )
+        .series(
+            Series::line(
+                format!("rail {}", placement.left.rail.profile().name()),
+                rail,
+            )
+            .color(1),
+        )
+        .series(Series::markers("gauge point", vec![(g[0], g[1])]).color(5))
+        .equal_aspect()
+        .legend(LegendPosition::UpperRight),
+    )
+}
+
+/// tan(gamma) of wheel and rail against the lateral position (paper Fig. 1, right).
+pub fn conicity(placement: &Placement) -> Figure {
+    profile_property(
+        placement,
+        "Conicity: tan(gamma) of wheel and rail, left side",
+        "tan(gamma) (-)",
+        |p, u| p.tan_gamma(u),
+        |r, y| r.at(y).map_or(f64::NAN, |q| q.slope),
+    )
+}
+
+/// Lateral curvature of wheel and rail against the lateral position.
+pub fn curvature(placement: &Placement) -> Figure {
+    profile_property(
+        placement,
+        "Lateral curvature of wheel and rail (convex positive), left side",
+        "curvature (1/mm)",
+        |p, u| p.convex_curvature(u),
+        |r, y| r.at(y).map_or(f64::NAN, |q| q.curvature()),
+    )
+}
+
+fn profile_property(
+    placement: &Placement,
+    title: &str,
+    y_label: &str,
+    wheel_value: impl Fn(&crate::profile::Profile, f64) -> f64,
+    rail_value: impl Fn(&crate::track::PlacedRail, f64) -> f64,
+) -> Figure {
+    let w = &placement.left.wheel;
+    let r = &placement.left.rail;
+    // Section joints break the lines: values jump there.
+    let wheel: Vec<(f64, f64)> = with_breaks(w.profile(), |u| {
+        (w.taping_line_mm() + u, wheel_value(w.profile(), u))
+    });
+    let (lo, hi) = r.y_range();
+    let n = ((hi - lo) / 0.05).ceil() as usize;
+    let rail: Vec<(f64, f64)> = (0..=n)
+        .map(|i| {
+            let y = lo + (hi - lo) * i as f64 / n as f64;
+            (y, rail_value(r, y))
+        })
+        .collect();
+    Figure::single(
+        Chart::new(
+            title,
+            "lateral position y from the track centre (mm)",
+            y_label,
+        )
+        .series(Series::line(format!("wheel {}", w.profile().name()), wheel).color(0))
+        .series(Series::line(format!("rail {}", r.profile().name()), rail).color(1))
+        .x_range(
+            lo.min(w.taping_line_mm() - 70.0),
+            hi.max(w.taping_line_mm() + 60.0),
+        ),
+    )
+}
+
+/// Samples of `f(u)` every 0.05 mm with a NaN point at each section joint.
+fn with_breaks(
+    profile: &crate::profile::Profile,
+    f: impl Fn(f64) -> (f64, f64),
+) -> Vec<(f64, f64)> {
+    let (lo, hi) = profile.domain();
+    let joints = profile.joints();
+    let n = ((hi - lo) / 0.05).ceil() as usize;
+    let mut out = Vec::with_capacity(n + joints.len() + 1);
+    let mut next_joint = 0;
+    for i in 0..=n {
+        let u = lo + (hi - lo) * i as f64 / n as f64;
+        while next_joint < joints.len() && joints[next_joint] < u {
+            let j = joints[next_joint];
+            out.push(f(j - 1e-9));
+            out.push((f64::NAN, f64::NAN));
+            out.push(f(j + 1e-9));
+            next_joint += 1;
+        }
+        out.push(f(u));
+    }
+    out
+}
+
+/// A series of one per-wheel quantity over a rigid sweep, broken at jumps of that wheel's
+/// contact point and at positions that did not converge.
+fn rigid_series(
+    sweep: &RigidSweep,
+    side: Side,
+    f: impl Fn(&Position, &SideContact) -> f64,
+) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(sweep.positions.len());
+    for (i, p) in sweep.positions.iter().enumerate() {
+        match p.side(side) {
+            Some(c) if p.stop == Stop::Converged => out.push((p.y_ws, f(p, c))),
+            _ => out.push((p.y_ws, f64::NAN)),
+        }
+        if let Some(next) = sweep.positions.get(i + 1)
+            && sweep
+                .jumps
+                .iter()
+                .any(|j| j.side == side && j.y_from >= p.y_ws && j.y_to <= next.y_ws)
+        {
+            out.push((f64::NAN, f64::NAN));
+        }
+    }
+    out
+}
+
+/// A wheelset quantity over a rigid sweep, broken where either contact point jumps.
+fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&Position) -> f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(sweep.positions.len());
+    for (i, p) in sweep.positions.iter().enumerate() {
+        out.push((
+            p.y_ws,
+            if p.stop == Stop::Converged {
+                f(p)
+            } else {
+                f64::NAN
+            },
+        ));
+        if let Some(next) = sweep.positions.get(i + 1)
+            && sweep
+                .jumps
+                .iter()
+                .any(|j| j.y_from >= p.y_ws && j.y_to <= next.y_ws)
+        {
+            out.push((f64::NAN, f64::NAN));
+        }
+    }
+    out
+}
+
+/// The shifts where flange contact begins on either side (first position beyond which the
+/// contact angle exceeds [`FLANGE_CONTACT_GAMMA_RAD`]).
+pub fn flange_onsets(sweep: &RigidSweep) -> Vec<(f64, &'static str)> {
+    let mut out = Vec::new();
+    let on_flange = |p: &Position, side: Side| {
+        p.side(side)
+            .is_some_and(|c| c.gamma > FLANGE_CONTACT_GAMMA_RAD)
+    };
+    if let Some(p) = sweep
+        .positions
+        .iter()
+        .find(|p| p.y_ws > 0.0 && on_flange(p, Side::Left))
+    {
+        out.push((p.y_ws, "left flange contact"));
+    }
+    if let Some(p) = sweep
+        .positions
+        .iter()
+        .rev()
+        .find(|p| p.y_ws < 0.0 && on_flange(p, Side::Right))
+    {
+        out.push((p.y_ws, "right flange contact"));
+    }
+    out
+}
+
+fn with_onsets(mut chart: Chart, sweep: &RigidSweep) -> Chart {
+    for (y, label) in flange_onsets(sweep) {
+        chart = chart.vline(y, label);
+    }
+    chart
+}
+
+const SHIFT: &str = "lateral shift of the wheelset y_ws (mm)";
+
+/// Contact positions on wheel and rail against the shift (paper Fig. 2).
+pub fn contact_points(placement: &Placement, sweep: &RigidSweep) -> Figure {
+    let wheel = with_onsets(
+        Chart::new(
+            "On the wheel",
+            SHIFT,
+            "wheel coordinate s (mm, + field side)",
+        )
+        .series(Series::line("left", rigid_series(sweep, Side::Left, |_, c| c.s)).color(LEFT))
+        .series(
+            Series::line("right", rigid_series(sweep, Side::Right, |_, c| c.s))
+                .color(RIGHT)
+                .dashed(),
+        ),
+        sweep,
+    );
+    let top = |side: Side| placement.side(side).rail.top()[0];
+    let rail = with_onsets(
+        Chart::new(
+            "On the rail",
+            SHIFT,
+            "from the top of rail (mm, + field side)",
+        )
+        .series(
+            Series::line(
+                "left",
+                rigid_series(sweep, Side::Left, |_, c| c.y.abs() - top(Side::Left)),
+            )
+            .color(LEFT),
+        )
+        .series(
+            Series::line(
+                "right",
+                rigid_series(sweep, Side::Right, |_, c| c.y.abs() - top(Side::Right)),
+            )
+            .color(RIGHT)
+            .dashed(),
+        ),
+        sweep,
+    );
+    Figure::grid("Rigid contact points", vec![wheel, rail], 2)
+}
+
+/// Rolling radius difference against the shift (paper Fig. 2).
+pub fn rolling_radius(sweep: &RigidSweep) -> Figure {
+    let dr = |p: &Position| match p.contact {
+        [Some(l), Some(r)] => l.r - r.r,
+        _ => f64::NAN,
+    };
+    Figure::single(with_onsets(
+        Chart::new(
+            "Rolling radius difference",
+            SHIFT,
+            "delta r = r_left - r_right (mm)",
+        )
+        .series(Series::line("rigid", rigid_wheelset_series(sweep, dr)).color(RIGID)),
+        sweep,
+    ))
+}
+
+/// Contact angles against the shift (paper Fig. 2).
+pub fn contact_angles(sweep: &RigidSweep) -> Figure {
+    Figure::single(with_onsets(
+        Chart::new(
+            "Contact angles (track frame, roll included)",
+            SHIFT,
+            "gamma (rad)",
+        )
+        .series(Series::line("left", rigid_series(sweep, Side::Left, |_, c| c.gamma)).color(LEFT))
+        .series(
+            Series::line("right", rigid_series(sweep, Side::Right, |_, c| c.gamma))
+                .color(RIGHT)
+                .dashed(),
+        ),
+        sweep,
+    ))
+}
+
+/// Roll angle against the shift (paper Fig. 2).
+pub fn roll(sweep: &RigidSweep) -> Figure {
+    Figure::single(with_onsets(
+        Chart::new(
+            "Wheelset roll angle",
+            SHIFT,
+            "roll (mrad, + lifts the left wheel)",
+        )
+        .series(Series::line("rigid", rigid_wheelset_series(sweep, |p| 1e3 * p.roll)).color(RIGID)),
+        sweep,
+    ))
+}
+
+/// Wickens' contact angle parameter against the shift (paper Fig. 2).
+pub fn contact_angle_parameter(sweep: &RigidSweep) -> Figure {
+    let l0 = sweep.l0_mm();
+    let eps = |p: &Position| match p.contact {
+        [Some(l), Some(r)] if p.y_ws.abs() > 1e-12 => {
+            l0 * (l.gamma.tan() - r.gamma.tan()) / (2.0 * p.y_ws)
+        }
+        _ => f64::NAN,
+    };
+    Figure::single(with_onsets(
+        Chart::new(
+            "Contact angle parameter epsilon = l0 (tan gamma_l - tan gamma_r) / (2 y_ws)",
+            SHIFT,
+            "epsilon (-)",
+        )
+        .series(Series::line("rigid", rigid_wheelset_series(sweep, eps)).color(RIGID)),
+        sweep,
+    ))
+}
+
+/// Links between wheel and rail contact points of one side, with the wheel drawn lifted.
+fn contact_links(
+    placement: &Placement,
+    side: Side,
+    points: &[(f64, f64, f64)],
+) -> Vec<[(f64, f64); 2]> {
+    let pair = placement.side(side);
+    let axle = pair.wheel.nominal_radius_mm() - placement.resting_gap(side) + MAP_LIFT_MM;
+    points
+        .iter()
+        .filter(|(s, y, z)| s.is_finite() && y.is_finite() && z.is_finite())
+        .map(|&(s, y, z)| {
+            let w = pair.wheel.at(s);
+            [(w.y, axle + w.z), (y.abs(), z)]
+        })
+        .collect()
+}
+
+fn map_chart(placement: &Placement, title: &str) -> Chart {
+    let (wheel, rail) = drawn_profiles(placement, Side::Left, MAP_LIFT_MM);
+    Chart::new(
+        title,
+        "lateral position |y| from the track centre (mm)",
+        "height z (mm; wheel drawn 8 mm high)",
+    )
+    .series(Series::line("wheel (left, centred)", wheel).color(0))
+    .series(Series::line("rail (left)", rail).color(1))
+    .equal_aspect()
+    .x_range(690.0, 800.0)
+}
+
+/// Profiles with the rigid contact points of the sweep linked wheel to rail (left wheel;
+/// by symmetry the right wheel at -y_ws is the same).
+pub fn contact_map(placement: &Placement, sweep: &RigidSweep) -> Figure {
+    let pts: Vec<(f64, f64, f64)> = sweep
+        .positions
+        .iter()
+        .filter(|p| p.stop == Stop::Converged)
+        .filter_map(|p| p.side(Side::Left).map(|c| (c.s, c.y, c.z)))
+        .collect();
+    Figure::single(
+        map_chart(
+            placement,
+            "Contact map: rigid contact points of the sweep, left wheel",
+        )
+        .series(
+            Series::segments(
+                "rigid contact (wheel - rail)",
+                &contact_links(placement, Side::Left, &pts),
+            )
+            .color(RIGID),
+        ),
+    )
+}
+
+/// Rigid against quasi-elastic contact points (paper Fig. 4).
+pub fn quasi_elastic_points(sweep: &RigidSweep, q: &QuasiElasticSweep) -> Figure {
+    let panel = |side: Side, k: usize| {
+        let main: Vec<(f64, f64)> = q
+            .positions
+            .iter()
+            .map(|p| (p.y_ws, p.sides[k].main().map_or(f64::NAN, |c| c.s)))
+            .collect();
+        let second: Vec<(f64, f64)> = q
+            .positions
+            .iter()
+            .filter_map(|p| p.sides[k].second().map(|c| (p.y_ws, c.s)))
+            .collect();
+        with_onsets(
+            Chart::new(
+                format!("{} wheel", side.name()),
+                SHIFT,
+                "wheel coordinate s (mm)",
+            )
+            .series(Series::line("rigid", rigid_series(sweep, side, |_, c| c.s)).color(RIGID))
+            .series(Series::line("quasi-elastic, heaviest patch", main).color(QE))
+            .series(Series::markers("quasi-elastic, second patch", second).color(5)),
+            sweep,
+        )
+    };
+    Figure::grid(
+        format!(
+            "Rigid and quasi-elastic contact points (eps = {} mm)",
+            q.settings.epsilon_mm
+        ),
+        vec![panel(Side::Left, 0), panel(Side::Right, 1)],
+        2,
+    )
+}
+
+/// Contact map with rigid and quasi-elastic points (paper Fig. 5).
+pub fn quasi_elastic_map(
+    placement: &Placement,
+    sweep: &RigidSweep,
+    q: &QuasiElasticSweep,
+) -> Figure {
+    let rigid: Vec<(f64, f64, f64)> = sweep
+        .positions
+        .iter()
+        .filter(|p| p.stop == Stop::Converged)
+        .filter_map(|p| p.side(Side::Left).map(|c| (c.s, c.y, c.z)))
+        .collect();
+    let qe: Vec<(f64, f64, f64)> = q
+        .positions
+        .iter()
+        .filter_map(|p| p.sides[0].main().map(|c| (c.s, c.y, c.z)))
+        .collect();
+    Figure::single(
+        map_chart(
+            placement,
+            &format!(
+                "Contact map: rigid and quasi-elastic (eps = {} mm), left wheel",
+                q.settings.epsilon_mm
+            ),
+        )
+        .series(
+            Series::segments("rigid", &contact_links(placement, Side::Left, &rigid)).color(RIGID),
+        )
+        .series(
+            Series::segments("quasi-elastic", &contact_links(placement, Side::Left, &qe))
+                .color(QE)
+                .dashed(),
+        ),
+    )
+}
+
+/// Quasi-elastic contact position for several eps, rigid for reference.
+pub fn epsilon_sensitivity(sweep: &RigidSweep, e: &EpsilonSweeps) -> Figure {
+    let mut chart = Chart::new(
+        "Sensitivity to eps: left wheel contact position",
+        SHIFT,
+        "wheel coordinate s (mm)",
+    )
+    .series(Series::line("rigid", rigid_series(sweep, Side::Left, |_, c| c.s)).color(RIGID));
+    for (i, (eps, q)) in e.runs.iter().enumerate() {
+        let pts = q
+            .positions
+            .iter()
+            .map(|p| (p.y_ws, p.sides[0].main().map_or(f64::NAN, |c| c.s)))
+            .collect();
+        chart = chart
+            .series(Series::line(format!("eps = {eps} mm"), pts).color([0, 1, 3, 4, 5, 6][i % 6]));
+    }
+    Figure::single(with_onsets(chart, sweep))
+}
+
+/// Semi-axes of the contact ellipses (paper Fig. 6).
+pub fn semi_axes(h: &[crate::hertz::sweep::Position]) -> Figure {
+    let get = |k: usize, f: fn(&crate::hertz::Ellipse) -> f64| -> Vec<(f64, f64)> {
+        h.iter()
+            .map(|p| {
+                (
+                    p.y_ws,
+                    p.sides[k]
+                        .contact
+                        .as_ref()
+                        .and_then(|c| c.ellipse())
+                        .map_or(f64::NAN, f),
+                )
+            })
+            .collect()
+    };
+    Figure::single(
+        Chart::new("Semi-axes of the contact ellipses", SHIFT, "semi-axis (mm)")
+            .series(Series::line("left a (rolling)", get(0, |e| e.a_mm)).color(LEFT))
+            .series(
+                Series::line("left b (lateral)", get(0, |e| e.b_mm))
+                    .color(LEFT)
+                    .dashed(),
+            )
+            .series(Series::line("right a (rolling)", get(1, |e| e.a_mm)).color(RIGHT))
+            .series(
+                Series::line("right b (lateral)", get(1, |e| e.b_mm))
+                    .color(RIGHT)
+                    .dashed(),
+            ),
+    )
+}
+
+/// Maximum contact pressure.
+pub fn pressure(h: &[crate::hertz::sweep::Position]) -> Figure {
+    let get = |k: usize| -> Vec<(f64, f64)> {
+        h.iter()
+            .map(|p| {
+                (
+                    p.y_ws,
+                    p.sides[k]
+                        .contact
+                        .as_ref()
+                        .and_then(|c| c.ellipse())
+                        .map_or(f64::NAN, |e| e.p0_mpa),
+                )
+            })
+            .collect()
+    };
+    Figure::single(
+        Chart::new("Maximum contact pressure", SHIFT, "p0 (MPa)")
+            .series(Series::line("left", get(0)).color(LEFT))
+            .series(Series::line("right", get(1)).color(RIGHT).dashed()),
+    )
+}
+
+/// Accuracy of the paper's Hertz numerics, log scale.
+pub fn hertz_accuracy(a: &HertzAccuracy) -> Figure {
+    let floor = |v: f64| v.abs().max(1e-17);
+    let series = Chart::new(
+        "Paper's series for K and E",
+        "eccentricity e",
+        "|relative error|",
+    )
+    .series(
+        Series::line(
+            "K, paper series",
+            a.series.iter().map(|r| (r.0, floor(r.1))).collect(),
+        )
+        .color(LEFT),
+    )
+    .series(
+        Series::line(
+            "E, paper series",
+            a.series.iter().map(|r| (r.0, floor(r.2))).collect(),
+        )
+        .color(RIGHT)
+        .dashed(),
+    )
+    .y_log();
+    let ratio = Chart::new(
+        "Paper's iteration for b/a",
+        "curvature ratio A/B",
+        "|relative error of b/a|",
+    )
+    .series(Series::line("paper", a.ratio.iter().map(|r| (r.0, floor(r.1))).collect()).color(LEFT))
+    .series(
+        Series::markers(
+            "exact, against mpmath (errors below 1e-17 drawn at 1e-17)",
+            a.exact_ratio.iter().map(|r| (r.0, floor(r.1))).collect(),
+        )
+        .color(QE),
+    )
+    .x_log()
+    .y_log();
+    Figure::grid(
+        "Accuracy of the paper's Hertz numerics against the exact method",
+        vec![series, ratio],
+        2,
+    )
+}

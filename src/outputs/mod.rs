@@ -1,0 +1,418 @@
+//! The outputs of a scene: its tables (CSV), figures (SVG, PNG) and the `index.html` report,
+//! as bytes. Nothing here touches the file system; [`crate::app`] writes the files.
+//!
+//! To add a figure: a variant in [`crate::pipeline::Figure`] (name, stage), a function in
+//! [`figures`] taking that stage's result, a caption in [`caption`], an arm in [`figure`].
+
+pub mod figures;
+pub mod tables;
+
+use crate::Error;
+use crate::pipeline::{Figure, Results};
+use crate::report::{self, FigureEntry, ReportPage, Table, TableEntry};
+use crate::scene::{ImageFormat, Scene};
+use crate::track::Side;
+use sha2::{Digest, Sha256};
+
+/// One output file: its name in the output folder and its bytes.
+#[derive(Debug, Clone)]
+pub struct OutputFile {
+    /// File name (no folders).
+    pub name: String,
+    /// Contents.
+    pub bytes: Vec<u8>,
+}
+
+/// A table with its file name and a one-line description.
+#[derive(Debug, Clone)]
+pub struct NamedTable {
+    /// File name, e.g. `rigid.csv`.
+    pub file: String,
+    /// What it holds.
+    pub description: String,
+    /// The table.
+    pub table: Table,
+}
+
+/// How numbers are written in every CSV: 10 significant digits, enough for 1e-7 mm on a
+/// track-frame position and stable in golden diffs.
+pub const CSV_FORMAT: report::NumberFormat = report::NumberFormat::Significant(10);
+
+fn table_error(e: report::TableError) -> Error {
+    Error::Other(format!("internal error building a table: {e}"))
+}
+
+/// The tables of every stage that ran.
+///
+/// # Errors
+/// Only internal inconsistencies (a bug), as [`Error::Other`].
+pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error> {
+    let mut out = Vec::new();
+    let mut push = |file: &str, description: &str, table: Table| {
+        out.push(NamedTable {
+            file: file.to_string(),
+            description: description.to_string(),
+            table,
+        });
+    };
+    let p = &results.placement;
+    push(
+        "wheel_profile.csv",
+        "left wheel profile: height, slope, curvature",
+        tables::wheel_profile(&p.left.wheel).map_err(table_error)?,
+    );
+    if scene.wheel_profiles[0] != scene.wheel_profiles[1] {
+        push(
+            "right_wheel_profile.csv",
+            "right wheel profile",
+            tables::wheel_profile(&p.right.wheel).map_err(table_error)?,
+        );
+    }
+    push(
+        "rail_profile.csv",
+        "left rail as placed: height, slope, curvature",
+        tables::rail_profile(&p.left.rail, Side::Left).map_err(table_error)?,
+    );
+    if scene.rail_profiles[0] != scene.rail_profiles[1] {
+        push(
+            "right_rail_profile.csv",
+            "right rail as placed",
+            tables::rail_profile(&p.right.rail, Side::Right).map_err(table_error)?,
+        );
+    }
+    if let Some(r) = &results.rigid {
+        push(
+            "rigid.csv",
+            "rigid contact over the sweep",
+            tables::rigid(r).map_err(table_error)?,
+        );
+        push(
+            "rigid_jumps.csv",
+            "intervals where a rigid contact point jumps",
+            tables::rigid_jumps(r).map_err(table_error)?,
+        );
+    }
+    if let Some(q) = &results.quasi_elastic {
+        push(
+            "quasi_elastic.csv",
+            "quasi-elastic contact over the sweep",
+            tables::quasi_elastic(q).map_err(table_error)?,
+        );
+    }
+    if let (Some(r), Some(e)) = (&results.rigid, &results.epsilon) {
+        push(
+            "qe_epsilon.csv",
+            "quasi-elastic contact location for several eps",
+            tables::epsilon_sensitivity(r, e).map_err(table_error)?,
+        );
+    }
+    if let Some(h) = &results.hertz {
+        push(
+            "hertz.csv",
+            "Hertz contact ellipses over the sweep",
+            tables::hertz(h, &scene.hertz).map_err(table_error)?,
+        );
+    }
+    if let Some(a) = &results.hertz_accuracy {
+        let (series, ratio) = tables::hertz_accuracy(a).map_err(table_error)?;
+        push(
+            "hertz_accuracy_series.csv",
+            "error of the paper's K and E series",
+            series,
+        );
+        push(
+            "hertz_accuracy_ratio.csv",
+            "error of the paper's b/a iteration",
+            ratio,
+        );
+    }
+    Ok(out)
+}
+
+/// The chart of `fig`, from the stage result it draws (which the run computed).
+///
+/// # Errors
+/// [`Error::Other`] if the stage result is missing (the pipeline was run for another scene).
+pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
+    let missing = || {
+        Error::Other(format!(
+            "figure {} needs stage {} which did not run",
+            fig.name(),
+            fig.stage().name()
+        ))
+    };
+    let p = &results.placement;
+    let rigid = || results.rigid.as_ref().ok_or_else(missing);
+    Ok(match fig {
+        Figure::Profiles => figures::profiles(p),
+        Figure::Conicity => figures::conicity(p),
+        Figure::Curvature => figures::curvature(p),
+        Figure::ContactPoints => figures::contact_points(p, rigid()?),
+        Figure::RollingRadius => figures::rolling_radius(rigid()?),
+        Figure::ContactAngles => figures::contact_angles(rigid()?),
+        Figure::Roll => figures::roll(rigid()?),
+        Figure::ContactAngleParameter => figures::contact_angle_parameter(rigid()?),
+        Figure::ContactMap => figures::contact_map(p, rigid()?),
+        Figure::QuasiElasticPoints => figures::quasi_elastic_points(
+            rigid()?,
+            results.quasi_elastic.as_ref().ok_or_else(missing)?,
+        ),
+        Figure::QuasiElasticMap => figures::quasi_elastic_map(
+            p,
+            rigid()?,
+            results.quasi_elastic.as_ref().ok_or_else(missing)?,
+        ),
+        Figure::EpsilonSensitivity => {
+            figures::epsilon_sensitivity(rigid()?, results.epsilon.as_ref().ok_or_else(missing)?)
+        }
+        Figure::SemiAxes => figures::semi_axes(results.hertz.as_ref().ok_or_else(missing)?),
+        Figure::Pressure => figures::pressure(results.hertz.as_ref().ok_or_else(missing)?),
+        Figure::HertzAccuracy => {
+            figures::hertz_accuracy(results.hertz_accuracy.as_ref().ok_or_else(missing)?)
+        }
+    })
+}
+
+/// The caption of a figure in the report.
+pub fn caption(fig: Figure, scene: &Scene) -> String {
+    match fig {
+        Figure::Profiles => "Paper Fig. 1: wheel and rail of the left side in their placed positions (centred wheelset resting on the rail, no roll), track frame.".into(),
+        Figure::Conicity => "Paper Fig. 1: tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position; the wheel is broken at its section joints.".into(),
+        Figure::Curvature => "Lateral curvature of the profiles, convex positive. The S1002 curvature jumps at every section joint, as its definition does.".into(),
+        Figure::ContactPoints => "Paper Fig. 2: rigid contact points on the wheel (profile coordinate) and on the rail (from the top of rail) against the lateral shift. Jumps of a contact point are gaps, not lines.".into(),
+        Figure::RollingRadius => "Paper Fig. 2: rolling radius difference r_left - r_right of the rigid contact.".into(),
+        Figure::ContactAngles => "Paper Fig. 2: contact angles of the rigid contact in the track frame, roll included, mirrored per side.".into(),
+        Figure::Roll => "Paper Fig. 2: roll angle of the wheelset solved with the contact (paper Eqs. 2-5).".into(),
+        Figure::ContactAngleParameter => "Paper Fig. 2: Wickens' contact angle parameter; undefined at y_ws = 0.".into(),
+        Figure::ContactMap => "Contact map: each rigid contact point of the sweep on the wheel (drawn 8 mm above its resting place) linked to its point on the rail; where contact lives and where it jumps.".into(),
+        Figure::QuasiElasticPoints => format!("Paper Fig. 4: rigid and quasi-elastic contact points (eps = {} mm); the quasi-elastic heaviest patch as a line, a second patch as markers.", scene.quasi_elastic.epsilon_mm),
+        Figure::QuasiElasticMap => "Paper Fig. 5: contact map with rigid and quasi-elastic contact points.".into(),
+        Figure::EpsilonSensitivity => "Sensitivity of the quasi-elastic contact location to the regularisation parameter eps; as eps decreases it tends to the rigid solution.".into(),
+        Figure::SemiAxes => format!(
+            "Paper Fig. 6: semi-axes of the Hertz contact ellipses ({} method, {:?} contact, normal load {:?}, vertical wheel load {} kN).",
+            scene.hertz.method, scene.hertz.source, scene.hertz.normal_load, scene.wheel_load_n / 1000.0
+        ),
+        Figure::Pressure => "Maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
+        Figure::HertzAccuracy => "Accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
+    }
+}
+
+/// Every output file of a scene: tables, figures in the scene's formats, and `index.html`.
+///
+/// # Errors
+/// [`Error::Other`] when a figure cannot be rendered.
+pub fn render(scene: &Scene, results: &Results) -> Result<Vec<OutputFile>, Error> {
+    let tables = tables(scene, results)?;
+    let mut files: Vec<OutputFile> = tables
+        .iter()
+        .map(|t| OutputFile {
+            name: t.file.clone(),
+            bytes: t.table.to_csv_with(CSV_FORMAT).into_bytes(),
+        })
+        .collect();
+    let mut entries = Vec::new();
+    for &fig in &scene.figures {
+        let chart = figure(fig, results)?;
+        let mut entry = FigureEntry {
+            name: fig.name().to_string(),
+            caption: caption(fig, scene),
+            svg: String::new(),
+            png: String::new(),
+        };
+        for format in &scene.formats {
+            let (name, bytes) = match format {
+                ImageFormat::Svg => (
+                    format!("{}.svg", fig.name()),
+                    report::render_svg(&chart)
+                        .map_err(|e| Error::Other(format!("figure {}: {e}", fig.name())))?
+                        .into_bytes(),
+                ),
+                ImageFormat::Png => (
+                    format!("{}.png", fig.name()),
+                    report::render_png(&chart)
+                        .map_err(|e| Error::Other(format!("figure {}: {e}", fig.name())))?,
+                ),
+            };
+            match format {
+                ImageFormat::Svg => entry.svg = name.clone(),
+                ImageFormat::Png => entry.png = name.clone(),
+            }
+            files.push(OutputFile { name, bytes });
+        }
+        entries.push(entry);
+    }
+    let page = report_page(scene, results, &tables, entries);
+    files.push(OutputFile {
+        name: "index.html".into(),
+        bytes: report::render_html(&page).into_bytes(),
+    });
+    Ok(files)
+}
+
+fn sha256_hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+fn report_page(
+    scene: &Scene,
+    results: &Results,
+    tables: &[NamedTable],
+    figures: Vec<FigureEntry>,
+) -> ReportPage {
+    let mut summary = vec![format!(
+        "Stages run: {}.",
+        results
+            .record
+            .stages
+            .iter()
+            .map(|(s, t)| format!("{} ({:.1} ms)", s.name(), 1e3 * t))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )];
+    let mut notes = Vec::new();
+    if let Some(r) = &results.rigid {
+        let bad: Vec<String> = r
+            .positions
+            .iter()
+            .filter(|p| p.stop != crate::rigid::Stop::Converged)
+            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.name()))
+            .collect();
+        if bad.is_empty() {
+            summary.push(format!(
+                "Rigid search ({} solver): all {} positions converged; {} contact-point jumps.",
+                r.solver.name(),
+                r.positions.len(),
+                r.jumps.len()
+            ));
+        } else {
+            notes.push(format!(
+                "Rigid positions not converged (left out of the figures): {}.",
+                bad.join(", ")
+            ));
+        }
+        for (y, label) in figures::flange_onsets(r) {
+            summary.push(format!("{label} from y_ws = {y} mm."));
+        }
+    }
+    if let Some(h) = &results.hertz {
+        let flagged = h
+            .iter()
+            .flat_map(|p| p.sides.iter())
+            .filter(|s| s.status != "ok")
+            .count();
+        if flagged > 0 {
+            notes.push(format!("{flagged} wheel contacts carry a Hertz status other than ok (see the status columns of hertz.csv)."));
+        }
+        summary.push(format!(
+            "Hertz: {} method, {:?} contact, normal load {:?}.",
+            scene.hertz.method, scene.hertz.source, scene.hertz.normal_load
+        ));
+    }
+    let l = &scene.layout;
+    let parameters = vec![
+        ("scene".into(), scene.path.clone()),
+        ("gauge_mm".into(), l.gauge_mm.to_string()),
+        (
+            "gauge_point_depth_mm".into(),
+            l.gauge_point_depth_mm.to_string(),
+        ),
+        (
+            "rail inclination (rad)".into(),
+            format!("{:.7}", l.inclination.0),
+        ),
+        ("flange_back_mm".into(), l.flange_back_mm.to_string()),
+        (
+            "nominal_radius_mm (left, right)".into(),
+            format!(
+                "{}, {}",
+                scene.nominal_radius_mm[0], scene.nominal_radius_mm[1]
+            ),
+        ),
+        (
+            "wheel_load_kN".into(),
+            (scene.wheel_load_n / 1000.0).to_string(),
+        ),
+        (
+            "E (GPa) and nu, wheel".into(),
+            format!(
+                "{}, {}",
+                scene.wheel_material.young_mpa / 1000.0,
+                scene.wheel_material.poisson
+            ),
+        ),
+        (
+            "E (GPa) and nu, rail".into(),
+            format!(
+                "{}, {}",
+                scene.rail_material.young_mpa / 1000.0,
+                scene.rail_material.poisson
+            ),
+        ),
+        (
+            "sweep (mm)".into(),
+            format!(
+                "{} to {}, {} positions",
+                scene.sweep_mm.first().copied().unwrap_or(f64::NAN),
+                scene.sweep_mm.last().copied().unwrap_or(f64::NAN),
+                scene.sweep_mm.len()
+            ),
+        ),
+        ("rigid solver".into(), scene.rigid_solver.name().into()),
+        (
+            "quasi-elastic eps (mm)".into(),
+            scene.quasi_elastic.epsilon_mm.to_string(),
+        ),
+    ];
+    let p = &results.placement;
+    let profile_row = |label: &str, profile: &crate::profile::Profile| -> (String, String) {
+        let hash = match profile.source() {
+            crate::profile::Source::File { sha256, .. } => sha256.clone(),
+            crate::profile::Source::Definition(_) => {
+                // Built-in: the hash of its sampled table, which changes with the definition.
+                let rows = profile.sample(tables::PROFILE_TABLE_STEP_MM);
+                let text: String = rows
+                    .iter()
+                    .map(|r| format!("{:.12e},{:.12e}\n", r[0], r[1]))
+                    .collect();
+                format!("{} (of the sampled profile)", sha256_hex(text.as_bytes()))
+            }
+        };
+        (
+            label.to_string(),
+            format!("{} — sha256 {hash}", profile.source()),
+        )
+    };
+    let provenance = vec![
+        (
+            "wheelrail".into(),
+            format!("version {}", env!("CARGO_PKG_VERSION")),
+        ),
+        profile_row("left wheel", p.left.wheel.profile()),
+        profile_row("right wheel", p.right.wheel.profile()),
+        profile_row("left rail", p.left.rail.profile()),
+        profile_row("right rail", p.right.rail.profile()),
+        (
+            "conventions".into(),
+            "mm, N, MPa, rad; track frame y left, z up; see every CSV header".into(),
+        ),
+    ];
+    ReportPage {
+        title: scene.title.clone(),
+        summary,
+        parameters,
+        provenance,
+        figures,
+        tables: tables
+            .iter()
+            .map(|t| TableEntry {
+                name: t.file.trim_end_matches(".csv").to_string(),
+                file: t.file.clone(),
+                description: t.description.clone(),
+            })
+            .collect(),
+        notes,
+    }
+}

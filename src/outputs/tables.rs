@@ -1,0 +1,428 @@
+//! Stage results as CSV tables. Every table states its frame, signs and units in `#`
+//! comment lines above the header, and every column name carries its unit.
+
+use crate::pipeline::{EpsilonSweeps, HertzAccuracy};
+use crate::quasi_elastic::QuasiElasticSweep;
+use crate::report::{Table, TableError};
+use crate::rigid::{RigidSweep, Stop};
+use crate::track::{PlacedRail, PlacedWheel, Side};
+
+/// Sampling step of the profile tables (mm).
+pub const PROFILE_TABLE_STEP_MM: f64 = 0.1;
+
+const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
+const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
+
+/// The wheel profile: `s_mm, F_mm, tan_gamma, curvature_per_mm`.
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn wheel_profile(wheel: &PlacedWheel) -> Result<Table, TableError> {
+    let rows = wheel.profile().sample(PROFILE_TABLE_STEP_MM);
+    Table::builder()
+        .comment(format!("wheel profile {} ({})", wheel.profile().name(), wheel.profile().source()))
+        .comment("frame: wheel side frame; s_mm from the taping line, positive towards the field side (flange at s < 0); F_mm radius increase over the nominal radius, positive towards the flange tip")
+        .comment("tan_gamma = -dF/ds (positive on the coned tread); curvature_per_mm convex positive; section joints included as extra rows")
+        .numeric("s_mm", col(&rows, 0))
+        .numeric("F_mm", col(&rows, 1))
+        .numeric("tan_gamma", col(&rows, 2))
+        .numeric("curvature_per_mm", col(&rows, 3))
+        .build()
+}
+
+/// The placed rail in its side frame: `u_mm, y_mm, z_mm, tan_gamma, curvature_per_mm`.
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> {
+    let rows = rail.profile().sample(PROFILE_TABLE_STEP_MM);
+    let mut y = Vec::with_capacity(rows.len());
+    let mut z = Vec::with_capacity(rows.len());
+    let mut slope = Vec::with_capacity(rows.len());
+    let mut curvature = Vec::with_capacity(rows.len());
+    for r in &rows {
+        let p = rail.point_of(r[0]);
+        y.push(p[0]);
+        z.push(p[1]);
+        match rail.at(p[0]) {
+            Some(q) if (q.u - r[0]).abs() < 1e-6 => {
+                slope.push(q.slope);
+                curvature.push(q.curvature());
+            }
+            _ => {
+                slope.push(f64::NAN);
+                curvature.push(f64::NAN);
+            }
+        }
+    }
+    Table::builder()
+        .comment(format!("rail profile {} ({}), {} rail as placed", rail.profile().name(), rail.profile().source(), side.name()))
+        .comment("frame: rail side frame = track frame mirrored per side; y_mm = |y| from the track centre (positive towards the field side), z_mm up from the top of rail; u_mm the profile's own lateral coordinate")
+        .comment("tan_gamma = dz/dy in the side frame (inclination included); curvature_per_mm convex positive; NaN where the surface is steeper than the running surface (flank)")
+        .numeric("u_mm", col(&rows, 0))
+        .numeric("y_mm", y)
+        .numeric("z_mm", z)
+        .numeric("tan_gamma", slope)
+        .numeric("curvature_per_mm", curvature)
+        .build()
+}
+
+fn col(rows: &[[f64; 4]], k: usize) -> Vec<f64> {
+    rows.iter().map(|r| r[k]).collect()
+}
+
+/// Rigid contact over the sweep (`rigid.csv`).
+///
+/// Wickens' parameters (Fundamentals of Rail Vehicle Dynamics, 2003), with `l0` half the
+/// lateral distance between the contact points of the centred wheelset: equivalent
+/// conicity `lambda = delta_r / (2 y_ws)`, contact angle parameter
+/// `epsilon = l0 (tan gamma_l - tan gamma_r) / (2 y_ws)`, roll angle parameter
+/// `sigma = l0 roll / y_ws`; undefined (NaN) at `y_ws = 0`.
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
+    let n = sweep.positions.len();
+    let l0 = sweep.l0_mm();
+    let mut t = Table::builder()
+        .comment(format!("rigid contact, solver {}", sweep.solver.name()))
+        .comment(TRACK_FRAME)
+        .comment(PER_WHEEL)
+        .comment("z_ws_mm relative to the centred wheelset; r_mm rolling radius; second_s_mm a second contact point within 0.01 mm of touching (NaN if none); jump_after 1 where the contact point jumps before the next position (see rigid_jumps.csv)")
+        .comment(format!("Wickens: lambda = delta_r/(2 y_ws), epsilon = l0 (tan gamma_l - tan gamma_r)/(2 y_ws), sigma = l0 roll/y_ws, l0 = {l0:.6} mm; NaN at y_ws = 0"))
+        .numeric("y_ws_mm", sweep.positions.iter().map(|p| p.y_ws).collect::<Vec<_>>())
+        .numeric("roll_rad", converged(sweep, |p| p.roll))
+        .numeric("z_ws_mm", converged(sweep, |p| sweep.z_ws(p)));
+    for side in [Side::Left, Side::Right] {
+        let name = side.name();
+        let get = |f: &dyn Fn(&crate::rigid::SideContact) -> f64| -> Vec<f64> {
+            sweep
+                .positions
+                .iter()
+                .map(|p| match p.side(side) {
+                    Some(c) if p.stop == Stop::Converged => f(c),
+                    _ => f64::NAN,
+                })
+                .collect()
+        };
+        t = t
+            .numeric(format!("{name}_s_mm"), get(&|c| c.s))
+            .numeric(format!("{name}_y_mm"), get(&|c| c.y))
+            .numeric(format!("{name}_z_mm"), get(&|c| c.z))
+            .numeric(format!("{name}_r_mm"), get(&|c| c.r))
+            .numeric(format!("{name}_gamma_rad"), get(&|c| c.gamma))
+            .numeric(format!("{name}_rail_tan_gamma"), get(&|c| c.rail_tan_gamma))
+            .numeric(
+                format!("{name}_wheel_curvature_per_mm"),
+                get(&|c| c.wheel_curvature),
+            )
+            .numeric(
+                format!("{name}_rail_curvature_per_mm"),
+                get(&|c| c.rail_curvature),
+            )
+            .numeric(
+                format!("{name}_second_s_mm"),
+                get(&|c| c.second.map_or(f64::NAN, |s| s.0)),
+            )
+            .numeric(
+                format!("{name}_jump_after"),
+                (0..n)
+                    .map(|i| {
+                        let y0 = sweep.positions[i].y_ws;
+                        let y1 = sweep.positions.get(i + 1).map_or(f64::INFINITY, |p| p.y_ws);
+                        let jumps = sweep
+                            .jumps
+                            .iter()
+                            .any(|j| j.side == side && j.y_from >= y0 && j.y_to <= y1);
+                        if jumps { 1.0 } else { 0.0 }
+                    })
+                    .collect::<Vec<_>>(),
+            );
+    }
+    let r = |p: &crate::rigid::Position, k: usize| p.contact[k].map_or(f64::NAN, |c| c.r);
+    let tan =
+        |p: &crate::rigid::Position, k: usize| p.contact[k].map_or(f64::NAN, |c| c.gamma.tan());
+    let at_centre = |p: &crate::rigid::Position| p.y_ws.abs() < 1e-12;
+    t = t
+        .numeric("delta_r_mm", converged(sweep, |p| r(p, 0) - r(p, 1)))
+        .numeric(
+            "lambda",
+            converged(sweep, |p| {
+                if at_centre(p) {
+                    f64::NAN
+                } else {
+                    (r(p, 0) - r(p, 1)) / (2.0 * p.y_ws)
+                }
+            }),
+        )
+        .numeric(
+            "epsilon",
+            converged(sweep, |p| {
+                if at_centre(p) {
+                    f64::NAN
+                } else {
+                    l0 * (tan(p, 0) - tan(p, 1)) / (2.0 * p.y_ws)
+                }
+            }),
+        )
+        .numeric(
+            "sigma",
+            converged(sweep, |p| {
+                if at_centre(p) {
+                    f64::NAN
+                } else {
+                    l0 * p.roll / p.y_ws
+                }
+            }),
+        )
+        .numeric(
+            "iterations",
+            sweep
+                .positions
+                .iter()
+                .map(|p| p.iterations as f64)
+                .collect::<Vec<_>>(),
+        )
+        .numeric(
+            "residual_mm",
+            sweep
+                .positions
+                .iter()
+                .map(|p| p.residual)
+                .collect::<Vec<_>>(),
+        )
+        .text(
+            "status",
+            sweep.positions.iter().map(|p| {
+                let mut s = p.stop.name().to_string();
+                for (k, side) in ["left", "right"].iter().enumerate() {
+                    if p.contact[k].is_some_and(|c| c.second.is_some()) {
+                        s.push_str(&format!("; two-point contact {side}"));
+                    }
+                }
+                if at_centre(p) {
+                    s.push_str("; y_ws = 0: lambda, epsilon, sigma undefined");
+                }
+                s
+            }),
+        );
+    t.build()
+}
+
+fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::Position) -> f64) -> Vec<f64> {
+    sweep
+        .positions
+        .iter()
+        .map(|p| {
+            if p.stop == Stop::Converged {
+                f(p)
+            } else {
+                f64::NAN
+            }
+        })
+        .collect()
+}
+
+/// The contact-point jumps of a rigid sweep (`rigid_jumps.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn rigid_jumps(sweep: &RigidSweep) -> Result<Table, TableError> {
+    let j = &sweep.jumps;
+    Table::builder()
+        .comment("intervals of y_ws across which a rigid contact point jumps, refined by bisection to 1e-4 mm")
+        .comment(PER_WHEEL)
+        .text("side", j.iter().map(|j| j.side.name()))
+        .numeric("y_from_mm", j.iter().map(|j| j.y_from).collect::<Vec<_>>())
+        .numeric("y_to_mm", j.iter().map(|j| j.y_to).collect::<Vec<_>>())
+        .numeric("s_from_mm", j.iter().map(|j| j.s_from).collect::<Vec<_>>())
+        .numeric("s_to_mm", j.iter().map(|j| j.s_to).collect::<Vec<_>>())
+        .build()
+}
+
+/// Quasi-elastic contact over the sweep (`quasi_elastic.csv`): the heaviest patch per
+/// wheel, and the second one where present.
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
+    let mut t = Table::builder()
+        .comment(format!(
+            "quasi-elastic contact: weights exp(-(d - d_min)/eps), eps = {} mm, cut-off {} eps, trapezoid quadrature",
+            q.settings.epsilon_mm, q.settings.cutoff
+        ))
+        .comment(TRACK_FRAME)
+        .comment(PER_WHEEL)
+        .comment("the heaviest patch (local minimum of the gap) per wheel; second_* the next heaviest (NaN if none); weight_share its share of the wheel's total weight")
+        .numeric("y_ws_mm", q.positions.iter().map(|p| p.y_ws).collect::<Vec<_>>());
+    for side in [Side::Left, Side::Right] {
+        let name = side.name();
+        let main = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
+            q.positions
+                .iter()
+                .map(|p| p.side(side).main().map_or(f64::NAN, f))
+                .collect()
+        };
+        let second = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
+            q.positions
+                .iter()
+                .map(|p| p.side(side).second().map_or(f64::NAN, f))
+                .collect()
+        };
+        t = t
+            .numeric(format!("{name}_s_mm"), main(&|c| c.s))
+            .numeric(format!("{name}_y_mm"), main(&|c| c.y))
+            .numeric(format!("{name}_z_mm"), main(&|c| c.z))
+            .numeric(format!("{name}_r_mm"), main(&|c| c.r))
+            .numeric(format!("{name}_gamma_rad"), main(&|c| c.gamma))
+            .numeric(
+                format!("{name}_wheel_curvature_per_mm"),
+                main(&|c| c.wheel_curvature),
+            )
+            .numeric(
+                format!("{name}_rail_curvature_per_mm"),
+                main(&|c| c.rail_curvature),
+            )
+            .numeric(format!("{name}_weight_share"), main(&|c| c.weight_share))
+            .numeric(
+                format!("{name}_patches"),
+                q.positions
+                    .iter()
+                    .map(|p| p.side(side).patches.len() as f64)
+                    .collect::<Vec<_>>(),
+            )
+            .numeric(format!("{name}_second_s_mm"), second(&|c| c.s))
+            .numeric(
+                format!("{name}_second_weight_share"),
+                second(&|c| c.weight_share),
+            );
+    }
+    let r =
+        |p: &crate::quasi_elastic::Position, k: usize| p.sides[k].main().map_or(f64::NAN, |c| c.r);
+    t.numeric(
+        "delta_r_mm",
+        q.positions
+            .iter()
+            .map(|p| r(p, 0) - r(p, 1))
+            .collect::<Vec<_>>(),
+    )
+    .text(
+        "status",
+        q.positions.iter().map(|p| {
+            if p.rigid_stop != Stop::Converged {
+                format!("rigid search: {}", p.rigid_stop.name())
+            } else if p.sides.iter().any(|s| s.patches.len() > 1) {
+                "ok; two patches".to_string()
+            } else {
+                "ok".to_string()
+            }
+        }),
+    )
+    .build()
+}
+
+/// The quasi-elastic contact location for each sensitivity eps (`qe_epsilon.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Table, TableError> {
+    let mut t = Table::builder()
+        .comment("quasi-elastic contact location (heaviest patch) against eps; rigid for reference")
+        .comment(PER_WHEEL)
+        .numeric(
+            "y_ws_mm",
+            rigid.positions.iter().map(|p| p.y_ws).collect::<Vec<_>>(),
+        );
+    for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+        t = t.numeric(
+            format!("{}_rigid_s_mm", side.name()),
+            converged(rigid, |p| p.contact[k].map_or(f64::NAN, |c| c.s)),
+        );
+        for (eps, q) in &e.runs {
+            t = t.numeric(
+                format!("{}_s_mm_eps_{eps}_mm", side.name()),
+                q.positions
+                    .iter()
+                    .map(|p| p.sides[k].main().map_or(f64::NAN, |c| c.s))
+                    .collect::<Vec<_>>(),
+            );
+        }
+    }
+    t.build()
+}
+
+/// Hertz ellipses over the sweep (`hertz.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn hertz(
+    h: &[crate::hertz::sweep::Position],
+    settings: &crate::hertz::sweep::Settings,
+) -> Result<Table, TableError> {
+    let mut t = Table::builder()
+        .comment(format!(
+            "Hertz contact ellipses, method {}, contact {:?}, normal load {:?}",
+            settings.method, settings.source, settings.normal_load
+        ))
+        .comment("a_mm semi-axis along the rolling direction, b_mm lateral; p0_MPa maximum pressure; A, B relative curvatures (1/mm) in the rolling and lateral directions")
+        .numeric("y_ws_mm", h.iter().map(|p| p.y_ws).collect::<Vec<_>>());
+    for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+        let name = side.name();
+        let ell = |f: &dyn Fn(&crate::hertz::Ellipse) -> f64| -> Vec<f64> {
+            h.iter()
+                .map(|p| {
+                    p.sides[k]
+                        .contact
+                        .as_ref()
+                        .and_then(|c| c.ellipse())
+                        .map_or(f64::NAN, f)
+                })
+                .collect()
+        };
+        t = t
+            .numeric(format!("{name}_a_mm"), ell(&|e| e.a_mm))
+            .numeric(format!("{name}_b_mm"), ell(&|e| e.b_mm))
+            .numeric(format!("{name}_p0_MPa"), ell(&|e| e.p0_mpa))
+            .numeric(format!("{name}_approach_mm"), ell(&|e| e.approach_mm))
+            .numeric(
+                format!("{name}_normal_load_N"),
+                h.iter()
+                    .map(|p| p.sides[k].normal_load_n)
+                    .collect::<Vec<_>>(),
+            )
+            .numeric(
+                format!("{name}_A_per_mm"),
+                h.iter().map(|p| p.sides[k].a_curvature).collect::<Vec<_>>(),
+            )
+            .numeric(
+                format!("{name}_B_per_mm"),
+                h.iter().map(|p| p.sides[k].b_curvature).collect::<Vec<_>>(),
+            )
+            .text(
+                format!("{name}_status"),
+                h.iter().map(|p| p.sides[k].status.clone()),
+            );
+    }
+    t.build()
+}
+
+/// Errors of the paper's Hertz numerics (`hertz_accuracy_series.csv`,
+/// `hertz_accuracy_ratio.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn hertz_accuracy(a: &HertzAccuracy) -> Result<(Table, Table), TableError> {
+    let series = Table::builder()
+        .comment("relative error of the paper's truncated series (its Eqs. 15-18, terms summed until below 1e-3) against K and E by the AGM")
+        .numeric("e", a.series.iter().map(|r| r.0).collect::<Vec<_>>())
+        .numeric("K_rel_error", a.series.iter().map(|r| r.1).collect::<Vec<_>>())
+        .numeric("E_rel_error", a.series.iter().map(|r| r.2).collect::<Vec<_>>())
+        .build()?;
+    let ratio = Table::builder()
+        .comment("relative error of b/a from the paper's fixed-point iteration (from e = 0.5, |de| <= 1e-3) against the exact inversion")
+        .numeric("A_over_B", a.ratio.iter().map(|r| r.0).collect::<Vec<_>>())
+        .numeric("b_over_a_rel_error", a.ratio.iter().map(|r| r.1).collect::<Vec<_>>())
+        .numeric("iterations", a.ratio.iter().map(|r| f64::from(r.2)).collect::<Vec<_>>())
+        .build()?;
+    Ok((series, ratio))
+}
