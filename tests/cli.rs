@@ -53,13 +53,33 @@ fn paper_report_writes_every_figure_in_both_formats() {
         .unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
     let html = std::fs::read_to_string(out.join("index.html")).unwrap();
-    for fig in ["profiles", "conicity", "contact_points", "contact_map", "qe_contact_points", "semi_axes", "hertz_accuracy"] {
-        assert!(out.join(format!("{fig}.svg")).exists() && out.join(format!("{fig}.png")).exists(), "{fig}");
-        assert!(html.contains(&format!("{fig}.svg")), "{fig} not in index.html");
+    for fig in [
+        "profiles",
+        "conicity",
+        "contact_points",
+        "contact_map",
+        "qe_contact_points",
+        "semi_axes",
+        "hertz_accuracy",
+    ] {
+        assert!(
+            out.join(format!("{fig}.svg")).exists() && out.join(format!("{fig}.png")).exists(),
+            "{fig}"
+        );
+        assert!(
+            html.contains(&format!("{fig}.svg")),
+            "{fig} not in index.html"
+        );
     }
     let png = std::fs::read(out.join("profiles.png")).unwrap();
     assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
-    for table in ["rigid.csv", "quasi_elastic.csv", "hertz.csv", "wheel_profile.csv", "rail_profile.csv"] {
+    for table in [
+        "rigid.csv",
+        "quasi_elastic.csv",
+        "hertz.csv",
+        "wheel_profile.csv",
+        "rail_profile.csv",
+    ] {
         let text = std::fs::read_to_string(out.join(table)).unwrap();
         assert!(text.starts_with('#'), "{table} has no frame/unit header");
     }
@@ -73,13 +93,24 @@ fn paper_report_writes_every_figure_in_both_formats() {
 #[test]
 fn a_profile_only_scene_runs_no_contact_search() {
     let dir = scratch("profile_only");
-    let s = scene(&dir, "[outputs]\nfigures = [\"profiles\", \"conicity\"]\nformats = [\"svg\"]");
-    let o = bin().arg("report").arg(&s).arg("--timings").output().unwrap();
+    let s = scene(
+        &dir,
+        "[outputs]\nfigures = [\"profiles\", \"conicity\"]\nformats = [\"svg\"]",
+    );
+    let o = bin()
+        .arg("report")
+        .arg(&s)
+        .arg("--timings")
+        .output()
+        .unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(err.contains("profiles"), "{err}");
     for stage in ["rigid", "quasi_elastic", "hertz"] {
-        assert!(!err.contains(stage), "stage {stage} ran for a profile-only scene: {err}");
+        assert!(
+            !err.contains(stage),
+            "stage {stage} ran for a profile-only scene: {err}"
+        );
     }
     assert!(dir.join("profiles.svg").exists() && !dir.join("profiles.png").exists());
     assert!(!dir.join("rigid.csv").exists());
@@ -87,35 +118,71 @@ fn a_profile_only_scene_runs_no_contact_search() {
 
 #[test]
 fn golden_check_passes_and_fails_beyond_tolerance() {
-    let o = bin().args(["check", "reports/paper/scene.toml", "--golden", "golden/paper"]).output().unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}{}", stderr(&o), String::from_utf8_lossy(&o.stdout));
+    let o = bin()
+        .args([
+            "check",
+            "reports/paper/scene.toml",
+            "--golden",
+            "golden/paper",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}{}",
+        stderr(&o),
+        String::from_utf8_lossy(&o.stdout)
+    );
 
     // Perturb one roll angle by 2e-9 rad (tolerance 1e-9): the check fails and names it.
     let dir = scratch("golden_perturbed");
-    for e in std::fs::read_dir(root().join("golden/paper")).unwrap().flatten() {
+    for e in std::fs::read_dir(root().join("golden/paper"))
+        .unwrap()
+        .flatten()
+    {
         std::fs::copy(e.path(), dir.join(e.file_name())).unwrap();
     }
     let rigid = std::fs::read_to_string(dir.join("rigid.csv")).unwrap();
     let mut lines: Vec<String> = rigid.lines().map(String::from).collect();
     let header = lines.iter().position(|l| !l.starts_with('#')).unwrap();
-    let roll_col = lines[header].split(',').position(|c| c == "roll_rad").unwrap();
+    let roll_col = lines[header]
+        .split(',')
+        .position(|c| c == "roll_rad")
+        .unwrap();
     let row = header + 250;
     let mut cells: Vec<String> = lines[row].split(',').map(String::from).collect();
     let roll: f64 = cells[roll_col].parse().unwrap();
     cells[roll_col] = format!("{:.12e}", roll + 2e-9);
     lines[row] = cells.join(",");
     std::fs::write(dir.join("rigid.csv"), lines.join("\n") + "\n").unwrap();
-    let o = bin().args(["check", "reports/paper/scene.toml", "--golden"]).arg(&dir).output().unwrap();
+    let o = bin()
+        .args(["check", "reports/paper/scene.toml", "--golden"])
+        .arg(&dir)
+        .output()
+        .unwrap();
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(o.status.code(), Some(1), "{out}");
-    assert!(out.contains("rigid.csv") && out.contains("roll_rad"), "{out}");
+    assert!(
+        out.contains("rigid.csv") && out.contains("roll_rad"),
+        "{out}"
+    );
 
     // Within tolerance (5e-10 rad) it passes.
     cells[roll_col] = format!("{:.12e}", roll + 5e-10);
     lines[row] = cells.join(",");
     std::fs::write(dir.join("rigid.csv"), lines.join("\n") + "\n").unwrap();
-    let o = bin().args(["check", "reports/paper/scene.toml", "--golden"]).arg(&dir).output().unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stdout));
+    let o = bin()
+        .args(["check", "reports/paper/scene.toml", "--golden"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
 }
 
 #[test]
@@ -126,19 +193,34 @@ fn bad_scenes_name_the_key_and_exit_2() {
         ("[track]\ngauge_mm = -1435.0", &["track.gauge_mm"]),
         ("[material]\npoisson = 0.5", &["poisson"]),
         ("[sweep]\nstep_mm = 0.0", &["sweep.step_mm"]),
-        ("[sweep]\nstep_mm = 0.000001", &["sweep.step_mm", "positions"]),
+        (
+            "[sweep]\nstep_mm = 0.000001",
+            &["sweep.step_mm", "positions"],
+        ),
         ("[load]\nwheel_load_kN = -70.0", &["load.wheel_load_kN"]),
-        ("[wheel]\nprofile = \"no_such_file.prw\"", &["wheel.left_profile", "no_such_file.prw"]),
-        ("[rail]\nprofile = \"S1002\"", &["rail.left_profile", "wheel profile"]),
+        (
+            "[wheel]\nprofile = \"no_such_file.prw\"",
+            &["wheel.left_profile", "no_such_file.prw"],
+        ),
+        (
+            "[rail]\nprofile = \"S1002\"",
+            &["rail.left_profile", "wheel profile"],
+        ),
         ("[rigid]\nsolver = \"fast\"", &["rigid.solver"]),
     ];
     for (body, expected) in cases {
         let s = scene(&dir, body);
         let o = bin().arg("report").arg(&s).output().unwrap();
         assert_clean_failure(&o, 2, expected);
-        assert!(!dir.join("index.html").exists(), "{body}: output written despite the error");
+        assert!(
+            !dir.join("index.html").exists(),
+            "{body}: output written despite the error"
+        );
     }
-    let o = bin().args(["report", "no/such/scene.toml"]).output().unwrap();
+    let o = bin()
+        .args(["report", "no/such/scene.toml"])
+        .output()
+        .unwrap();
     assert_clean_failure(&o, 2, &["no/such/scene.toml"]);
 }
 
@@ -147,7 +229,11 @@ fn bad_profile_files_name_the_file_and_line() {
     let dir = scratch("bad_profiles");
     let bad = root().join("tests/data/profiles/bad");
     let cases: &[(&str, &str, &[&str])] = &[
-        ("rail", "non_numeric.csv", &["non_numeric.csv:", "non-numeric"]),
+        (
+            "rail",
+            "non_numeric.csv",
+            &["non_numeric.csv:", "non-numeric"],
+        ),
         ("rail", "not_finite.csv", &["not_finite.csv:"]),
         ("rail", "empty.csv", &["empty.csv"]),
         ("rail", "header_only.csv", &["header_only.csv"]),
@@ -158,7 +244,10 @@ fn bad_profile_files_name_the_file_and_line() {
         ("wheel", "rail_type_in.prw", &["rail_type_in.prw"]),
     ];
     for (body, file, expected) in cases {
-        let s = scene(&dir, &format!("[{body}]\nprofile = \"{}\"", bad.join(file).display()));
+        let s = scene(
+            &dir,
+            &format!("[{body}]\nprofile = \"{}\"", bad.join(file).display()),
+        );
         let o = bin().arg("report").arg(&s).output().unwrap();
         assert_clean_failure(&o, 2, expected);
     }
@@ -167,8 +256,19 @@ fn bad_profile_files_name_the_file_and_line() {
 #[test]
 fn a_failed_run_leaves_the_previous_report_intact() {
     let dir = scratch("atomic");
-    let good = scene(&dir, "[outputs]\nfigures = [\"profiles\"]\nformats = [\"svg\"]");
-    assert!(bin().arg("report").arg(&good).output().unwrap().status.success());
+    let good = scene(
+        &dir,
+        "[outputs]\nfigures = [\"profiles\"]\nformats = [\"svg\"]",
+    );
+    assert!(
+        bin()
+            .arg("report")
+            .arg(&good)
+            .output()
+            .unwrap()
+            .status
+            .success()
+    );
     let before = std::fs::read(dir.join("profiles.svg")).unwrap();
     // Same outputs, but a rail file that fails to read: nothing may change.
     let bad = root().join("tests/data/profiles/bad/non_numeric.csv");
@@ -183,7 +283,11 @@ fn a_failed_run_leaves_the_previous_report_intact() {
     let leftovers: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .flatten()
-        .filter(|e| e.file_name().to_string_lossy().starts_with(".wheelrail-tmp"))
+        .filter(|e| {
+            e.file_name()
+                .to_string_lossy()
+                .starts_with(".wheelrail-tmp")
+        })
         .collect();
     assert!(leftovers.is_empty());
 }
@@ -193,22 +297,58 @@ fn hertz_command_prints_a_csv_row_and_rejects_bad_input() {
     // Sphere on plane, R = 300 mm, P = 1 kN, E* = 210000 / (2 (1 - 0.09)) MPa:
     // a = (3 P R / (4 E*))^(1/3) (Johnson 1985, Sect. 4.2).
     let o = bin()
-        .args(["hertz", "--A", "0.0016666666666666667", "--B", "0.0016666666666666667", "--load", "1000"])
+        .args([
+            "hertz",
+            "--A",
+            "0.0016666666666666667",
+            "--B",
+            "0.0016666666666666667",
+            "--load",
+            "1000",
+        ])
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8_lossy(&o.stdout);
     let mut lines = text.lines();
-    assert!(lines.next().unwrap().starts_with("a_mm,b_mm,p0_MPa,approach_mm,e,method"));
-    let a: f64 = lines.next().unwrap().split(',').next().unwrap().parse().unwrap();
+    assert!(
+        lines
+            .next()
+            .unwrap()
+            .starts_with("a_mm,b_mm,p0_MPa,approach_mm,e,method")
+    );
+    let a: f64 = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
     let e_star: f64 = 210_000.0 / (2.0 * (1.0 - 0.09));
     let exact = (3.0 * 1000.0 * 300.0 / (4.0 * e_star)).powf(1.0 / 3.0);
     assert!((a - exact).abs() < 1e-12 * exact, "{a} vs {exact}");
 
-    let o = bin().args(["hertz", "--A", "0.001", "--B", "0.002", "--load", "-5"]).output().unwrap();
+    let o = bin()
+        .args(["hertz", "--A", "0.001", "--B", "0.002", "--load", "-5"])
+        .output()
+        .unwrap();
     assert!(!o.status.success());
     assert!(!stderr(&o).contains("panicked"));
-    let o = bin().args(["hertz", "--A", "0.001", "--B", "0.002", "--load", "100", "--poisson", "0.5"]).output().unwrap();
+    let o = bin()
+        .args([
+            "hertz",
+            "--A",
+            "0.001",
+            "--B",
+            "0.002",
+            "--load",
+            "100",
+            "--poisson",
+            "0.5",
+        ])
+        .output()
+        .unwrap();
     assert_clean_failure(&o, 2, &["oisson"]);
 }
 
@@ -216,10 +356,19 @@ fn hertz_command_prints_a_csv_row_and_rejects_bad_input() {
 fn profile_export_round_trips_and_rejects_unknown_names() {
     let dir = scratch("export");
     let out = dir.join("w.csv");
-    let o = bin().args(["profile", "s1002", "--out"]).arg(&out).output().unwrap();
+    let o = bin()
+        .args(["profile", "s1002", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
-    let p = wheelrail::profile::read::read_profile(&out, wheelrail::profile::ProfileKind::Wheel).unwrap();
+    let p = wheelrail::profile::read::read_profile(&out, wheelrail::profile::ProfileKind::Wheel)
+        .unwrap();
     assert!(p.points.len() > 1300);
-    let o = bin().args(["profile", "s1003", "--out"]).arg(&out).output().unwrap();
+    let o = bin()
+        .args(["profile", "s1003", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
     assert_clean_failure(&o, 2, &["s1003"]);
 }

@@ -27,11 +27,7 @@ type Line = Vec<(f64, f64)>;
 
 /// Points of the wheel in its resting position on the rail (no shift, no roll) and of the
 /// rail, in the side frame of `side`.
-fn drawn_profiles(
-    placement: &Placement,
-    side: Side,
-    lift: f64,
-) -> (Line, Line) {
+fn drawn_profiles(placement: &Placement, side: Side, lift: f64) -> (Line, Line) {
     let pair = placement.side(side);
     let axle = pair.wheel.nominal_radius_mm() - placement.resting_gap(side) + lift;
     let wheel = pair
