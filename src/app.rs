@@ -67,6 +67,17 @@ pub enum Command {
     },
     /// Hertz contact ellipse for given curvatures and load; prints a CSV header and row.
     Hertz(crate::hertz::cli::HertzArgs),
+    /// Run time against error of numerical settings: writes tradeoff.csv and its chart.
+    Tradeoff {
+        /// The scene file (default: the paper's scene).
+        scene: Option<PathBuf>,
+        /// Output folder (default: the scene file's folder).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Timed runs per setting (the median is reported).
+        #[arg(long, default_value_t = 5)]
+        repeats: usize,
+    },
 }
 
 /// Parses the arguments, runs, prints errors and maps them to exit codes.
@@ -107,6 +118,14 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             bless,
         }) => check(&scene, &golden, bless),
         Some(Command::Profile { name, out, step_mm }) => export_profile(&name, &out, step_mm),
+        Some(Command::Tradeoff {
+            scene,
+            out,
+            repeats,
+        }) => {
+            let scene = scene.unwrap_or_else(|| PathBuf::from(PAPER_SCENE));
+            tradeoff(&scene, out.as_deref(), repeats)
+        }
         Some(Command::Hertz(args)) => {
             let text = crate::hertz::cli::run(&args).map_err(|e| Error::Other(e.to_string()))?;
             print!("{text}");
@@ -123,12 +142,18 @@ fn report(scene_path: &Path, out: Option<&Path>, timings: bool) -> Result<ExitCo
             eprintln!("{:<20} {:>10.3} ms", stage.name(), 1e3 * seconds);
         }
     }
-    // Everything is rendered in memory before the first byte is written.
-    let files = outputs::render(&scene, &results)?;
     let dir = out.map_or_else(
         || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
         Path::to_path_buf,
     );
+    // A tradeoff study written earlier into the same folder is listed in the report.
+    let extra: Vec<_> = if dir.join("tradeoff.svg").exists() {
+        vec![outputs::tradeoff_entry()]
+    } else {
+        Vec::new()
+    };
+    // Everything is rendered in memory before the first byte is written.
+    let files = outputs::render(&scene, &results, &extra)?;
     write_all(&dir, &files)?;
     eprintln!(
         "wrote {} files to {}",
@@ -213,6 +238,37 @@ pub fn golden_policy() -> TolerancePolicy {
     )
     .column("iterations", Tolerance { abs: 0.0, rel: 0.0 })
     .key_column("y_ws_mm")
+}
+
+fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<ExitCode, Error> {
+    if !(1..=1000).contains(&repeats) {
+        return Err(Error::Other(format!(
+            "--repeats {repeats}: expected 1 to 1000"
+        )));
+    }
+    let scene = Scene::load(scene_path)?;
+    let settings = crate::tradeoff::grid(&scene);
+    let measured = crate::tradeoff::study(&scene, &settings, repeats, |done, total, label| {
+        eprint!("\r\x1b[2K[{done}/{total}] {label}");
+    })?;
+    eprintln!();
+    let (files, _) = outputs::tradeoff_files(&measured, &scene.formats)?;
+    let dir = out.map_or_else(
+        || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
+        Path::to_path_buf,
+    );
+    write_all(&dir, &files)?;
+    for m in &measured {
+        eprintln!(
+            "{:<32} {:>9.2} ms  contact {:.1e} mm  a,b {:.1e}",
+            m.setting.label,
+            1e3 * m.median_s,
+            m.errors.contact_mm,
+            m.errors.a_rel.max(m.errors.b_rel)
+        );
+    }
+    eprintln!("wrote {}", dir.join("tradeoff.csv").display());
+    Ok(ExitCode::SUCCESS)
 }
 
 fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Error> {

@@ -53,5 +53,6 @@ pub mod report;
 pub mod rigid;
 pub mod scene;
 pub mod track;
+pub mod tradeoff;
 
 pub use error::Error;

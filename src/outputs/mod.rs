@@ -198,10 +198,16 @@ pub fn caption(fig: Figure, scene: &Scene) -> String {
 }
 
 /// Every output file of a scene: tables, figures in the scene's formats, and `index.html`.
+/// `extra` figures (already written by another command, such as `wheelrail tradeoff`) are
+/// listed in the page after the scene's own.
 ///
 /// # Errors
 /// [`Error::Other`] when a figure cannot be rendered.
-pub fn render(scene: &Scene, results: &Results) -> Result<Vec<OutputFile>, Error> {
+pub fn render(
+    scene: &Scene,
+    results: &Results,
+    extra: &[FigureEntry],
+) -> Result<Vec<OutputFile>, Error> {
     let tables = tables(scene, results)?;
     let mut files: Vec<OutputFile> = tables
         .iter()
@@ -241,6 +247,7 @@ pub fn render(scene: &Scene, results: &Results) -> Result<Vec<OutputFile>, Error
         }
         entries.push(entry);
     }
+    entries.extend_from_slice(extra);
     let page = report_page(scene, results, &tables, entries);
     files.push(OutputFile {
         name: "index.html".into(),
@@ -414,5 +421,49 @@ fn report_page(
             })
             .collect(),
         notes,
+    }
+}
+
+/// The tradeoff study's files: `tradeoff.csv` and its chart in `formats`, and the page entry
+/// that lists the chart in a report.
+///
+/// # Errors
+/// [`Error::Other`] when the chart cannot be rendered.
+pub fn tradeoff_files(
+    m: &[crate::tradeoff::Measurement],
+    formats: &[ImageFormat],
+) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
+    let mut files = vec![OutputFile {
+        name: "tradeoff.csv".into(),
+        bytes: tables::tradeoff(m)
+            .map_err(table_error)?
+            .to_csv_with(CSV_FORMAT)
+            .into_bytes(),
+    }];
+    let chart = figures::tradeoff(m);
+    for f in formats {
+        files.push(match f {
+            ImageFormat::Svg => OutputFile {
+                name: "tradeoff.svg".into(),
+                bytes: report::render_svg(&chart)
+                    .map_err(|e| Error::Other(e.to_string()))?
+                    .into_bytes(),
+            },
+            ImageFormat::Png => OutputFile {
+                name: "tradeoff.png".into(),
+                bytes: report::render_png(&chart).map_err(|e| Error::Other(e.to_string()))?,
+            },
+        });
+    }
+    Ok((files, tradeoff_entry()))
+}
+
+/// The report entry of the tradeoff chart.
+pub fn tradeoff_entry() -> FigureEntry {
+    FigureEntry {
+        name: "tradeoff".into(),
+        caption: "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it; tradeoff.csv lists every setting).".into(),
+        svg: "tradeoff.svg".into(),
+        png: "tradeoff.png".into(),
     }
 }

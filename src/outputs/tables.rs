@@ -426,3 +426,32 @@ pub fn hertz_accuracy(a: &HertzAccuracy) -> Result<(Table, Table), TableError> {
         .build()?;
     Ok((series, ratio))
 }
+
+/// The run time against error study (`tradeoff.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError> {
+    let col =
+        |f: &dyn Fn(&crate::tradeoff::Measurement) -> f64| m.iter().map(f).collect::<Vec<_>>();
+    Table::builder()
+        .comment("run time against error: the scene's pipeline (placement, rigid, quasi-elastic, Hertz; no rendering) per setting, single-threaded")
+        .comment("errors against the reference (analytic profiles, default solver, quadrature step 0.005 mm, cut-off exp(-60), exact Hertz), max over the sweep and both wheels; contact_mm excludes positions within one step of a reference jump; qe_location_mm is weight-averaged over the patches")
+        .comment("times are machine-dependent: compare settings as ratios within one run")
+        .text("setting", m.iter().map(|x| x.setting.label.clone()))
+        .numeric("profile_step_mm", col(&|x| x.setting.profile_step_mm.unwrap_or(f64::NAN)))
+        .text("rigid_solver", m.iter().map(|x| x.setting.solver.name()))
+        .numeric("qe_max_step_mm", col(&|x| x.setting.quasi_elastic.max_step_mm))
+        .numeric("qe_cutoff", col(&|x| x.setting.quasi_elastic.cutoff))
+        .text("hertz_method", m.iter().map(|x| x.setting.hertz.to_string()))
+        .numeric("median_ms", col(&|x| 1e3 * x.median_s))
+        .numeric("min_ms", col(&|x| 1e3 * x.range_s.0))
+        .numeric("max_ms", col(&|x| 1e3 * x.range_s.1))
+        .numeric("contact_error_mm", col(&|x| x.errors.contact_mm))
+        .numeric("qe_location_error_mm", col(&|x| x.errors.qe_location_mm))
+        .numeric("roll_error_rad", col(&|x| x.errors.roll_rad))
+        .numeric("a_rel_error", col(&|x| x.errors.a_rel))
+        .numeric("b_rel_error", col(&|x| x.errors.b_rel))
+        .numeric("p0_rel_error", col(&|x| x.errors.p0_rel))
+        .build()
+}

@@ -1,0 +1,338 @@
+//! Run time against error: the scene's pipeline (placement, rigid, quasi-elastic, Hertz;
+//! no rendering) under a grid of numerical settings, each timed and compared with a
+//! converged reference computed once with the finest settings.
+//!
+//! Errors over the whole sweep, both wheels:
+//! - `contact_mm`: rigid contact position (wheel coordinate), positions within one sweep step
+//!   of a reference jump excluded (there an arbitrarily small change moves the jump);
+//! - `qe_location_mm`: quasi-elastic contact location, weight-averaged over the patches (so
+//!   that a change of the heaviest patch is not counted as an error of its size);
+//! - `roll_rad`; `a_rel`, `b_rel`, `p0_rel`: relative errors of the Hertz results where both
+//!   the setting and the reference have an ellipse.
+
+use crate::hertz::{self, Method};
+use crate::pipeline;
+use crate::profile::Profile;
+use crate::profile::read::{ProfileFormat, parse_str};
+use crate::quasi_elastic::{self, QuasiElasticSweep};
+use crate::rigid::{self, RigidSweep, Solver, Stop};
+use crate::scene::{ProfileRef, Scene};
+use crate::track::{PlacedRail, PlacedWheel, Placement, SidePair};
+use std::time::Instant;
+
+/// One combination of numerical settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Setting {
+    /// Short label, e.g. `default` or `sampled 0.5 mm, paper solver`.
+    pub label: String,
+    /// `None`: the scene's profiles as they are; `Some(h)`: built-in profiles sampled every
+    /// `h` mm and read back through the CSV reader and an interpolating spline.
+    pub profile_step_mm: Option<f64>,
+    /// Rigid solver.
+    pub solver: Solver,
+    /// Quasi-elastic settings.
+    pub quasi_elastic: quasi_elastic::Settings,
+    /// Hertz method.
+    pub hertz: Method,
+}
+
+/// The measured cost and errors of one setting.
+#[derive(Debug, Clone)]
+pub struct Measurement {
+    /// The setting.
+    pub setting: Setting,
+    /// Median wall time of one run (s), single-threaded.
+    pub median_s: f64,
+    /// Fastest and slowest of the repeated runs (s).
+    pub range_s: (f64, f64),
+    /// Errors against the reference (see the module docs).
+    pub errors: Errors,
+}
+
+/// Errors of one setting against the reference.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Errors {
+    /// Rigid contact position, mm.
+    pub contact_mm: f64,
+    /// Quasi-elastic location, mm.
+    pub qe_location_mm: f64,
+    /// Roll, rad.
+    pub roll_rad: f64,
+    /// Semi-axis a, relative.
+    pub a_rel: f64,
+    /// Semi-axis b, relative.
+    pub b_rel: f64,
+    /// Maximum pressure, relative.
+    pub p0_rel: f64,
+}
+
+/// The reference: analytic profiles, default solver, quasi-elastic quadrature 10 times finer
+/// than the default with cut-off exp(-60), exact Hertz.
+pub fn reference_setting() -> Setting {
+    Setting {
+        label: "reference".into(),
+        profile_step_mm: None,
+        solver: Solver::Default,
+        quasi_elastic: quasi_elastic::Settings {
+            max_step_mm: quasi_elastic::DEFAULT_MAX_STEP_MM / 10.0,
+            cutoff: 60.0,
+            ..quasi_elastic::Settings::default()
+        },
+        hertz: Method::Exact,
+    }
+}
+
+/// The project's default settings (what a scene gets without numerical keys).
+pub fn default_setting(scene: &Scene) -> Setting {
+    Setting {
+        label: "default".into(),
+        profile_step_mm: None,
+        solver: Solver::Default,
+        quasi_elastic: scene.quasi_elastic,
+        hertz: Method::Exact,
+    }
+}
+
+/// The paper's numerical choices: tabulated profiles (0.1 mm), its rigid iteration, its
+/// quadrature on the table (0.1 mm), its series and fixed-point iteration for Hertz.
+pub fn paper_setting(scene: &Scene) -> Setting {
+    Setting {
+        label: "paper".into(),
+        profile_step_mm: Some(0.1),
+        solver: Solver::Paper,
+        quasi_elastic: quasi_elastic::Settings {
+            max_step_mm: 0.1,
+            ..scene.quasi_elastic
+        },
+        hertz: Method::Paper,
+    }
+}
+
+/// The grid of the study: the default, the paper's, and one-at-a-time and combined
+/// variations of profile sampling, solver, quadrature step, cut-off and Hertz method.
+pub fn grid(scene: &Scene) -> Vec<Setting> {
+    let d = default_setting(scene);
+    let mut out = vec![d.clone(), paper_setting(scene)];
+    for step in [0.05, 0.1, 0.2, 0.5, 1.0] {
+        out.push(Setting {
+            label: format!("profiles sampled {step} mm"),
+            profile_step_mm: Some(step),
+            ..d.clone()
+        });
+    }
+    out.push(Setting {
+        label: "paper rigid solver".into(),
+        solver: Solver::Paper,
+        ..d.clone()
+    });
+    for max_step in [0.01, 0.1, 0.2] {
+        out.push(Setting {
+            label: format!("quadrature step {max_step} mm"),
+            quasi_elastic: quasi_elastic::Settings {
+                max_step_mm: max_step,
+                ..d.quasi_elastic
+            },
+            ..d.clone()
+        });
+    }
+    for cutoff in [10.0, 20.0] {
+        out.push(Setting {
+            label: format!("cut-off exp(-{cutoff})"),
+            quasi_elastic: quasi_elastic::Settings {
+                cutoff,
+                ..d.quasi_elastic
+            },
+            ..d.clone()
+        });
+    }
+    out.push(Setting {
+        label: "paper Hertz".into(),
+        hertz: Method::Paper,
+        ..d.clone()
+    });
+    out
+}
+
+/// What one run of a setting produces.
+struct Run {
+    rigid: RigidSweep,
+    quasi_elastic: QuasiElasticSweep,
+    hertz: Vec<hertz::sweep::Position>,
+}
+
+fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::Error> {
+    let Some(step) = setting.profile_step_mm else {
+        return pipeline::place(scene);
+    };
+    let sampled = |r: &ProfileRef, kind| -> Result<Profile, crate::Error> {
+        let profile = scene.load_profile(r, kind, "tradeoff")?;
+        let table = crate::app::profile_table(&profile, step)
+            .map_err(|e| crate::Error::Other(e.to_string()))?;
+        let text = table.to_csv_with(crate::report::NumberFormat::Significant(17));
+        let points = parse_str(&text, ProfileFormat::Csv, kind, "sampled")?;
+        Profile::from_points(points, 0.0).map_err(|e| crate::Error::Other(e.to_string()))
+    };
+    let side = |i: usize| -> Result<SidePair, crate::Error> {
+        let err = |e: crate::track::PlacementError| crate::Error::Other(e.to_string());
+        Ok(SidePair {
+            wheel: PlacedWheel::place(
+                sampled(&scene.wheel_profiles[i], crate::profile::ProfileKind::Wheel)?,
+                scene.nominal_radius_mm[i],
+                &scene.layout,
+            )
+            .map_err(err)?,
+            rail: PlacedRail::place(
+                sampled(&scene.rail_profiles[i], crate::profile::ProfileKind::Rail)?,
+                scene.rail_profile_inclination,
+                &scene.layout,
+            )
+            .map_err(err)?,
+        })
+    };
+    Ok(Placement {
+        layout: scene.layout.clone(),
+        left: side(0)?,
+        right: side(1)?,
+    })
+}
+
+fn run_once(scene: &Scene, setting: &Setting, placement: &Placement) -> Run {
+    let rigid = rigid::search(placement, &scene.sweep_mm, setting.solver);
+    let qe = quasi_elastic::search(placement, &rigid, &setting.quasi_elastic);
+    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+    let h = hertz::sweep::sweep(
+        &rigid,
+        Some(&qe),
+        scene.wheel_load_n,
+        e_star,
+        &hertz::sweep::Settings {
+            method: setting.hertz,
+            ..scene.hertz
+        },
+    );
+    Run {
+        rigid,
+        quasi_elastic: qe,
+        hertz: h,
+    }
+}
+
+/// Runs the study: the reference once, then each setting `repeats` times (the median of
+/// the timed runs; placement, which reads and fits profiles, is timed with the run).
+/// `progress(done, total, label)` is called before each setting.
+///
+/// # Errors
+/// [`crate::Error`] when a profile cannot be read or placed.
+pub fn study(
+    scene: &Scene,
+    settings: &[Setting],
+    repeats: usize,
+    mut progress: impl FnMut(usize, usize, &str),
+) -> Result<Vec<Measurement>, crate::Error> {
+    let reference_setting = reference_setting();
+    let reference = run_once(
+        scene,
+        &reference_setting,
+        &placement_for(scene, &reference_setting)?,
+    );
+    let mut out = Vec::with_capacity(settings.len());
+    for (i, setting) in settings.iter().enumerate() {
+        progress(i, settings.len(), &setting.label);
+        let mut times = Vec::with_capacity(repeats.max(1));
+        let mut last = None;
+        for _ in 0..repeats.max(1) {
+            let start = Instant::now();
+            let placement = placement_for(scene, setting)?;
+            let run = run_once(scene, setting, &placement);
+            times.push(start.elapsed().as_secs_f64());
+            last = Some(run);
+        }
+        times.sort_by(f64::total_cmp);
+        let run = last.expect("at least one repeat");
+        out.push(Measurement {
+            setting: setting.clone(),
+            median_s: times[times.len() / 2],
+            range_s: (times[0], times[times.len() - 1]),
+            errors: errors(&reference, &run),
+        });
+    }
+    progress(settings.len(), settings.len(), "done");
+    Ok(out)
+}
+
+fn errors(reference: &Run, run: &Run) -> Errors {
+    let mut e = Errors::default();
+    let step = reference
+        .rigid
+        .positions
+        .windows(2)
+        .map(|w| w[1].y_ws - w[0].y_ws)
+        .fold(0.0, f64::max);
+    let near_jump = |y: f64| {
+        reference
+            .rigid
+            .jumps
+            .iter()
+            .any(|j| (y - j.y_from).abs() <= step + 1e-9)
+    };
+    for (a, b) in reference.rigid.positions.iter().zip(&run.rigid.positions) {
+        if a.stop != Stop::Converged || b.stop != Stop::Converged {
+            continue;
+        }
+        e.roll_rad = e.roll_rad.max((a.roll - b.roll).abs());
+        if near_jump(a.y_ws) {
+            continue;
+        }
+        for k in 0..2 {
+            if let (Some(ca), Some(cb)) = (a.contact[k], b.contact[k]) {
+                e.contact_mm = e.contact_mm.max((ca.s - cb.s).abs());
+            }
+        }
+    }
+    let location = |side: &quasi_elastic::SideResult| -> f64 {
+        side.patches.iter().map(|p| p.weight_share * p.s).sum()
+    };
+    for (a, b) in reference
+        .quasi_elastic
+        .positions
+        .iter()
+        .zip(&run.quasi_elastic.positions)
+    {
+        for k in 0..2 {
+            if !a.sides[k].patches.is_empty() && !b.sides[k].patches.is_empty() {
+                e.qe_location_mm = e
+                    .qe_location_mm
+                    .max((location(&a.sides[k]) - location(&b.sides[k])).abs());
+            }
+        }
+    }
+    for (a, b) in reference.hertz.iter().zip(&run.hertz) {
+        for k in 0..2 {
+            let ea = a.sides[k].contact.as_ref().and_then(|c| c.ellipse());
+            let eb = b.sides[k].contact.as_ref().and_then(|c| c.ellipse());
+            if let (Some(x), Some(y)) = (ea, eb) {
+                e.a_rel = e.a_rel.max((y.a_mm / x.a_mm - 1.0).abs());
+                e.b_rel = e.b_rel.max((y.b_mm / x.b_mm - 1.0).abs());
+                e.p0_rel = e.p0_rel.max((y.p0_mpa / x.p0_mpa - 1.0).abs());
+            }
+        }
+    }
+    e
+}
+
+/// The settings on the Pareto front of (time, error): no other setting is at least as fast
+/// and at least as accurate and better in one of them. Indices into `m`.
+pub fn pareto_front(m: &[Measurement], error: impl Fn(&Errors) -> f64) -> Vec<usize> {
+    let mut idx: Vec<usize> = (0..m.len()).collect();
+    idx.sort_by(|&a, &b| m[a].median_s.total_cmp(&m[b].median_s));
+    let mut front = Vec::new();
+    let mut best = f64::INFINITY;
+    for i in idx {
+        let e = error(&m[i].errors);
+        if e < best {
+            best = e;
+            front.push(i);
+        }
+    }
+    front
+}
