@@ -32,11 +32,13 @@ pub struct Cli {
 /// The commands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Run a scene and write its tables, figures and index.html.
+    /// Run scenes and write their tables, figures and index.html (several scenes run in
+    /// parallel, one per core).
     Report {
-        /// The scene file (TOML).
-        scene: PathBuf,
-        /// Output folder (default: the scene file's folder).
+        /// The scene files (TOML).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Output folder (default: each scene file's folder; only with one scene).
         #[arg(long)]
         out: Option<PathBuf>,
         /// Print the stages run and their times to stderr.
@@ -108,10 +110,20 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             report(scene, None, false)
         }
         Some(Command::Report {
-            scene,
+            scenes,
             out,
             timings,
-        }) => report(&scene, out.as_deref(), timings),
+        }) => {
+            if scenes.len() == 1 {
+                return report(&scenes[0], out.as_deref(), timings);
+            }
+            if out.is_some() {
+                return Err(Error::Other(
+                    "--out takes one scene; several scenes write into their own folders".into(),
+                ));
+            }
+            report_batch(&scenes, timings)
+        }
         Some(Command::Check {
             scene,
             golden,
@@ -131,6 +143,28 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             print!("{text}");
             Ok(ExitCode::SUCCESS)
         }
+    }
+}
+
+/// Runs independent scenes in parallel (rayon, one per core). A single sweep stays
+/// sequential: each position starts from the previous one's solution (continuation).
+/// Every scene is reported; the first error is returned after all have run.
+fn report_batch(scenes: &[PathBuf], timings: bool) -> Result<ExitCode, Error> {
+    use rayon::prelude::*;
+    let results: Vec<Result<ExitCode, Error>> = scenes
+        .par_iter()
+        .map(|s| report(s, None, timings))
+        .collect();
+    let mut first_error = None;
+    for (scene, r) in scenes.iter().zip(results) {
+        if let Err(e) = r {
+            eprintln!("error: {}: {e}", scene.display());
+            first_error.get_or_insert(e);
+        }
+    }
+    match first_error {
+        Some(e) => Err(e),
+        None => Ok(ExitCode::SUCCESS),
     }
 }
 

@@ -1,0 +1,100 @@
+//! Benchmarks of whole scenes: the paper scene without rendering, the rendering of its
+//! report (bytes only, no files), and a batch of independent scenes sequential against
+//! parallel (rayon). Run: `cargo bench --bench scene`.
+
+use std::path::Path;
+use wheelrail::{outputs, pipeline, scene::Scene};
+
+fn main() {
+    divan::main();
+}
+
+fn paper() -> Scene {
+    Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/paper/scene.toml")).unwrap()
+}
+
+/// The paper scene's computation for its tables (rigid, quasi-elastic, Hertz; the eps
+/// sensitivity and Hertz accuracy stages left out: they serve one figure each).
+fn compute_only() -> Scene {
+    let mut s = paper();
+    s.figures = vec![
+        wheelrail::pipeline::Figure::SemiAxes,
+        wheelrail::pipeline::Figure::ContactMap,
+    ];
+    s
+}
+
+#[divan::bench(sample_count = 20)]
+fn paper_scene_without_rendering(bencher: divan::Bencher) {
+    let scene = compute_only();
+    bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
+}
+
+#[divan::bench(sample_count = 20)]
+fn paper_scene_all_stages_without_rendering(bencher: divan::Bencher) {
+    let scene = paper();
+    bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
+}
+
+#[divan::bench(sample_count = 5)]
+fn paper_report_rendering(bencher: divan::Bencher) {
+    let scene = paper();
+    let results = pipeline::run(&scene).unwrap();
+    bencher.bench(|| outputs::render(divan::black_box(&scene), &results, &[]).unwrap());
+}
+
+/// Eight independent scenes (a batch of wheel radii, as a profile sweep would be).
+fn batch() -> Vec<Scene> {
+    (0..8)
+        .map(|i| {
+            let mut s = compute_only();
+            s.nominal_radius_mm = [440.0 + 5.0 * f64::from(i); 2];
+            s
+        })
+        .collect()
+}
+
+#[divan::bench(sample_count = 5)]
+fn batch_of_8_sequential(bencher: divan::Bencher) {
+    let scenes = batch();
+    bencher.bench(|| {
+        scenes
+            .iter()
+            .map(|s| pipeline::run(s).unwrap())
+            .collect::<Vec<_>>()
+    });
+}
+
+#[divan::bench(sample_count = 5)]
+fn batch_of_8_parallel(bencher: divan::Bencher) {
+    use rayon::prelude::*;
+    let scenes = batch();
+    bencher.bench(|| {
+        scenes
+            .par_iter()
+            .map(|s| pipeline::run(s).unwrap())
+            .collect::<Vec<_>>()
+    });
+}
+
+/// One sweep split into two halves solved in parallel (each half continues from its own
+/// start), against the whole sweep sequentially: what continuation is worth.
+#[divan::bench(sample_count = 10)]
+fn rigid_sweep_split_in_two_parallel(bencher: divan::Bencher) {
+    let scene = paper();
+    let placement = pipeline::place(&scene).unwrap();
+    let (a, b) = scene.sweep_mm.split_at(scene.sweep_mm.len() / 2);
+    bencher.bench(|| {
+        rayon::join(
+            || wheelrail::rigid::search(&placement, a, scene.rigid_solver),
+            || wheelrail::rigid::search(&placement, b, scene.rigid_solver),
+        )
+    });
+}
+
+#[divan::bench(sample_count = 10)]
+fn rigid_sweep_sequential(bencher: divan::Bencher) {
+    let scene = paper();
+    let placement = pipeline::place(&scene).unwrap();
+    bencher.bench(|| wheelrail::rigid::search(&placement, &scene.sweep_mm, scene.rigid_solver));
+}
