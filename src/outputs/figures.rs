@@ -249,45 +249,41 @@ fn with_onsets(mut chart: Chart, sweep: &RigidSweep) -> Chart {
 
 const SHIFT: &str = "lateral shift of the wheelset y_ws (mm)";
 
+/// A chart of one per-wheel rigid quantity against the shift: left solid, right dashed,
+/// broken at jumps, flange onsets marked.
+fn left_right(
+    sweep: &RigidSweep,
+    title: &str,
+    y_label: &str,
+    f: impl Fn(&SideContact) -> f64,
+) -> Chart {
+    with_onsets(
+        Chart::new(title, SHIFT, y_label)
+            .series(Series::line("left", rigid_series(sweep, Side::Left, |_, c| f(c))).color(LEFT))
+            .series(
+                Series::line("right", rigid_series(sweep, Side::Right, |_, c| f(c)))
+                    .color(RIGHT)
+                    .dashed(),
+            ),
+        sweep,
+    )
+}
+
 /// Contact positions on wheel and rail against the shift (paper Fig. 2).
 pub fn contact_points(placement: &Placement, sweep: &RigidSweep) -> Figure {
-    let wheel = with_onsets(
-        Chart::new(
-            "On the wheel",
-            SHIFT,
-            "wheel coordinate s (mm, + field side)",
-        )
-        .series(Series::line("left", rigid_series(sweep, Side::Left, |_, c| c.s)).color(LEFT))
-        .series(
-            Series::line("right", rigid_series(sweep, Side::Right, |_, c| c.s))
-                .color(RIGHT)
-                .dashed(),
-        ),
+    let wheel = left_right(
         sweep,
+        "On the wheel",
+        "wheel coordinate s (mm, + field side)",
+        |c| c.s,
     );
     let top = |side: Side| placement.side(side).rail.top()[0];
-    let rail = with_onsets(
-        Chart::new(
-            "On the rail",
-            SHIFT,
-            "from the top of rail (mm, + field side)",
-        )
-        .series(
-            Series::line(
-                "left",
-                rigid_series(sweep, Side::Left, |_, c| c.y.abs() - top(Side::Left)),
-            )
-            .color(LEFT),
-        )
-        .series(
-            Series::line(
-                "right",
-                rigid_series(sweep, Side::Right, |_, c| c.y.abs() - top(Side::Right)),
-            )
-            .color(RIGHT)
-            .dashed(),
-        ),
+    // Track-frame |y| of the contact from the top of the rail of its side.
+    let rail = left_right(
         sweep,
+        "On the rail",
+        "from the top of rail (mm, + field side)",
+        |c| c.y.abs() - top(if c.y > 0.0 { Side::Left } else { Side::Right }),
     );
     Figure::grid("Rigid contact points", vec![wheel, rail], 2)
 }
@@ -311,19 +307,11 @@ pub fn rolling_radius(sweep: &RigidSweep) -> Figure {
 
 /// Contact angles against the shift (paper Fig. 2).
 pub fn contact_angles(sweep: &RigidSweep) -> Figure {
-    Figure::single(with_onsets(
-        Chart::new(
-            "Contact angles (track frame, roll included)",
-            SHIFT,
-            "gamma (rad)",
-        )
-        .series(Series::line("left", rigid_series(sweep, Side::Left, |_, c| c.gamma)).color(LEFT))
-        .series(
-            Series::line("right", rigid_series(sweep, Side::Right, |_, c| c.gamma))
-                .color(RIGHT)
-                .dashed(),
-        ),
+    Figure::single(left_right(
         sweep,
+        "Contact angles (track frame, roll included)",
+        "gamma (rad)",
+        |c| c.gamma,
     ))
 }
 
