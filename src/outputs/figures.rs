@@ -17,6 +17,12 @@ pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
 /// linking contact points are visible.
 const MAP_LIFT_MM: f64 = 8.0;
 
+/// The heaviest quasi-elastic patch moving farther than this between neighbouring
+/// positions has changed identity (another patch took over the weight): the line breaks
+/// there. Within a patch, locations move at most ~1 mm per 0.1 mm of shift (measured in
+/// `tests/quasi_elastic.rs`).
+const PATCH_SWITCH_MM: f64 = 1.5;
+
 const LEFT: usize = 0;
 const RIGHT: usize = 1;
 const RIGID: usize = 2;
@@ -186,6 +192,23 @@ fn rigid_series(
         {
             out.push((f64::NAN, f64::NAN));
         }
+    }
+    out
+}
+
+/// `(y_ws, s)` of the heaviest quasi-elastic patch of wheel `k`, broken where another patch
+/// takes over.
+fn heaviest_patch_series(q: &QuasiElasticSweep, k: usize) -> Vec<(f64, f64)> {
+    let mut out: Vec<(f64, f64)> = Vec::with_capacity(q.positions.len());
+    for p in &q.positions {
+        let s = p.sides[k].main().map_or(f64::NAN, |c| c.s);
+        if out
+            .last()
+            .is_some_and(|&(_, prev)| (s - prev).abs() > PATCH_SWITCH_MM)
+        {
+            out.push((f64::NAN, f64::NAN));
+        }
+        out.push((p.y_ws, s));
     }
     out
 }
@@ -406,11 +429,7 @@ pub fn contact_map(placement: &Placement, sweep: &RigidSweep) -> Figure {
 /// Rigid against quasi-elastic contact points (paper Fig. 4).
 pub fn quasi_elastic_points(sweep: &RigidSweep, q: &QuasiElasticSweep) -> Figure {
     let panel = |side: Side, k: usize| {
-        let main: Vec<(f64, f64)> = q
-            .positions
-            .iter()
-            .map(|p| (p.y_ws, p.sides[k].main().map_or(f64::NAN, |c| c.s)))
-            .collect();
+        let main = heaviest_patch_series(q, k);
         let second: Vec<(f64, f64)> = q
             .positions
             .iter()
@@ -483,11 +502,7 @@ pub fn epsilon_sensitivity(sweep: &RigidSweep, e: &EpsilonSweeps) -> Figure {
     )
     .series(Series::line("rigid", rigid_series(sweep, Side::Left, |_, c| c.s)).color(RIGID));
     for (i, (eps, q)) in e.runs.iter().enumerate() {
-        let pts = q
-            .positions
-            .iter()
-            .map(|p| (p.y_ws, p.sides[0].main().map_or(f64::NAN, |c| c.s)))
-            .collect();
+        let pts = heaviest_patch_series(q, 0);
         chart = chart
             .series(Series::line(format!("eps = {eps} mm"), pts).color([0, 1, 3, 4, 5, 6][i % 6]));
     }
