@@ -276,18 +276,8 @@ impl<'a> SideGap<'a> {
     /// minimum within [`COARSE_MARGIN_MM`] of the lowest, lowest first.
     pub fn basins(&self, pose: &SidePose, out: &mut Vec<Basin>) {
         out.clear();
-        // Only wheel samples that can lie above the rail: Y = delta + Yw +- |sin phi| |Zw|.
-        let (y_lo, y_hi) = self.pair.rail.y_range();
-        let reach = pose.sin.abs() * (self.pair.wheel.nominal_radius_mm() + 100.0) + 1.0;
-        let first = self
-            .coarse
-            .partition_point(|c| pose.delta + c[1] < y_lo - reach)
-            .saturating_sub(1);
-        let last = (self
-            .coarse
-            .partition_point(|c| pose.delta + c[1] <= y_hi + reach)
-            + 1)
-        .min(self.coarse.len());
+        // Only wheel samples that can lie above the rail.
+        let (first, last) = self.over_rail(pose);
         let coarse = &self.coarse[first..last];
         let n = coarse.len();
         if n == 0 {
@@ -335,27 +325,53 @@ impl<'a> SideGap<'a> {
     pub fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
         out.clear();
         let n = self.coarse.len();
+        // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
+        // not low, exactly as the table would answer.
+        let (first, last) = self.over_rail(pose);
+        let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
         let mut open: Option<usize> = None;
-        for i in 0..=n {
-            let low = i < n && {
-                let [_, yw, zw] = self.coarse[i];
-                let [y, z] = pose.apply(yw, zw);
-                self.table.height(y).is_some_and(|zr| z - zr < threshold)
-            };
+        let close = |first_low: usize, i: usize, out: &mut Vec<(f64, f64)>| {
+            let lo = self.coarse[first_low.saturating_sub(1)][0];
+            let hi = self.coarse[i.min(n - 1)][0];
+            match out.last_mut() {
+                Some(last) if last.1 >= lo => last.1 = hi,
+                _ => out.push((lo, hi)),
+            }
+        };
+        for (i, &[_, yw, zw]) in self.coarse[first..last].iter().enumerate() {
+            let i = i + first;
+            let y = delta + cos * yw - sin * zw;
+            let z = sin * yw + cos * zw;
+            let low = self.table.height(y).is_some_and(|zr| z - zr < threshold);
             match (low, open) {
                 (true, None) => open = Some(i),
-                (false, Some(first)) => {
-                    let lo = self.coarse[first.saturating_sub(1)][0];
-                    let hi = self.coarse[i.min(n - 1)][0];
-                    match out.last_mut() {
-                        Some(last) if last.1 >= lo => last.1 = hi,
-                        _ => out.push((lo, hi)),
-                    }
+                (false, Some(first_low)) => {
+                    close(first_low, i, out);
                     open = None;
                 }
                 _ => {}
             }
         }
+        if let Some(first_low) = open {
+            close(first_low, last, out);
+        }
+    }
+
+    /// The index range of the coarse samples that can lie above the rail at `pose`:
+    /// `Y = delta + Yw +- |sin phi| |Zw|`, with one sample more on each side.
+    fn over_rail(&self, pose: &SidePose) -> (usize, usize) {
+        let (y_lo, y_hi) = self.pair.rail.y_range();
+        let reach = pose.sin.abs() * (self.pair.wheel.nominal_radius_mm() + 100.0) + 1.0;
+        let first = self
+            .coarse
+            .partition_point(|c| pose.delta + c[1] < y_lo - reach)
+            .saturating_sub(1);
+        let last = (self
+            .coarse
+            .partition_point(|c| pose.delta + c[1] <= y_hi + reach)
+            + 1)
+        .min(self.coarse.len());
+        (first, last)
     }
 
     /// The minimum of the gap in a basin: safeguarded Newton on `dg/ds = 0` inside the

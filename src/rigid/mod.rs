@@ -239,7 +239,6 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     };
     let centre = solve(0.0, 0.0, &mut scratch);
     let mut positions = Vec::with_capacity(sweep_mm.len());
-    let mut theta = centre.roll;
     // Continue outwards from the position nearest the centre, so each start is close.
     let start = sweep_mm
         .iter()
@@ -247,23 +246,19 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
         .map_or(0, |(i, _)| i);
     let mut solved = vec![None; sweep_mm.len()];
+    let mut path = Continuation::new(centre.roll);
     for i in start..sweep_mm.len() {
-        let p = solve(sweep_mm[i], theta, &mut scratch);
-        theta = if p.stop == Stop::Converged {
-            p.roll
-        } else {
-            theta
-        };
+        let p = solve(sweep_mm[i], path.predict(sweep_mm[i]), &mut scratch);
+        path.push(&p);
         solved[i] = Some(p);
     }
-    theta = solved[start].map_or(0.0, |p: Position| p.roll);
+    // The backward half starts from the start position; the basins in the scratch belong
+    // to the far end of the forward half.
+    scratch.warm = false;
+    path = Continuation::new(solved[start].map_or(0.0, |p: Position| p.roll));
     for i in (0..start).rev() {
-        let p = solve(sweep_mm[i], theta, &mut scratch);
-        theta = if p.stop == Stop::Converged {
-            p.roll
-        } else {
-            theta
-        };
+        let p = solve(sweep_mm[i], path.predict(sweep_mm[i]), &mut scratch);
+        path.push(&p);
         solved[i] = Some(p);
     }
     positions.extend(solved.into_iter().flatten());
@@ -280,11 +275,48 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     }
 }
 
+/// Start values of the roll along the sweep: the last converged roll extrapolated linearly
+/// through the one before (a secant predictor), which leaves Newton a second-order error
+/// to remove instead of the roll change of a whole step.
+struct Continuation {
+    /// The last two converged `(y_ws, roll)`, newest first.
+    points: [Option<(f64, f64)>; 2],
+    fallback: f64,
+}
+
+impl Continuation {
+    fn new(roll: f64) -> Continuation {
+        Continuation {
+            points: [None, None],
+            fallback: roll,
+        }
+    }
+
+    fn predict(&self, y_ws: f64) -> f64 {
+        match self.points {
+            [Some((y1, t1)), Some((y0, t0))] if (y1 - y0).abs() > 0.0 => {
+                t1 + (t1 - t0) * (y_ws - y1) / (y1 - y0)
+            }
+            [Some((_, t1)), _] => t1,
+            _ => self.fallback,
+        }
+    }
+
+    fn push(&mut self, p: &Position) {
+        if p.stop == Stop::Converged {
+            self.points = [Some((p.y_ws, p.roll)), self.points[0]];
+        }
+    }
+}
+
 /// Buffers reused across positions (no allocation per position). The basins of the last
 /// solution start the next position (continuation): its scan at the solution verifies them.
 #[derive(Debug, Default)]
 struct Scratch {
     basins: [Vec<Basin>; 2],
+    /// The minima found in `basins` at the current pose, reused after a verification scan
+    /// at that same pose for the basins that contain them.
+    minima: [Vec<GapPoint>; 2],
     /// Whether `basins` holds the basins of a previous solution.
     warm: bool,
 }
@@ -293,19 +325,30 @@ struct Scratch {
 /// tolerance in another basin. Each basin is re-centred on its minimum, so that the next
 /// call (a nearby pose) starts there; a basin whose minimum another basin already found is
 /// dropped.
+///
+/// `minima` holds on entry the minima already known at this very pose (or nothing); a basin
+/// that contains one of them takes it instead of searching again. On return it holds the
+/// minima of the basins.
 fn side_minimum(
     side: &SideGap,
     pose: &SidePose,
     basins: &mut Vec<Basin>,
+    minima: &mut Vec<GapPoint>,
 ) -> Option<(GapPoint, Option<GapPoint>)> {
     let mut best: Option<GapPoint> = None;
     let mut second: Option<GapPoint> = None;
     let mut kept = 0;
+    let known = minima.len();
     for i in 0..basins.len() {
         let b = basins[i];
-        let Some(p) = side.minimum(b, None, pose) else {
+        let reuse = minima[..known]
+            .iter()
+            .find(|q| (b.0..=b.1).contains(&q.s))
+            .copied();
+        let Some(p) = reuse.or_else(|| side.minimum(b, None, pose)) else {
             continue;
         };
+        minima.push(p);
         let duplicate = basins[..kept]
             .iter()
             .any(|k| (0.5 * (k.0 + k.1) - p.s).abs() <= SAME_MINIMUM_MM);
@@ -329,6 +372,7 @@ fn side_minimum(
         }
     }
     basins.truncate(kept);
+    minima.drain(..known);
     best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
 }
 
@@ -353,6 +397,8 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
     };
     let mut theta = theta0;
     let mut scan = !scratch.warm;
+    // Whether this iteration re-examines the previous pose after a verification scan.
+    let mut verify = false;
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
     let mut iterations = 0;
     loop {
@@ -366,10 +412,17 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
             scan = false;
         }
         let [b0, b1] = &mut scratch.basins;
+        let [m0, m1] = &mut scratch.minima;
+        if !verify {
+            // The pose changed: nothing is known at it.
+            m0.clear();
+            m1.clear();
+        }
         let mins = [
-            side_minimum(&sides[0], &p[0], b0),
-            side_minimum(&sides[1], &p[1], b1),
+            side_minimum(&sides[0], &p[0], b0, m0),
+            side_minimum(&sides[1], &p[1], b1, m1),
         ];
+        verify = false;
         let (Some(left), Some(right)) = (mins[0], mins[1]) else {
             if !fresh {
                 // The warm basins may have slid off the rail: scan before giving up.
@@ -394,6 +447,7 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
             // where the basins were found may hold the lowest gap now. The bracket was built
             // on the old basins and is dropped.
             scan = true;
+            verify = true;
             (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
             continue;
         }
