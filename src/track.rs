@@ -363,12 +363,17 @@ impl PlacedRail {
         let (y_lo, y_hi) = self.y_range;
         let n = ((y_hi - y_lo) / INVERSE_TABLE_STEP_MM).ceil().max(1.0) as usize;
         let h = (y_hi - y_lo) / n as f64;
+        // Each entry starts from the tangent of the one before (from the linearised inverse
+        // at the first).
+        let mut guess = (y_lo - self.offset[0]) / self.cos;
         self.inverse = (0..=n)
             .map(|i| {
                 let y = if i == n { y_hi } else { y_lo + h * i as f64 };
-                let p = self.solve(y, (y - self.offset[0]) / self.cos);
+                let p = self.solve(y, guess);
                 let d1 = self.profile.eval(p.u)[1];
-                [p.u, 1.0 / (self.cos - self.sin * d1)]
+                let du_dy = 1.0 / (self.cos - self.sin * d1);
+                guess = p.u + h * du_dy;
+                [p.u, du_dy]
             })
             .collect();
         self.inverse_scale = 1.0 / h;
