@@ -158,6 +158,11 @@ pub struct PlacedRail {
     y_range: (f64, f64),
     gauge_point: [f64; 2],
     top: [f64; 2],
+    /// Start guesses for [`PlacedRail::at`]: `(u, du/dY)` at `Y = y_range.0 + i h`, with
+    /// `h` = [`INVERSE_TABLE_STEP_MM`] (at most); cubic Hermite interpolation between them.
+    inverse: Vec<[f64; 2]>,
+    /// `1 / h` of `inverse`.
+    inverse_scale: f64,
 }
 
 impl PlacedRail {
@@ -189,6 +194,8 @@ impl PlacedRail {
             y_range: (0.0, 0.0),
             gauge_point: [0.0, 0.0],
             top: [0.0, 0.0],
+            inverse: Vec::new(),
+            inverse_scale: 0.0,
         };
         let (lo, hi) = rail.profile.domain();
         let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
@@ -258,6 +265,7 @@ impl PlacedRail {
             rail.point_of(rail.surface.0)[0],
             rail.point_of(rail.surface.1)[0],
         );
+        rail.tabulate_inverse();
         Ok(rail)
     }
 
@@ -291,17 +299,41 @@ impl PlacedRail {
     /// The rail surface above the side-frame lateral position `y` (mm), or `None` outside
     /// [`PlacedRail::y_range`].
     ///
-    /// Solves `Y(u) = y` by Newton's method from the linearised inverse (2-3 steps to 1e-13 mm:
-    /// `Y(u)` is the profile rotated by a few hundredths of a radian).
+    /// Solves `Y(u) = y` by Newton's method from a tabulated inverse (one step to 1e-15 mm
+    /// on the arcs, two where the head turns steep: see [`INVERSE_TABLE_STEP_MM`]).
     #[inline]
     pub fn at(&self, y: f64) -> Option<RailPoint> {
         let (y_lo, y_hi) = self.y_range();
         if !(y_lo..=y_hi).contains(&y) {
             return None;
         }
+        Some(self.solve(y, self.guess(y)))
+    }
+
+    /// The start of the inversion at `y` (inside `y_range`): cubic Hermite interpolation of
+    /// the table of exact inverses.
+    #[inline]
+    fn guess(&self, y: f64) -> f64 {
+        let last = self.inverse.len() - 2;
+        let t = (y - self.y_range.0) * self.inverse_scale;
+        // `t >= 0` inside y_range, and the clamp keeps the last interval. Through i32 (the
+        // table is short): one conversion each way, where usize costs a dozen instructions.
+        let ti = (t as i32).min(last as i32);
+        let f = t - f64::from(ti);
+        let i = ti as usize;
+        let h = 1.0 / self.inverse_scale;
+        let ([u0, m0], [u1, m1]) = (self.inverse[i], self.inverse[i + 1]);
+        let g = 1.0 - f;
+        // Hermite basis in Horner-friendly form.
+        u0 * g * g * (1.0 + 2.0 * f) + u1 * f * f * (3.0 - 2.0 * f) + h * f * g * (m0 * g - m1 * f)
+    }
+
+    /// The rail point at `y` by Newton's method on `Y(u) = y` from `u`.
+    #[inline]
+    fn solve(&self, y: f64, u: f64) -> RailPoint {
         let target = y - self.offset[0];
         let (lo, hi) = self.surface;
-        let mut u = (target / self.cos).clamp(lo, hi);
+        let mut u = u.clamp(lo, hi);
         let mut value = self.profile.eval(u);
         for _ in 0..MAX_NEWTON_STEPS {
             let yu = self.cos * u - self.sin * value[0];
@@ -317,12 +349,34 @@ impl PlacedRail {
         let ty = self.cos - self.sin * d1;
         let tz = self.sin + self.cos * d1;
         // For the rotated curve (Y(u), Z(u)): Z'' = (Y'Z'' - Z'Y'')/Y'^3 = v''/Y'^3.
-        Some(RailPoint {
+        RailPoint {
             u,
             z: self.sin * u + self.cos * v + self.offset[1],
             slope: tz / ty,
             d2: d2 / (ty * ty * ty),
-        })
+        }
+    }
+
+    /// Fills the table of start guesses: exact inverses (from the linearised inverse, as
+    /// many Newton steps as needed) every `INVERSE_TABLE_STEP_MM` or less.
+    fn tabulate_inverse(&mut self) {
+        let (y_lo, y_hi) = self.y_range;
+        let n = ((y_hi - y_lo) / INVERSE_TABLE_STEP_MM).ceil().max(1.0) as usize;
+        let h = (y_hi - y_lo) / n as f64;
+        // Each entry starts from the tangent of the one before (from the linearised inverse
+        // at the first).
+        let mut guess = (y_lo - self.offset[0]) / self.cos;
+        self.inverse = (0..=n)
+            .map(|i| {
+                let y = if i == n { y_hi } else { y_lo + h * i as f64 };
+                let p = self.solve(y, guess);
+                let d1 = self.profile.eval(p.u)[1];
+                let du_dy = 1.0 / (self.cos - self.sin * d1);
+                guess = p.u + h * du_dy;
+                [p.u, du_dy]
+            })
+            .collect();
+        self.inverse_scale = 1.0 / h;
     }
 
     #[inline]
@@ -343,8 +397,15 @@ impl PlacedRail {
     }
 }
 
-/// Newton steps allowed when inverting the rotated rail; 2-3 are used.
+/// Newton steps allowed when inverting the rotated rail; 1-2 are used from the table, 3-4
+/// from the linearised inverse that fills it.
 const MAX_NEWTON_STEPS: usize = 8;
+/// Spacing of the table of start guesses of the rail inversion (mm). Away from the joints
+/// of the head, Hermite interpolation of `u(Y)` errs by far less than [`INVERSE_TOL_MM`], so
+/// the first Newton step already meets the tolerance (2 profile evaluations instead of 4
+/// from the linearised inverse); next to a joint, where `u''` jumps, and on the steep gauge
+/// corner a second step follows. The answer is the converged root either way.
+const INVERSE_TABLE_STEP_MM: f64 = 0.1;
 /// Step size after which the inversion of the rotated rail has converged (mm). Newton
 /// converges quadratically with a constant |Y''/2Y'| <= sin(angle) * kappa / 2 < 1e-2 1/mm,
 /// so after a step of 1e-7 mm the error is below 1e-16 mm.

@@ -101,6 +101,10 @@ impl GapPoint {
 struct RailTable {
     y0: f64,
     inv_step: f64,
+    /// Largest table coordinate `t = (y - y0) / step` inside the table (`z.len() - 2`).
+    t_max: f64,
+    /// Heights at `y0 + i step`, the last one repeated so that interpolation at `t_max`
+    /// reads a valid neighbour.
     z: Vec<f64>,
 }
 
@@ -109,15 +113,17 @@ impl RailTable {
         let (lo, hi) = rail.y_range();
         let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
         let step = (hi - lo) / n as f64;
-        let z = (0..=n)
+        let mut z: Vec<f64> = (0..=n)
             .map(|i| {
                 rail.at((lo + i as f64 * step).min(hi))
                     .map_or(f64::NAN, |p| p.z)
             })
             .collect();
+        z.push(z[n]);
         RailTable {
             y0: lo,
             inv_step: 1.0 / step,
+            t_max: n as f64,
             z,
         }
     }
@@ -126,19 +132,16 @@ impl RailTable {
     fn height(&self, y: f64) -> Option<f64> {
         let t = (y - self.y0) * self.inv_step;
         // Also rejects NaN.
-        if t.is_nan() || t < 0.0 {
+        if !(t >= 0.0 && t <= self.t_max) {
             return None;
         }
-        let i = t as usize;
-        if i + 1 >= self.z.len() {
-            return if i + 1 == self.z.len() && t <= i as f64 {
-                Some(self.z[i])
-            } else {
-                None
-            };
-        }
-        let f = t - i as f64;
-        Some(self.z[i] + f * (self.z[i + 1] - self.z[i]))
+        // Through i32 (the table is far shorter): one conversion each way, where usize
+        // would cost a dozen instructions for its saturation and sign handling.
+        let ti = t as i32;
+        let f = t - f64::from(ti);
+        let i = ti as usize;
+        let (a, b) = (self.z[i], self.z[i + 1]);
+        Some(a + f * (b - a))
     }
 }
 
@@ -160,6 +163,21 @@ pub struct SideGap<'a> {
 struct Tables {
     wheel: Vec<[f64; 3]>,
     rail: RailTable,
+}
+
+/// Keeps the coarse minimum `(g, i)` among the lowest `found.len()`.
+#[inline]
+fn record(found: &mut [(f64, usize); 16], count: &mut usize, g: f64, i: usize) {
+    if *count < found.len() {
+        found[*count] = (g, i);
+        *count += 1;
+    } else if let Some(worst) = found
+        .iter_mut()
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .filter(|w| w.0 > g)
+    {
+        *worst = (g, i);
+    }
 }
 
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
@@ -258,49 +276,37 @@ impl<'a> SideGap<'a> {
     /// minimum within [`COARSE_MARGIN_MM`] of the lowest, lowest first.
     pub fn basins(&self, pose: &SidePose, out: &mut Vec<Basin>) {
         out.clear();
-        // Only wheel samples that can lie above the rail: Y = delta + Yw +- |sin phi| |Zw|.
-        let (y_lo, y_hi) = self.pair.rail.y_range();
-        let reach = pose.sin.abs() * (self.pair.wheel.nominal_radius_mm() + 100.0) + 1.0;
-        let first = self
-            .coarse
-            .partition_point(|c| pose.delta + c[1] < y_lo - reach)
-            .saturating_sub(1);
-        let last = (self
-            .coarse
-            .partition_point(|c| pose.delta + c[1] <= y_hi + reach)
-            + 1)
-        .min(self.coarse.len());
+        // Only wheel samples that can lie above the rail.
+        let (first, last) = self.over_rail(pose);
         let coarse = &self.coarse[first..last];
         let n = coarse.len();
         if n == 0 {
             return;
         }
-        let gap = |i: usize| -> f64 {
-            let [_, yw, zw] = coarse[i];
-            let [y, z] = pose.apply(yw, zw);
-            self.table.height(y).map_or(f64::INFINITY, |zr| z - zr)
-        };
-        let mut lowest = f64::INFINITY;
-        let (mut prev, mut here) = (f64::INFINITY, gap(0));
+        let table = &self.table;
+        let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
+        // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
+        // minima within one wheel would be noise; the lowest are the ones refined).
         let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
         let mut count = 0;
-        for i in 0..n {
-            let next = if i + 1 < n { gap(i + 1) } else { f64::INFINITY };
-            if here.is_finite() && here <= prev && here <= next {
+        let mut lowest = f64::INFINITY;
+        // The gap of sample i is known when sample i + 1 is computed: `here` is sample i - 1.
+        let (mut prev, mut here) = (f64::INFINITY, f64::INFINITY);
+        for (i, &[_, yw, zw]) in coarse.iter().enumerate() {
+            let y = delta + cos * yw - sin * zw;
+            let z = sin * yw + cos * zw;
+            let next = table.height(y).map_or(f64::INFINITY, |zr| z - zr);
+            if here <= prev && here <= next && here < f64::INFINITY {
                 lowest = lowest.min(here);
-                if count < found.len() {
-                    found[count] = (here, i);
-                    count += 1;
-                } else if let Some(worst) = found
-                    .iter_mut()
-                    .max_by(|a, b| a.0.total_cmp(&b.0))
-                    .filter(|w| w.0 > here)
-                {
-                    *worst = (here, i);
-                }
+                record(&mut found, &mut count, here, i - 1);
             }
             prev = here;
             here = next;
+        }
+        // The last sample has no right neighbour.
+        if here <= prev && here < f64::INFINITY {
+            lowest = lowest.min(here);
+            record(&mut found, &mut count, here, n - 1);
         }
         let found = &mut found[..count];
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -319,27 +325,53 @@ impl<'a> SideGap<'a> {
     pub fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
         out.clear();
         let n = self.coarse.len();
+        // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
+        // not low, exactly as the table would answer.
+        let (first, last) = self.over_rail(pose);
+        let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
         let mut open: Option<usize> = None;
-        for i in 0..=n {
-            let low = i < n && {
-                let [_, yw, zw] = self.coarse[i];
-                let [y, z] = pose.apply(yw, zw);
-                self.table.height(y).is_some_and(|zr| z - zr < threshold)
-            };
+        let close = |first_low: usize, i: usize, out: &mut Vec<(f64, f64)>| {
+            let lo = self.coarse[first_low.saturating_sub(1)][0];
+            let hi = self.coarse[i.min(n - 1)][0];
+            match out.last_mut() {
+                Some(last) if last.1 >= lo => last.1 = hi,
+                _ => out.push((lo, hi)),
+            }
+        };
+        for (i, &[_, yw, zw]) in self.coarse[first..last].iter().enumerate() {
+            let i = i + first;
+            let y = delta + cos * yw - sin * zw;
+            let z = sin * yw + cos * zw;
+            let low = self.table.height(y).is_some_and(|zr| z - zr < threshold);
             match (low, open) {
                 (true, None) => open = Some(i),
-                (false, Some(first)) => {
-                    let lo = self.coarse[first.saturating_sub(1)][0];
-                    let hi = self.coarse[i.min(n - 1)][0];
-                    match out.last_mut() {
-                        Some(last) if last.1 >= lo => last.1 = hi,
-                        _ => out.push((lo, hi)),
-                    }
+                (false, Some(first_low)) => {
+                    close(first_low, i, out);
                     open = None;
                 }
                 _ => {}
             }
         }
+        if let Some(first_low) = open {
+            close(first_low, last, out);
+        }
+    }
+
+    /// The index range of the coarse samples that can lie above the rail at `pose`:
+    /// `Y = delta + Yw +- |sin phi| |Zw|`, with one sample more on each side.
+    fn over_rail(&self, pose: &SidePose) -> (usize, usize) {
+        let (y_lo, y_hi) = self.pair.rail.y_range();
+        let reach = pose.sin.abs() * (self.pair.wheel.nominal_radius_mm() + 100.0) + 1.0;
+        let first = self
+            .coarse
+            .partition_point(|c| pose.delta + c[1] < y_lo - reach)
+            .saturating_sub(1);
+        let last = (self
+            .coarse
+            .partition_point(|c| pose.delta + c[1] <= y_hi + reach)
+            + 1)
+        .min(self.coarse.len());
+        (first, last)
     }
 
     /// The minimum of the gap in a basin: safeguarded Newton on `dg/ds = 0` inside the
@@ -369,36 +401,43 @@ impl<'a> SideGap<'a> {
     }
 
     fn newton_in(&self, mut lo: f64, mut hi: f64, s0: f64, pose: &SidePose) -> Option<GapPoint> {
-        // Keep the bracket ends where the gap is defined.
-        let mut p_lo = self.at(lo, pose);
-        let mut p_hi = self.at(hi, pose);
-        if p_lo.is_none() && p_hi.is_none() {
-            return None;
-        }
-        let mut p = self.at(s0, pose).or(p_lo).or(p_hi)?;
+        // The bracket ends are evaluated only when needed: to start off the rail, to know
+        // which side of the rail a step left, or as candidates when the iteration did not
+        // end at a smooth interior minimum.
+        let mut p_lo: Option<Option<GapPoint>> = None;
+        let mut p_hi: Option<Option<GapPoint>> = None;
+        let mut p = match self.at(s0, pose) {
+            Some(p) => p,
+            None => {
+                let a = self.at(lo, pose);
+                let b = self.at(hi, pose);
+                (p_lo, p_hi) = (Some(a), Some(b));
+                a.or(b)?
+            }
+        };
+        let mut smooth = false;
         for _ in 0..LOCAL_MAX_ITER {
             // Shrink the bracket with the sign of the derivative (minimum side).
             if p.dg > 0.0 {
                 hi = p.s;
-                p_hi = Some(p);
+                p_hi = Some(Some(p));
             } else {
                 lo = p.s;
-                p_lo = Some(p);
+                p_lo = Some(Some(p));
             }
             let newton = p.s - p.dg / p.ddg;
-            let next = if p.ddg > 0.0 && newton > lo && newton < hi {
-                newton
-            } else {
-                0.5 * (lo + hi)
-            };
+            let is_newton = p.ddg > 0.0 && newton > lo && newton < hi;
+            let next = if is_newton { newton } else { 0.5 * (lo + hi) };
             if (next - p.s).abs() < LOCAL_TOL_MM || hi - lo < LOCAL_TOL_MM {
+                smooth = is_newton && (next - p.s).abs() < LOCAL_TOL_MM;
                 break;
             }
             p = match self.at(next, pose) {
                 Some(q) => q,
                 None => {
                     // Left the rail: the minimum lies on the defined side.
-                    if p_lo.is_none() {
+                    let lo_defined = *p_lo.get_or_insert_with(|| self.at(lo, pose));
+                    if lo_defined.is_none() {
                         lo = next;
                     } else {
                         hi = next;
@@ -407,10 +446,17 @@ impl<'a> SideGap<'a> {
                 }
             };
         }
+        if smooth {
+            // A Newton step converged to an interior minimum of the smooth gap: the bracket
+            // ends lie higher (they bound a basin of the coarse scan around it).
+            return Some(p);
+        }
         // The bracket ends are candidates too (a minimum at a value jump of the profile, or
         // at the end of the rail), but only when clearly lower: gaps near -r0 = -460 mm
         // resolve to about 1e-13 mm, and an end point "lower" by rounding would replace the
         // Newton solution by a point 1e-9 mm away from it.
+        let p_lo = p_lo.unwrap_or_else(|| self.at(lo, pose));
+        let p_hi = p_hi.unwrap_or_else(|| self.at(hi, pose));
         let mut best = p;
         for q in [p_lo, p_hi].into_iter().flatten() {
             if q.g < best.g - END_PREFERENCE_MM {

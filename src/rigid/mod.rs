@@ -239,7 +239,6 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     };
     let centre = solve(0.0, 0.0, &mut scratch);
     let mut positions = Vec::with_capacity(sweep_mm.len());
-    let mut theta = centre.roll;
     // Continue outwards from the position nearest the centre, so each start is close.
     let start = sweep_mm
         .iter()
@@ -247,28 +246,26 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
         .map_or(0, |(i, _)| i);
     let mut solved = vec![None; sweep_mm.len()];
+    let mut path = Continuation::new(centre.roll);
     for i in start..sweep_mm.len() {
-        let p = solve(sweep_mm[i], theta, &mut scratch);
-        theta = if p.stop == Stop::Converged {
-            p.roll
-        } else {
-            theta
-        };
+        let p = solve(sweep_mm[i], path.predict(sweep_mm[i]), &mut scratch);
+        path.push(&p);
         solved[i] = Some(p);
     }
-    theta = solved[start].map_or(0.0, |p: Position| p.roll);
+    // The backward half starts from the start position; the basins in the scratch belong
+    // to the far end of the forward half.
+    scratch.warm = false;
+    path = Continuation::new(solved[start].map_or(0.0, |p: Position| p.roll));
     for i in (0..start).rev() {
-        let p = solve(sweep_mm[i], theta, &mut scratch);
-        theta = if p.stop == Stop::Converged {
-            p.roll
-        } else {
-            theta
-        };
+        let p = solve(sweep_mm[i], path.predict(sweep_mm[i]), &mut scratch);
+        path.push(&p);
         solved[i] = Some(p);
     }
     positions.extend(solved.into_iter().flatten());
-    let jumps = find_jumps(&positions, |y, theta0| {
-        solve(y, theta0, &mut Scratch::default())
+    // Each bisection starts cold, then continues from its previous midpoint.
+    let jumps = find_jumps(&positions, |y, theta0, cold| {
+        scratch.warm &= !cold;
+        solve(y, theta0, &mut scratch)
     });
     RigidSweep {
         solver,
@@ -278,29 +275,88 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     }
 }
 
+/// Start values of the roll along the sweep: the last converged roll extrapolated linearly
+/// through the one before (a secant predictor), which leaves Newton a second-order error
+/// to remove instead of the roll change of a whole step.
+struct Continuation {
+    /// The last two converged `(y_ws, roll)`, newest first.
+    points: [Option<(f64, f64)>; 2],
+    fallback: f64,
+}
+
+impl Continuation {
+    fn new(roll: f64) -> Continuation {
+        Continuation {
+            points: [None, None],
+            fallback: roll,
+        }
+    }
+
+    fn predict(&self, y_ws: f64) -> f64 {
+        match self.points {
+            [Some((y1, t1)), Some((y0, t0))] if (y1 - y0).abs() > 0.0 => {
+                t1 + (t1 - t0) * (y_ws - y1) / (y1 - y0)
+            }
+            [Some((_, t1)), _] => t1,
+            _ => self.fallback,
+        }
+    }
+
+    fn push(&mut self, p: &Position) {
+        if p.stop == Stop::Converged {
+            self.points = [Some((p.y_ws, p.roll)), self.points[0]];
+        }
+    }
+}
+
 /// Buffers reused across positions (no allocation per position). The basins of the last
 /// solution start the next position (continuation): its scan at the solution verifies them.
 #[derive(Debug, Default)]
 struct Scratch {
     basins: [Vec<Basin>; 2],
+    /// The minima found in `basins` at the current pose, reused after a verification scan
+    /// at that same pose for the basins that contain them.
+    minima: [Vec<GapPoint>; 2],
     /// Whether `basins` holds the basins of a previous solution.
     warm: bool,
 }
 
 /// The lowest minimum of one side over its basins, and a second one within the two-point
-/// tolerance in another basin.
+/// tolerance in another basin. Each basin is re-centred on its minimum, so that the next
+/// call (a nearby pose) starts there; a basin whose minimum another basin already found is
+/// dropped.
+///
+/// `minima` holds on entry the minima already known at this very pose (or nothing); a basin
+/// that contains one of them takes it instead of searching again. On return it holds the
+/// minima of the basins.
 fn side_minimum(
     side: &SideGap,
     pose: &SidePose,
-    basins: &[Basin],
-    hint: Option<f64>,
+    basins: &mut Vec<Basin>,
+    minima: &mut Vec<GapPoint>,
 ) -> Option<(GapPoint, Option<GapPoint>)> {
     let mut best: Option<GapPoint> = None;
     let mut second: Option<GapPoint> = None;
-    for &b in basins {
-        let Some(p) = side.minimum(b, hint, pose) else {
+    let mut kept = 0;
+    let known = minima.len();
+    for i in 0..basins.len() {
+        let b = basins[i];
+        let reuse = minima[..known]
+            .iter()
+            .find(|q| (b.0..=b.1).contains(&q.s))
+            .copied();
+        let Some(p) = reuse.or_else(|| side.minimum(b, None, pose)) else {
             continue;
         };
+        minima.push(p);
+        let duplicate = basins[..kept]
+            .iter()
+            .any(|k| (0.5 * (k.0 + k.1) - p.s).abs() <= SAME_MINIMUM_MM);
+        if !duplicate {
+            let half = 0.5 * (b.1 - b.0);
+            basins[kept] = (p.s - half, p.s + half);
+            kept += 1;
+        }
         match best {
             Some(q) if p.g >= q.g => {
                 if (p.s - q.s).abs() > gap::SAME_BASIN_MM && second.is_none_or(|r| p.g < r.g) {
@@ -315,15 +371,23 @@ fn side_minimum(
             }
         }
     }
+    basins.truncate(kept);
+    minima.drain(..known);
     best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
 }
 
-/// Roll change after which the default solver scans for basins again (rad): wheel points
-/// move by about r0 * 2e-5 = 0.01 mm, well inside the bracket of a basin.
-const RESCAN_ROLL_RAD: f64 = 2e-5;
+/// Two basins whose minima lie this close have slid onto the same minimum; one is dropped
+/// (mm). Far above the local tolerance (1e-11 mm), far below any distance between two
+/// distinct minima of a profile (joints are millimetres apart).
+const SAME_MINIMUM_MM: f64 = 1e-6;
 /// A bracket on the roll narrower than this has collapsed (rad).
 const BRACKET_COLLAPSE_RAD: f64 = 1e-15;
 
+/// Newton on the roll with the exact derivative of `F = m_L - m_R`, safeguarded by a
+/// bracket. The minima are followed in the basins of the previous solution (or of a scan
+/// at `theta0` when there are none); a root is accepted only when a scan at that very pose
+/// found the basins it was computed from (the global check), otherwise the scan is made
+/// there and the iteration goes on with its basins.
 fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scratch) -> Position {
     let poses = |theta: f64| {
         [
@@ -332,36 +396,42 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
         ]
     };
     let mut theta = theta0;
-    // Warm basins came from the previous position's verified solution: treat them as
-    // scanned at the start roll (they are verified again at the solution).
-    let mut scanned_at: Option<f64> = scratch.warm.then_some(theta0);
+    let mut scan = !scratch.warm;
+    // Whether this iteration re-examines the previous pose after a verification scan.
+    let mut verify = false;
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    let mut hints: [Option<f64>; 2] = [None, None];
     let mut iterations = 0;
     loop {
         iterations += 1;
         let p = poses(theta);
-        let fresh = scanned_at.is_none_or(|t| (theta - t).abs() > RESCAN_ROLL_RAD);
-        if fresh {
+        let fresh = scan;
+        if scan {
             for k in 0..2 {
                 sides[k].basins(&p[k], &mut scratch.basins[k]);
             }
-            scanned_at = Some(theta);
+            scan = false;
+        }
+        let [b0, b1] = &mut scratch.basins;
+        let [m0, m1] = &mut scratch.minima;
+        if !verify {
+            // The pose changed: nothing is known at it.
+            m0.clear();
+            m1.clear();
         }
         let mins = [
-            side_minimum(&sides[0], &p[0], &scratch.basins[0], hints[0]),
-            side_minimum(&sides[1], &p[1], &scratch.basins[1], hints[1]),
+            side_minimum(&sides[0], &p[0], b0, m0),
+            side_minimum(&sides[1], &p[1], b1, m1),
         ];
+        verify = false;
         let (Some(left), Some(right)) = (mins[0], mins[1]) else {
             if !fresh {
                 // The warm basins may have slid off the rail: scan before giving up.
-                scanned_at = None;
+                scan = true;
                 continue;
             }
             scratch.warm = false;
             return no_contact(y_ws, theta, iterations);
         };
-        hints = [Some(left.0.s), Some(right.0.s)];
         let f = left.0.g - right.0.g;
         let done = |stop: Stop| {
             let mut pos = finish(sides, y_ws, theta, [left, right], iterations, f);
@@ -374,9 +444,10 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
                 return done(Stop::Converged);
             }
             // Verify against a scan at the solution: a basin that was not a coarse minimum
-            // where the scan was made may hold the lowest gap now. The bracket was built on
-            // the old basins and is dropped.
-            scanned_at = None;
+            // where the basins were found may hold the lowest gap now. The bracket was built
+            // on the old basins and is dropped.
+            scan = true;
+            verify = true;
             (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
             continue;
         }
@@ -494,7 +565,11 @@ fn finish(
 }
 
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined by bisection.
-fn find_jumps(positions: &[Position], mut solve: impl FnMut(f64, f64) -> Position) -> Vec<Jump> {
+/// `solve(y_ws, theta0, cold)` solves one position, `cold` at the first of a bisection.
+fn find_jumps(
+    positions: &[Position],
+    mut solve: impl FnMut(f64, f64, bool) -> Position,
+) -> Vec<Jump> {
     let mut jumps = Vec::new();
     for w in positions.windows(2) {
         for side in [Side::Left, Side::Right] {
@@ -505,8 +580,10 @@ fn find_jumps(positions: &[Position], mut solve: impl FnMut(f64, f64) -> Positio
                 continue;
             }
             let (mut pa, mut pb) = (w[0], w[1]);
+            let mut cold = true;
             while pb.y_ws - pa.y_ws > JUMP_REFINE_MM {
-                let mid = solve(0.5 * (pa.y_ws + pb.y_ws), pa.roll);
+                let mid = solve(0.5 * (pa.y_ws + pb.y_ws), pa.roll, cold);
+                cold = false;
                 let Some(m) = mid.side(side) else { break };
                 let sa = pa.side(side).map_or(f64::NAN, |c| c.s);
                 let sb = pb.side(side).map_or(f64::NAN, |c| c.s);
