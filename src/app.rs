@@ -198,57 +198,31 @@ fn report(scene_path: &Path, out: Option<&Path>, timings: bool) -> Result<ExitCo
 }
 
 /// The tolerances of golden comparisons. The solvers converge to 1e-9 or better, so
-/// anything beyond these bounds is a real change of the results:
-/// lengths 1e-6 mm (one nanometre; CSVs carry 10 significant digits, 1e-7 mm on a
-/// track-frame position), angles and curvatures 1e-9, pressures and Wickens' ratios
-/// (divided by small shifts) 1e-6 relative, iteration counts exact.
+/// anything beyond these bounds is a real change of the results: lengths 1e-4 mm (a tenth
+/// of a micrometre: where the contact is nearly conformal, as at the S1002 flange root
+/// against the R13 gauge corner near y_ws = 5.5 mm, the gap's curvature is 1e-5 1/mm and a
+/// residual of 1e-11 mm fixes the contact point only to about 1e-5 mm; CSVs carry 10
+/// significant digits, 1e-7 mm on a track-frame position); roll 1e-9 rad (well conditioned
+/// everywhere); contact angles and slopes 1e-5 (at such a contact the angle follows the
+/// point on a curved surface: 1e-5 mm on R13 is 8e-7 rad); curvatures at contact points 1e-6
+/// 1/mm (they follow the point along a polynomial section: 6.5e-8 measured at 5.5 mm),
+/// other curvatures 1e-9; pressures
+/// and Wickens' ratios (divided by small shifts) 1e-6 relative; iteration counts exact.
 pub fn golden_policy() -> TolerancePolicy {
+    let abs = |abs: f64| Tolerance { abs, rel: 0.0 };
+    let rel = |rel: f64| Tolerance { abs: 0.0, rel };
     TolerancePolicy::new(Tolerance {
         abs: 1e-12,
         rel: 1e-9,
     })
-    .suffix(
-        "_mm",
-        Tolerance {
-            abs: 1e-6,
-            rel: 0.0,
-        },
-    )
-    .suffix(
-        "_rad",
-        Tolerance {
-            abs: 1e-9,
-            rel: 0.0,
-        },
-    )
-    .suffix(
-        "_per_mm",
-        Tolerance {
-            abs: 1e-9,
-            rel: 0.0,
-        },
-    )
-    .suffix(
-        "tan_gamma",
-        Tolerance {
-            abs: 1e-9,
-            rel: 0.0,
-        },
-    )
-    .suffix(
-        "_MPa",
-        Tolerance {
-            abs: 0.0,
-            rel: 1e-6,
-        },
-    )
-    .suffix(
-        "_N",
-        Tolerance {
-            abs: 0.0,
-            rel: 1e-9,
-        },
-    )
+    .suffix("_mm", abs(1e-4))
+    .suffix("_rad", abs(1e-9))
+    .suffix("_gamma_rad", abs(1e-5))
+    .suffix("tan_gamma", abs(1e-5))
+    .suffix("_per_mm", abs(1e-9))
+    .suffix("_curvature_per_mm", abs(1e-6))
+    .suffix("_MPa", rel(1e-6))
+    .suffix("_N", rel(1e-9))
     .column(
         "lambda",
         Tolerance {
@@ -270,7 +244,7 @@ pub fn golden_policy() -> TolerancePolicy {
             rel: 1e-6,
         },
     )
-    .column("iterations", Tolerance { abs: 0.0, rel: 0.0 })
+    .column("iterations", abs(0.0))
     .key_column("y_ws_mm")
 }
 

@@ -296,6 +296,22 @@ impl PlacedRail {
         self.to_side(self.rotated(u))
     }
 
+    /// The placed rail surface at the profile coordinate `u`: its point, slope `dZ/dY` and
+    /// curvature, with the section on the field side of `u` at a joint (as the profile's
+    /// own evaluation), whatever the slope (steep flanks included).
+    pub fn surface_at(&self, u: f64) -> RailPoint {
+        let [v, d1, d2] = self.profile.eval(u);
+        let ty = self.cos - self.sin * d1;
+        let tz = self.sin + self.cos * d1;
+        let p = self.to_side([self.cos * u - self.sin * v, self.sin * u + self.cos * v]);
+        RailPoint {
+            u,
+            z: p[1],
+            slope: tz / ty,
+            d2: d2 / (ty * ty * ty),
+        }
+    }
+
     /// The rail surface above the side-frame lateral position `y` (mm), or `None` outside
     /// [`PlacedRail::y_range`].
     ///

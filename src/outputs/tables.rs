@@ -40,19 +40,20 @@ pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> 
     let mut z = Vec::with_capacity(rows.len());
     let mut slope = Vec::with_capacity(rows.len());
     let mut curvature = Vec::with_capacity(rows.len());
+    let (y_lo, y_hi) = rail.y_range();
     for r in &rows {
-        let p = rail.point_of(r[0]);
-        y.push(p[0]);
-        z.push(p[1]);
-        match rail.at(p[0]) {
-            Some(q) if (q.u - r[0]).abs() < 1e-6 => {
-                slope.push(q.slope);
-                curvature.push(q.curvature());
-            }
-            _ => {
-                slope.push(f64::NAN);
-                curvature.push(f64::NAN);
-            }
+        let q = rail.surface_at(r[0]);
+        let y_side = rail.point_of(r[0])[0];
+        y.push(y_side);
+        z.push(q.z);
+        // Only the running surface has a slope that Z(Y) can carry; the flanks beyond it
+        // are drawn but not used by the contact search.
+        if (y_lo..=y_hi).contains(&y_side) {
+            slope.push(q.slope);
+            curvature.push(q.curvature());
+        } else {
+            slope.push(f64::NAN);
+            curvature.push(f64::NAN);
         }
     }
     Table::builder()
