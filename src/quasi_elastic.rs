@@ -29,15 +29,41 @@ use crate::track::{Placement, Side};
 pub const DEFAULT_EPSILON_MM: f64 = 0.01;
 /// Integrals stop where `(d - d_min) / eps` exceeds this: `exp(-37) = 8.5e-17`.
 pub const DEFAULT_CUTOFF: f64 = 37.0;
-/// Largest quadrature step in the wheel coordinate (mm).
+/// Largest step of the trapezoid variant in the wheel coordinate (mm).
 pub const DEFAULT_MAX_STEP_MM: f64 = 0.05;
-/// Steps per weight width `sqrt(eps / d'')` at the rigid contact point.
-const STEPS_PER_WIDTH: f64 = 8.0;
+/// Trapezoid steps per weight width `sqrt(eps / d'')` at the rigid contact point.
+const TRAPEZOID_STEPS_PER_WIDTH: f64 = 8.0;
 /// Smallest quadrature step wanted (mm): bounds the cost where `eps / d''` is tiny.
 const MIN_STEP_MM: f64 = 1e-4;
 /// Local minima of the gap separated by a barrier lower than `BARRIER_EPS * eps` above the
 /// higher of the two belong to one patch: the weight barely dips between them.
 const BARRIER_EPS: f64 = 1.0;
+
+/// How the weighted integrals are evaluated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Quadrature {
+    /// 8-point Gauss-Legendre panels of two weight widths on each smooth piece of the
+    /// integrand: the pieces end at the wheel's and the rail's section joints (where
+    /// curvatures jump) and at the barriers between patches. Default.
+    GaussLegendre,
+    /// Trapezoid sums on a fixed grid in `s`, the step halved from `max_step_mm` until it
+    /// resolves the weight's width (the paper's kind of quadrature on tabulated data): only
+    /// first order where a curvature jumps inside the patch.
+    Trapezoid {
+        /// Largest step (mm).
+        max_step_mm: f64,
+    },
+}
+
+impl Quadrature {
+    /// Name used in scene files and tables.
+    pub fn name(self) -> String {
+        match self {
+            Quadrature::GaussLegendre => "gauss_legendre".into(),
+            Quadrature::Trapezoid { max_step_mm } => format!("trapezoid {max_step_mm} mm"),
+        }
+    }
+}
 
 /// Settings of the quasi-elastic search.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,8 +72,8 @@ pub struct Settings {
     pub epsilon_mm: f64,
     /// Cut-off of the weight, in units of `eps`.
     pub cutoff: f64,
-    /// Largest quadrature step (mm).
-    pub max_step_mm: f64,
+    /// Quadrature.
+    pub quadrature: Quadrature,
 }
 
 impl Default for Settings {
@@ -55,7 +81,7 @@ impl Default for Settings {
         Settings {
             epsilon_mm: DEFAULT_EPSILON_MM,
             cutoff: DEFAULT_CUTOFF,
-            max_step_mm: DEFAULT_MAX_STEP_MM,
+            quadrature: Quadrature::GaussLegendre,
         }
     }
 }
@@ -196,6 +222,44 @@ struct Work {
     nodes: Vec<f64>,
     gaps: Vec<f64>,
     fields: Vec<[f64; FIELDS]>,
+    breaks: Vec<(f64, bool)>,
+}
+
+/// Nodes of the 8-point Gauss-Legendre rule on [-1, 1] (positive half; symmetric).
+const GL8_X: [f64; 4] = [
+    0.183_434_642_495_649_8,
+    0.525_532_409_916_329,
+    0.796_666_477_413_626_7,
+    0.960_289_856_497_536_3,
+];
+/// Weights of the 8-point Gauss-Legendre rule, matching [`GL8_X`].
+const GL8_W: [f64; 4] = [
+    0.362_683_783_378_362,
+    0.313_706_645_877_887_3,
+    0.222_381_034_453_374_5,
+    0.101_228_536_290_376_3,
+];
+/// Panel length of the Gauss-Legendre quadrature in weight widths `sqrt(eps / d'')`: the
+/// 8-point rule integrates a Gaussian over two widths to about 1e-13 relative.
+const PANEL_WIDTHS: f64 = 2.0;
+/// Bounds of the weight width used to size panels and the barrier scan (mm): below, the
+/// contact is so stiff that 1 micrometre panels are plenty; above (nearly conformal
+/// contact, d'' -> 0) panels of 2 mm still follow the profile's own variation.
+const WIDTH_BOUNDS_MM: (f64, f64) = (1e-3, 1.0);
+/// Samples of the gap per weight width when looking for barriers between patches.
+const BARRIER_SAMPLES_PER_WIDTH: f64 = 4.0;
+
+fn fields_of(side: &SideGap, p: &crate::rigid::gap::GapPoint) -> [f64; FIELDS] {
+    [
+        p.s,
+        side.sign * p.y,
+        p.rail.z,
+        -p.wheel.z - side.wheel().nominal_radius_mm(),
+        p.wheel.slope,
+        p.rail.slope,
+        p.wheel.curvature(),
+        p.rail.curvature(),
+    ]
 }
 
 fn side_average(
@@ -212,15 +276,10 @@ fn side_average(
     let Some(at_rigid) = side.at(s_rigid, &pose) else {
         return SideResult::default();
     };
-    // The rigid minimum, and the quadrature step from the weight's width there.
+    // Gaps are measured from the rigid minimum of this wheel: one reference for every
+    // region and patch, so that their weights compare.
     let d_min = at_rigid.g + axle_height;
     let width = (eps / at_rigid.ddg.max(1e-12)).sqrt();
-    // The step is the largest step halved until it resolves the width, and the nodes are
-    // its multiples: a fixed grid, the same on both sides of a symmetric wheelset (a grid
-    // anchored at the rigid point would move with its last-digit differences).
-    let wanted = (width / STEPS_PER_WIDTH).max(MIN_STEP_MM);
-    let halvings = (settings.max_step_mm / wanted).log2().ceil().max(0.0);
-    let step = settings.max_step_mm / halvings.exp2();
     let limit = settings.cutoff * eps;
     // Regions where the gap may be below the cut-off; the coarse gap errs by less than
     // the margin (see rigid::gap::COARSE_MARGIN_MM).
@@ -229,38 +288,54 @@ fn side_average(
         at_rigid.g + limit + crate::rigid::gap::COARSE_MARGIN_MM,
         &mut work.regions,
     );
-    let mut patches = Vec::new();
-    let mut total_weight = 0.0;
+    let mut patches: Vec<Average<FIELDS>> = Vec::new();
     let regions = std::mem::take(&mut work.regions);
     for &(lo, hi) in &regions {
-        work.nodes.clear();
-        work.gaps.clear();
-        work.fields.clear();
-        let k_lo = (lo / step).floor() as i64;
-        let k_hi = (hi / step).ceil() as i64;
-        for k in k_lo..=k_hi {
-            let s = k as f64 * step;
-            let Some(p) = side.at(s, &pose) else { continue };
-            let d = p.g + axle_height - d_min;
-            work.nodes.push(s);
-            work.gaps.push(d);
-            work.fields.push([
-                s,
-                side.sign * p.y,
-                p.rail.z,
-                -p.wheel.z - side.wheel().nominal_radius_mm(),
-                p.wheel.slope,
-                p.rail.slope,
-                p.wheel.curvature(),
-                p.rail.curvature(),
-            ]);
-        }
-        for a in average(&work.nodes, &work.gaps, &work.fields, eps, settings.cutoff) {
-            total_weight += a.weight;
-            patches.push(a);
+        match settings.quadrature {
+            Quadrature::GaussLegendre => {
+                gauss_region(
+                    side,
+                    &pose,
+                    axle_height,
+                    d_min,
+                    width,
+                    settings,
+                    (lo, hi),
+                    work,
+                    &mut patches,
+                );
+            }
+            Quadrature::Trapezoid { max_step_mm } => {
+                // The step is the largest step halved until it resolves the width, and the
+                // nodes are its multiples: a fixed grid, the same on both sides of a
+                // symmetric wheelset.
+                let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
+                let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
+                let step = max_step_mm / halvings.exp2();
+                work.nodes.clear();
+                work.gaps.clear();
+                work.fields.clear();
+                let k_lo = (lo / step).floor() as i64;
+                let k_hi = (hi / step).ceil() as i64;
+                for k in k_lo..=k_hi {
+                    let s = k as f64 * step;
+                    let Some(p) = side.at(s, &pose) else { continue };
+                    work.nodes.push(s);
+                    work.gaps.push(p.g + axle_height - d_min);
+                    work.fields.push(fields_of(side, &p));
+                }
+                patches.extend(average(
+                    &work.nodes,
+                    &work.gaps,
+                    &work.fields,
+                    eps,
+                    settings.cutoff,
+                ));
+            }
         }
     }
     work.regions = regions;
+    let total_weight: f64 = patches.iter().map(|a| a.weight).sum();
     let r0 = side.wheel().nominal_radius_mm();
     let phi = side.sign * roll;
     let mut out: Vec<Patch> = patches
@@ -286,6 +361,177 @@ fn side_average(
     SideResult { patches: out }
 }
 
+/// Integrates one low region by Gauss-Legendre panels on the smooth pieces between the
+/// wheel's section joints, the rail's section joints (mapped onto the wheel) and the
+/// barriers that separate patches; pushes one [`Average`] per patch.
+#[allow(clippy::too_many_arguments)]
+fn gauss_region(
+    side: &SideGap,
+    pose: &SidePose,
+    axle_height: f64,
+    d_min: f64,
+    width: f64,
+    settings: &Settings,
+    (lo, hi): (f64, f64),
+    work: &mut Work,
+    patches: &mut Vec<Average<FIELDS>>,
+) {
+    let eps = settings.epsilon_mm;
+    let width = width.clamp(WIDTH_BOUNDS_MM.0, WIDTH_BOUNDS_MM.1);
+    let gap = |s: f64| side.at(s, pose).map(|p| p.g + axle_height - d_min);
+    // Breaks: (s, separates patches).
+    let breaks = &mut work.breaks;
+    breaks.clear();
+    breaks.push((lo, true));
+    breaks.push((hi, true));
+    for j in side.wheel().profile().joints() {
+        if j > lo && j < hi {
+            breaks.push((j, false));
+        }
+    }
+    // Rail joints: the wheel coordinate whose point lies above the joint, Y(s) = Y_joint
+    // (Newton: dY/ds = cos + sin F', close to 1).
+    let rail = &side.pair.rail;
+    let y_of = |s: f64| {
+        let w = side.wheel().at(s);
+        let [y, _] = pose.apply(w.y, w.z);
+        (y, pose.cos - pose.sin * w.slope)
+    };
+    for u in rail.profile().joints() {
+        let target = rail.point_of(u)[0];
+        let mut s = 0.5 * (lo + hi);
+        for _ in 0..20 {
+            let (y, dy) = y_of(s);
+            let step = (y - target) / dy;
+            s -= step;
+            if step.abs() < 1e-12 || !(s > lo - 1.0 && s < hi + 1.0) {
+                break;
+            }
+        }
+        if s > lo && s < hi {
+            breaks.push((s, false));
+        }
+    }
+    // Barriers: sample the gap, find local maxima that rise more than BARRIER_EPS * eps
+    // above both neighbouring minima, refine each on the sign of dg/ds.
+    let n = (((hi - lo) / width) * BARRIER_SAMPLES_PER_WIDTH)
+        .ceil()
+        .max(2.0) as usize;
+    work.nodes.clear();
+    work.gaps.clear();
+    for i in 0..=n {
+        let s = lo + (hi - lo) * i as f64 / n as f64;
+        if let Some(d) = gap(s) {
+            work.nodes.push(s);
+            work.gaps.push(d);
+        }
+    }
+    for i in barrier_maxima(&work.gaps, BARRIER_EPS * eps) {
+        let (mut a, mut b) = (work.nodes[i - 1], work.nodes[i + 1]);
+        for _ in 0..60 {
+            let m = 0.5 * (a + b);
+            match side.at(m, pose) {
+                Some(p) if p.dg < 0.0 => b = m,
+                _ => a = m,
+            }
+        }
+        breaks.push((0.5 * (a + b), true));
+    }
+    breaks.sort_by(|x, y| x.0.total_cmp(&y.0));
+
+    let mut current = Accumulator::default();
+    for k in 0..breaks.len() - 1 {
+        let (a, b) = (breaks[k].0, breaks[k + 1].0);
+        if b - a > 1e-12 {
+            let panels = ((b - a) / (PANEL_WIDTHS * width)).ceil().max(1.0) as usize;
+            let h = (b - a) / panels as f64;
+            for j in 0..panels {
+                let mid = a + (j as f64 + 0.5) * h;
+                for (x, w) in GL8_X.iter().zip(GL8_W) {
+                    for s in [mid - 0.5 * h * x, mid + 0.5 * h * x] {
+                        if let Some(p) = side.at(s, pose) {
+                            let d = p.g + axle_height - d_min;
+                            current.min_gap = current.min_gap.min(d);
+                            let z = d / eps;
+                            if z <= settings.cutoff {
+                                current.add(0.5 * h * w * (-z).exp(), &fields_of(side, &p));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        if breaks[k + 1].1 {
+            if let Some(avg) = current.finish() {
+                patches.push(avg);
+            }
+            current = Accumulator::default();
+        }
+    }
+}
+
+/// Running weighted sums of one patch.
+#[derive(Debug, Clone, Copy)]
+struct Accumulator {
+    weight: f64,
+    sum: [f64; FIELDS],
+    min_gap: f64,
+}
+
+impl Default for Accumulator {
+    fn default() -> Accumulator {
+        Accumulator {
+            weight: 0.0,
+            sum: [0.0; FIELDS],
+            min_gap: f64::INFINITY,
+        }
+    }
+}
+
+impl Accumulator {
+    #[inline]
+    fn add(&mut self, w: f64, f: &[f64; FIELDS]) {
+        self.weight += w;
+        for (acc, v) in self.sum.iter_mut().zip(f) {
+            *acc += w * v;
+        }
+    }
+
+    fn finish(&self) -> Option<Average<FIELDS>> {
+        (self.weight > 0.0).then(|| Average {
+            mean: self.sum.map(|v| v / self.weight),
+            weight: self.weight,
+            min_gap: self.min_gap,
+        })
+    }
+}
+
+/// Indices of the local maxima of `gaps` that rise more than `barrier` above the lowest
+/// gap on each side up to the neighbouring maxima (interior indices only).
+fn barrier_maxima(gaps: &[f64], barrier: f64) -> Vec<usize> {
+    let n = gaps.len();
+    let mut out = Vec::new();
+    let mut run_min = gaps.first().copied().unwrap_or(f64::INFINITY);
+    let mut i = 1;
+    while i + 1 < n {
+        run_min = run_min.min(gaps[i]);
+        if gaps[i] >= gaps[i - 1] && gaps[i] > gaps[i + 1] {
+            let mut j = i + 1;
+            let mut next_min = gaps[i + 1];
+            while j + 1 < n && gaps[j + 1] <= gaps[j] {
+                j += 1;
+                next_min = next_min.min(gaps[j]);
+            }
+            if gaps[i] - run_min.max(next_min) > barrier {
+                out.push(i);
+                run_min = gaps[i];
+            }
+        }
+        i += 1;
+    }
+    out
+}
+
 /// One patch of [`average`]: the weight-averaged fields, the integral of the weight, and
 /// the smallest gap in the patch.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -299,9 +545,11 @@ pub struct Average<const N: usize> {
 }
 
 /// Weighted averages of `fields` over `nodes` (increasing, possibly uneven) with weights
-/// `exp(-(gap - min gap) / eps)` and trapezoid quadrature, one [`Average`] per patch: the
-/// nodes are split into patches at every local maximum of the gap that rises more than
-/// `eps` above both neighbouring minima. Nodes where `(gap - min) / eps > cutoff` weigh 0.
+/// `exp(-gap / eps)` and trapezoid quadrature, one [`Average`] per patch: the nodes are
+/// split into patches at every local maximum of the gap that rises more than `eps` above
+/// both neighbouring minima. Gaps are measured from the wheel's minimum gap (the caller
+/// subtracts it, the same for every region of a wheel, so that weights compare across
+/// regions). Nodes where `gap / eps > cutoff` weigh 0.
 ///
 /// # Example
 /// ```
@@ -325,28 +573,9 @@ pub fn average<const N: usize>(
     if n == 0 {
         return Vec::new();
     }
-    let global_min = gaps.iter().copied().fold(f64::INFINITY, f64::min);
     // Split points: local maxima with a barrier above both neighbouring minima.
     let mut bounds = vec![0];
-    let mut run_min = gaps[0];
-    let mut i = 1;
-    while i + 1 < n {
-        run_min = run_min.min(gaps[i]);
-        if gaps[i] >= gaps[i - 1] && gaps[i] > gaps[i + 1] {
-            // Lowest gap on the far side up to the next local maximum.
-            let mut j = i + 1;
-            let mut next_min = gaps[i + 1];
-            while j + 1 < n && gaps[j + 1] <= gaps[j] {
-                j += 1;
-                next_min = next_min.min(gaps[j]);
-            }
-            if gaps[i] - run_min.max(next_min) > BARRIER_EPS * eps {
-                bounds.push(i);
-                run_min = gaps[i];
-            }
-        }
-        i += 1;
-    }
+    bounds.extend(barrier_maxima(gaps, BARRIER_EPS * eps));
     bounds.push(n - 1);
     bounds
         .windows(2)
@@ -357,7 +586,7 @@ pub fn average<const N: usize>(
             let mut min_gap = f64::INFINITY;
             for k in first..=last {
                 min_gap = min_gap.min(gaps[k]);
-                let x = (gaps[k] - global_min) / eps;
+                let x = gaps[k] / eps;
                 if x > cutoff {
                     continue;
                 }

@@ -139,7 +139,9 @@ pub struct RawQuasiElastic {
     pub sensitivity_epsilon_mm: Option<Vec<f64>>,
     /// Cut-off of the weight in units of eps.
     pub cutoff: Option<f64>,
-    /// Largest quadrature step (mm).
+    /// "gauss_legendre" (default) or "trapezoid".
+    pub quadrature: Option<String>,
+    /// Largest step of the trapezoid quadrature (mm).
     pub max_step_mm: Option<f64>,
 }
 
@@ -582,11 +584,32 @@ impl Scene {
                 qe.cutoff,
                 crate::quasi_elastic::DEFAULT_CUTOFF,
             )?,
-            max_step_mm: positive(
-                "quasi_elastic.max_step_mm",
-                qe.max_step_mm,
-                crate::quasi_elastic::DEFAULT_MAX_STEP_MM,
-            )?,
+            quadrature: match (qe.quadrature.as_deref(), qe.max_step_mm) {
+                (None | Some("gauss_legendre"), None) => {
+                    crate::quasi_elastic::Quadrature::GaussLegendre
+                }
+                (None | Some("gauss_legendre"), Some(_)) => {
+                    return Err(invalid(
+                        "quasi_elastic.max_step_mm",
+                        "applies to quadrature = \"trapezoid\" only".into(),
+                    ));
+                }
+                (Some("trapezoid"), step) => crate::quasi_elastic::Quadrature::Trapezoid {
+                    max_step_mm: positive(
+                        "quasi_elastic.max_step_mm",
+                        step,
+                        crate::quasi_elastic::DEFAULT_MAX_STEP_MM,
+                    )?,
+                },
+                (Some(other), _) => {
+                    return Err(invalid(
+                        "quasi_elastic.quadrature",
+                        format!(
+                            "unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""
+                        ),
+                    ));
+                }
+            },
         };
         if quasi_elastic.epsilon_mm > 1.0 {
             return Err(invalid(

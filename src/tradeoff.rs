@@ -66,15 +66,14 @@ pub struct Errors {
     pub p0_rel: f64,
 }
 
-/// The reference: analytic profiles, default solver, quasi-elastic quadrature 10 times finer
-/// than the default with cut-off exp(-60), exact Hertz.
+/// The reference: analytic profiles, default solver, Gauss-Legendre quadrature with the
+/// cut-off at exp(-60), exact Hertz.
 pub fn reference_setting() -> Setting {
     Setting {
         label: "reference".into(),
         profile_step_mm: None,
         solver: Solver::Default,
         quasi_elastic: quasi_elastic::Settings {
-            max_step_mm: quasi_elastic::DEFAULT_MAX_STEP_MM / 10.0,
             cutoff: 60.0,
             ..quasi_elastic::Settings::default()
         },
@@ -93,15 +92,15 @@ pub fn default_setting(scene: &Scene) -> Setting {
     }
 }
 
-/// The paper's numerical choices: tabulated profiles (0.1 mm), its rigid iteration, its
-/// quadrature on the table (0.1 mm), its series and fixed-point iteration for Hertz.
+/// The paper's numerical choices: tabulated profiles (0.1 mm), its rigid iteration, a
+/// trapezoid sum on the table (0.1 mm), its series and fixed-point iteration for Hertz.
 pub fn paper_setting(scene: &Scene) -> Setting {
     Setting {
         label: "paper".into(),
         profile_step_mm: Some(0.1),
         solver: Solver::Paper,
         quasi_elastic: quasi_elastic::Settings {
-            max_step_mm: 0.1,
+            quadrature: quasi_elastic::Quadrature::Trapezoid { max_step_mm: 0.1 },
             ..scene.quasi_elastic
         },
         hertz: Method::Paper,
@@ -125,11 +124,13 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
         solver: Solver::Paper,
         ..d.clone()
     });
-    for max_step in [0.01, 0.1, 0.2] {
+    for max_step in [0.01, 0.05, 0.2] {
         out.push(Setting {
-            label: format!("quadrature step {max_step} mm"),
+            label: format!("trapezoid {max_step} mm"),
             quasi_elastic: quasi_elastic::Settings {
-                max_step_mm: max_step,
+                quadrature: quasi_elastic::Quadrature::Trapezoid {
+                    max_step_mm: max_step,
+                },
                 ..d.quasi_elastic
             },
             ..d.clone()

@@ -90,7 +90,9 @@ fn two_equal_minima_give_two_patches() {
 #[test]
 fn cutoff_changes_nothing_at_output_precision() {
     // Cutting at exp(-37) against cutting at exp(-60) (3 ulps of the weight): same averages
-    // to 1e-12 mm at every position of a coarse paper sweep.
+    // to 1e-9 mm (10 significant digits of the outputs) at every position of a coarse paper
+    // sweep. The cut-off moves the ends of the integration regions and so the quadrature
+    // panels: the results differ by the quadrature's own error, about 1e-12 mm (measured).
     let sweep: Vec<f64> = (0..=30).map(|i| -15.0 + f64::from(i)).collect();
     let r = rigid::search(placement(), &sweep, Solver::Default);
     let a = quasi_elastic::search(placement(), &r, &Settings::default());
@@ -106,7 +108,7 @@ fn cutoff_changes_nothing_at_output_precision() {
         for side in [Side::Left, Side::Right] {
             let (x, y) = (p.side(side).main().unwrap(), q.side(side).main().unwrap());
             assert!(
-                (x.s - y.s).abs() < 1e-12,
+                (x.s - y.s).abs() < 1e-9,
                 "y_ws {}: {} vs {}",
                 p.y_ws,
                 x.s,
