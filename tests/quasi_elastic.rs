@@ -212,3 +212,67 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn weight_shares_match_an_independent_integration() {
+    // Regression (weights were normalised per low region, so shares of patches in separate
+    // regions were wrong): at positions with two patches, each patch's share equals the
+    // integral of exp(-(d - d_min)/eps) on its side of the barrier over the whole wheel,
+    // summed independently by a trapezoid rule every 0.0005 mm (first-order error where a
+    // curvature jumps: below 1e-4 of the share, measured).
+    use wheelrail::rigid::gap::{SideGap, SidePose};
+    let sweep: Vec<f64> = (0..=30).map(|i| 3.5 + 0.1 * f64::from(i)).collect();
+    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let q = quasi_elastic::search(placement(), &r, &Settings::default());
+    let side = SideGap::new(&placement().left, 1.0);
+    let mut checked = 0;
+    for (rp, qp) in r.positions.iter().zip(&q.positions) {
+        let patches = &qp.side(Side::Left).patches;
+        if patches.len() != 2 {
+            continue;
+        }
+        let pose = SidePose::new(1.0, rp.y_ws, rp.roll);
+        let d_min = rp.axle_height + side.at(rp.side(Side::Left).unwrap().s, &pose).unwrap().g;
+        let (s1, s2) = (
+            patches[0].s.min(patches[1].s),
+            patches[0].s.max(patches[1].s),
+        );
+        // The barrier: the highest gap between the two patch locations.
+        let mut barrier = (f64::NEG_INFINITY, s1);
+        let mut s = s1;
+        while s < s2 {
+            let g = side.at(s, &pose).unwrap().g;
+            if g > barrier.0 {
+                barrier = (g, s);
+            }
+            s += 0.001;
+        }
+        let (mut below, mut above) = (0.0, 0.0);
+        let h = 0.0005;
+        for i in 0..=260_000 {
+            let s = -70.0 + h * f64::from(i);
+            if let Some(p) = side.at(s, &pose) {
+                let w = h * (-(p.g + rp.axle_height - d_min) / 0.01).exp();
+                if s < barrier.1 {
+                    below += w
+                } else {
+                    above += w
+                }
+            }
+        }
+        let share_below = below / (below + above);
+        let patch_below = if patches[0].s < barrier.1 {
+            patches[0]
+        } else {
+            patches[1]
+        };
+        assert!(
+            (patch_below.weight_share - share_below).abs() < 1e-4,
+            "y_ws {}: share {} vs independent {share_below}",
+            rp.y_ws,
+            patch_below.weight_share
+        );
+        checked += 1;
+    }
+    assert!(checked >= 3, "only {checked} two-patch positions");
+}
