@@ -140,3 +140,27 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
         }
     }
 }
+
+/// Found by `tests/fuzz.rs` (mutated scenes): `wheel_load_kN = 1e306` passes the scene's
+/// check (positive and finite in kN) and becomes inf N when converted; `young_GPa` overflows
+/// the same way but `Material::new` catches it. Hertz then flags every position ("load must
+/// be finite"), but a checked `Scene` should not hold inf. The fix belongs in `src/scene.rs`
+/// (check after converting).
+#[test]
+#[ignore = "fix pending in src/scene.rs: check values after the unit conversion"]
+fn scene_rejects_values_that_overflow_on_conversion() {
+    let scene = Scene::from_toml("[load]\nwheel_load_kN = 1e306\n", "t", Path::new("."));
+    assert!(scene.is_err(), "{:?}", scene.map(|s| s.wheel_load_n));
+}
+
+/// Found while fuzzing scenes: any positive `quasi_elastic.max_step_mm` is accepted, but the
+/// quadrature places its nodes at that step over the low regions (the search's own floor,
+/// 1e-4 mm, applies only to the step it derives from eps), so 1e-6 mm takes 28 s per
+/// position (measured; 2.4 h for the default sweep) and 1e-9 mm runs out of memory. The fix
+/// belongs in `src/scene.rs` (a lower bound, e.g. 1e-4 mm).
+#[test]
+#[ignore = "fix pending in src/scene.rs: bound quasi_elastic.max_step_mm from below"]
+fn scene_rejects_a_quadrature_step_that_cannot_finish() {
+    let scene = Scene::from_toml("[quasi_elastic]\nmax_step_mm = 1e-9\n", "t", Path::new("."));
+    assert!(scene.is_err());
+}
