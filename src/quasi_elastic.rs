@@ -288,6 +288,8 @@ fn side_average(
         at_rigid.g + limit + crate::rigid::gap::COARSE_MARGIN_MM,
         &mut work.regions,
     );
+    let domain = side.wheel().profile().domain();
+    include_rigid_point(&mut work.regions, s_rigid, domain);
     let mut patches: Vec<Average<FIELDS>> = Vec::new();
     let regions = std::mem::take(&mut work.regions);
     for &(lo, hi) in &regions {
@@ -319,6 +321,11 @@ fn side_average(
                 let k_hi = (hi / step).ceil() as i64;
                 for k in k_lo..=k_hi {
                     let s = k as f64 * step;
+                    // The grid is rounded outwards; beyond its domain the profile is clamped
+                    // and a node there would be a phantom point of the wheel.
+                    if !(domain.0..=domain.1).contains(&s) {
+                        continue;
+                    }
                     let Some(p) = side.at(s, &pose) else { continue };
                     work.nodes.push(s);
                     work.gaps.push(p.g + axle_height - d_min);
@@ -359,6 +366,32 @@ fn side_average(
         .collect();
     out.sort_by(|a, b| b.weight_share.total_cmp(&a.weight_share));
     SideResult { patches: out }
+}
+
+/// Adds the neighbourhood of the rigid contact point to the low regions (sorted, disjoint)
+/// when no region contains it. The coarse scan's margin assumes gap curvatures up to
+/// 1/5 mm^-1 (see [`crate::rigid::gap::COARSE_MARGIN_MM`]); a sharper minimum, such as the
+/// S1002 flange-back arc near its vertical tangent (d'' = 370 1/mm), can lie between coarse
+/// samples that are all above the threshold. The rigid point is the minimum by definition.
+/// The added region stays inside the wheel's `domain`.
+fn include_rigid_point(regions: &mut Vec<(f64, f64)>, s_rigid: f64, domain: (f64, f64)) {
+    if regions.iter().any(|r| (r.0..=r.1).contains(&s_rigid)) {
+        return;
+    }
+    let step = crate::rigid::gap::COARSE_STEP_MM;
+    regions.push((
+        (s_rigid - step).max(domain.0),
+        (s_rigid + step).min(domain.1),
+    ));
+    regions.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut merged: Vec<(f64, f64)> = Vec::with_capacity(regions.len());
+    for &r in regions.iter() {
+        match merged.last_mut() {
+            Some(last) if r.0 <= last.1 => last.1 = last.1.max(r.1),
+            _ => merged.push(r),
+        }
+    }
+    *regions = merged;
 }
 
 /// Integrates one low region by Gauss-Legendre panels on the smooth pieces between the

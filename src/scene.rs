@@ -14,6 +14,15 @@ use std::path::{Path, PathBuf};
 /// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
 pub const MAX_SWEEP_POSITIONS: usize = 100_001;
 
+/// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
+pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
+/// The smallest step of the trapezoid quadrature (mm): its nodes cover the low regions
+/// (millimetres wide), so 1e-6 mm would take half a minute per position.
+pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
+/// The smallest regularisation parameter (mm): below it the weight is narrower than the
+/// spacing of double-precision numbers around a contact point.
+pub const MIN_EPSILON_MM: f64 = 1e-6;
+
 /// Default filter wavelength of the spline through profile points read from files (mm): 0,
 /// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
 /// [`crate::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM`]); exact benchmark files do not.
@@ -489,6 +498,17 @@ impl Scene {
         };
 
         let wheel_load_n = 1000.0 * positive("load.wheel_load_kN", raw.load.wheel_load_kN, 70.0)?;
+        // Checked after the conversion too: 1e306 kN is finite, 1e309 N is not.
+        if !(wheel_load_n.is_finite() && wheel_load_n <= MAX_WHEEL_LOAD_N) {
+            return Err(invalid(
+                "load.wheel_load_kN",
+                format!(
+                    "{} kN is not a wheel load (expected up to {} kN)",
+                    wheel_load_n / 1000.0,
+                    MAX_WHEEL_LOAD_N / 1000.0
+                ),
+            ));
+        }
 
         let m = &raw.material;
         let young = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
@@ -594,13 +614,22 @@ impl Scene {
                         "applies to quadrature = \"trapezoid\" only".into(),
                     ));
                 }
-                (Some("trapezoid"), step) => crate::quasi_elastic::Quadrature::Trapezoid {
-                    max_step_mm: positive(
+                (Some("trapezoid"), step) => {
+                    let max_step_mm = positive(
                         "quasi_elastic.max_step_mm",
                         step,
                         crate::quasi_elastic::DEFAULT_MAX_STEP_MM,
-                    )?,
-                },
+                    )?;
+                    if max_step_mm < MIN_TRAPEZOID_STEP_MM {
+                        return Err(invalid(
+                            "quasi_elastic.max_step_mm",
+                            format!(
+                                "{max_step_mm} mm is below {MIN_TRAPEZOID_STEP_MM} mm: the quadrature would not finish"
+                            ),
+                        ));
+                    }
+                    crate::quasi_elastic::Quadrature::Trapezoid { max_step_mm }
+                }
                 (Some(other), _) => {
                     return Err(invalid(
                         "quasi_elastic.quadrature",
@@ -611,6 +640,15 @@ impl Scene {
                 }
             },
         };
+        if quasi_elastic.epsilon_mm < MIN_EPSILON_MM {
+            return Err(invalid(
+                "quasi_elastic.epsilon_mm",
+                format!(
+                    "{} mm is below {MIN_EPSILON_MM} mm",
+                    quasi_elastic.epsilon_mm
+                ),
+            ));
+        }
         if quasi_elastic.epsilon_mm > 1.0 {
             return Err(invalid(
                 "quasi_elastic.epsilon_mm",
@@ -627,11 +665,11 @@ impl Scene {
         if epsilon_sensitivity_mm.is_empty()
             || epsilon_sensitivity_mm
                 .iter()
-                .any(|e| !(e.is_finite() && *e > 0.0 && *e <= 1.0))
+                .any(|e| !(e.is_finite() && *e >= MIN_EPSILON_MM && *e <= 1.0))
         {
             return Err(invalid(
                 "quasi_elastic.sensitivity_epsilon_mm",
-                "expected a non-empty list of values in (0, 1] mm".into(),
+                format!("expected a non-empty list of values from {MIN_EPSILON_MM} to 1 mm"),
             ));
         }
         let h = &raw.hertz;

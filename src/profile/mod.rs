@@ -236,19 +236,10 @@ impl Profile {
 
     /// Samples the profile every `step_mm` over its domain (both ends included), plus the
     /// section joints, as `[u, v, tan_gamma, convex_curvature]` rows.
-    ///
-    /// An end where the profile is vertical (the S1002 flange back at `s = -70`: infinite
-    /// slope, curvature of the form inf/inf) is sampled [`VERTICAL_END_INSET_MM`] inside.
     pub fn sample(&self, step_mm: f64) -> Vec<[f64; 4]> {
         let (lo, hi) = self.domain();
         let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
         let mut us: Vec<f64> = (0..=n).map(|i| (lo + i as f64 * step_mm).min(hi)).collect();
-        if !self.eval(lo)[1].is_finite() {
-            us[0] = lo + VERTICAL_END_INSET_MM;
-        }
-        if !self.eval(hi)[1].is_finite() {
-            us[n] = hi - VERTICAL_END_INSET_MM;
-        }
         us.extend(self.joints());
         us.sort_by(f64::total_cmp);
         us.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
@@ -260,9 +251,6 @@ impl Profile {
             .collect()
     }
 }
-
-/// How far inside a vertical end [`Profile::sample`] takes its first or last point (mm).
-pub const VERTICAL_END_INSET_MM: f64 = 1e-9;
 
 /// Curvature of a graph `v(u)` from its derivatives, positive where the surface is convex
 /// towards the other body (`-v'' / (1 + v'^2)^(3/2)`; both side frames have `v''` < 0 on a

@@ -110,11 +110,21 @@ fn polynomial(c: &[f64], s: f64) -> [f64; 3] {
 }
 
 /// `F = a + sqrt(r^2 - (s + c)^2)` and its derivatives (the flange arcs, convex downwards).
+///
+/// The flange-back arc R20.5 reaches its vertical tangent at `S_MIN`, where the derivatives
+/// are infinite and the curvature `inf / inf`. The derivatives are therefore taken with the
+/// root at least [`MIN_ARC_ROOT`] times the radius: the slope stays finite (1e6) and the
+/// curvature `-F'' / (1 + F'^2)^1.5` is the arc's `1/r` to 1e-12. Only points within about
+/// 1e-11 mm of the vertical tangent are affected; `F` itself is exact.
 fn convex_arc((a, r, c): (f64, f64, f64), s: f64) -> [f64; 3] {
     let u = s + c;
     let root = (r * r - u * u).max(0.0).sqrt();
-    [a + root, -u / root, -r * r / (root * root * root)]
+    let d = root.max(MIN_ARC_ROOT * r);
+    [a + root, -u / d, -r * r / (d * d * d)]
 }
+
+/// Smallest `sqrt(r^2 - u^2) / r` used for the derivatives of an arc (see [`convex_arc`]).
+const MIN_ARC_ROOT: f64 = 1e-6;
 
 #[cfg(test)]
 mod tests {

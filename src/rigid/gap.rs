@@ -26,6 +26,8 @@ const LOCAL_TOL_MM: f64 = 1e-11;
 /// A local minimum this close to an end of its bracket, with the gap still falling
 /// outwards, lies beyond the bracket (mm); the bisection stops within a few LOCAL_TOL_MM.
 const AT_END_MM: f64 = 1e-8;
+/// Distance below a section joint at which the other section's limit is evaluated (mm).
+const JOINT_SIDE_MM: f64 = 1e-12;
 /// A bracket end replaces the Newton point only when its gap is lower by this much (mm).
 const END_PREFERENCE_MM: f64 = 1e-12;
 /// How many bracket widths a basin may slide while its minimum is followed (about 10 mm).
@@ -156,6 +158,11 @@ pub struct SideGap<'a> {
     coarse: Vec<[f64; 3]>,
     table: RailTable,
     tabulated: Option<Tables>,
+    /// The wheel profile's domain: beyond it the profile is clamped, and a point there
+    /// would be a phantom of the wheel's end displaced sideways.
+    domain: (f64, f64),
+    /// Section joints of the wheel profile (where its value may jump).
+    joints: Vec<f64>,
 }
 
 /// Tabulated wheel `(s, Yw, Zw)` and rail, for the paper's solver.
@@ -201,6 +208,8 @@ impl<'a> SideGap<'a> {
             coarse,
             table: RailTable::new(&pair.rail, RAIL_TABLE_STEP_MM),
             tabulated: None,
+            domain: (lo, hi),
+            joints: pair.wheel.profile().joints(),
         }
     }
 
@@ -246,9 +255,13 @@ impl<'a> SideGap<'a> {
         &self.pair.wheel
     }
 
-    /// The gap at `s` for `pose`, or `None` where the wheel point is not above the rail.
+    /// The gap at `s` for `pose`, or `None` where the wheel point is not above the rail or
+    /// `s` lies outside the wheel profile.
     #[inline]
     pub fn at(&self, s: f64, pose: &SidePose) -> Option<GapPoint> {
+        if !(self.domain.0..=self.domain.1).contains(&s) {
+            return None;
+        }
         let wheel = self.pair.wheel.at(s);
         let [y, z_rel] = pose.apply(wheel.y, wheel.z);
         let rail = self.pair.rail.at(y)?;
@@ -361,7 +374,13 @@ impl<'a> SideGap<'a> {
     /// `Y = delta + Yw +- |sin phi| |Zw|`, with one sample more on each side.
     fn over_rail(&self, pose: &SidePose) -> (usize, usize) {
         let (y_lo, y_hi) = self.pair.rail.y_range();
-        let reach = pose.sin.abs() * (self.pair.wheel.nominal_radius_mm() + 100.0) + 1.0;
+        // Y = delta + cos Yw - sin Zw differs from delta + Yw by at most
+        // |sin| |Zw| + (1 - cos) |Yw|, with |Zw| <= r0 + 100 and |Yw| <= taping line + 100:
+        // the second term is 13 mm at a roll of 0.19 rad (very unequal wheel radii).
+        let wheel = &self.pair.wheel;
+        let reach = pose.sin.abs() * (wheel.nominal_radius_mm() + 100.0)
+            + (1.0 - pose.cos) * (wheel.taping_line_mm() + 100.0)
+            + 1.0;
         let first = self
             .coarse
             .partition_point(|c| pose.delta + c[1] < y_lo - reach)
@@ -394,10 +413,33 @@ impl<'a> SideGap<'a> {
                 lo = hi;
                 hi = (hi + width).min(dom_hi);
             } else {
-                return Some(p);
+                return Some(self.lowest_at_joints(p, lo, hi, pose));
             }
         }
         None
+    }
+
+    /// `p`, or the one-sided limit of the gap at a section joint of the wheel profile inside
+    /// `[lo, hi]` where that is clearly lower. A profile whose value jumps at a joint (S1002:
+    /// 3.6e-5 mm at s = -26, 1.2e-4 mm at s = -35) can have its minimum there, which no
+    /// derivative sees; missing it makes the minimum gap jump as the roll changes, and the
+    /// roll iteration stall where the contact is nearly conformal.
+    fn lowest_at_joints(&self, p: GapPoint, lo: f64, hi: f64, pose: &SidePose) -> GapPoint {
+        let mut best = p;
+        for &j in &self.joints {
+            if j <= lo || j >= hi {
+                continue;
+            }
+            // At the joint the field-side section is evaluated; just below it, the other.
+            for s in [j, j - JOINT_SIDE_MM] {
+                if let Some(q) = self.at(s, pose)
+                    && q.g < best.g - END_PREFERENCE_MM
+                {
+                    best = q;
+                }
+            }
+        }
+        best
     }
 
     fn newton_in(&self, mut lo: f64, mut hi: f64, s0: f64, pose: &SidePose) -> Option<GapPoint> {

@@ -115,7 +115,17 @@
 //! that goes back laterally is an error naming its line. Measured files do zig-zag: both
 //! 2020 wheels of the test data step back at the flange tip (Car7216_0001r.whl line 223 by
 //! 0.6 mm, Car7358_0001r.whl line 216 by 0.01 mm) and avg_HR.BAN at the gauge corner (line
-//! 135, 0.01 mm); they are refused rather than silently edited.
+//! 135, 0.01 mm); by default they are refused rather than silently edited.
+//!
+//! # Dropping points that step back (opt-in)
+//!
+//! A caller that wants to run such files asks for it explicitly with
+//! [`ReadOptions`]`{ step_back: `[`StepBack::Drop`]` }` and [`read_profile_with`] or
+//! [`parse_str_with`]: walking outwards from the crest, every point that does not advance the
+//! lateral coordinate beyond the points kept before it is dropped, as CONTACT's
+//! `delete_foldback` option does (details in [`validate`]), and the lines of the dropped
+//! points are listed in [`PointProfile::dropped_step_backs`] so that the caller can report
+//! them. Files the default reader accepts read to the same points with nothing dropped.
 
 mod csv;
 mod error;
@@ -182,6 +192,27 @@ impl fmt::Display for ProfileFormat {
     }
 }
 
+/// What a reader does with a point whose lateral coordinate steps back (a zig-zag) and that
+/// is not part of a measured end face.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum StepBack {
+    /// The file is refused: [`ReadError::NonMonotonic`] or [`ReadError::DuplicatePoint`]
+    /// naming the line (the default).
+    #[default]
+    Refuse,
+    /// The point is dropped and its line listed in [`PointProfile::dropped_step_backs`]
+    /// (see the [module docs](self#dropping-points-that-step-back-opt-in)).
+    Drop,
+}
+
+/// Options of [`read_profile_with`] and [`parse_str_with`]; the default is what
+/// [`read_profile`] and [`parse_str`] do.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct ReadOptions {
+    /// What to do with points that step back.
+    pub step_back: StepBack,
+}
+
 /// Where a profile came from: enough to tell two runs apart that read different files.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ProfileSource {
@@ -206,6 +237,9 @@ pub struct PointProfile {
     pub points: Vec<[f64; 2]>,
     /// The file it was read from.
     pub source: ProfileSource,
+    /// 1-based lines of the points dropped because they stepped back (only with
+    /// [`StepBack::Drop`]; empty otherwise). End faces of MiniProf files are not listed.
+    pub dropped_step_backs: Vec<usize>,
 }
 
 impl PointProfile {
@@ -243,6 +277,37 @@ impl PointProfile {
 /// # Ok::<(), wheelrail::profile::read::ReadError>(())
 /// ```
 pub fn read_profile(path: &Path, kind: ProfileKind) -> Result<PointProfile, ReadError> {
+    read_profile_with(path, kind, &ReadOptions::default())
+}
+
+/// [`read_profile`] with [`ReadOptions`], e.g. to read a measured file whose points zig-zag.
+///
+/// # Errors
+///
+/// As [`read_profile`]; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
+/// [`ReadError::DuplicatePoint`] (the points are dropped), but [`ReadError::TooFewPoints`]
+/// when too few remain.
+///
+/// # Examples
+///
+/// ```
+/// use std::path::Path;
+/// use wheelrail::profile::{ProfileKind, read::{read_profile, read_profile_with, ReadOptions, StepBack}};
+///
+/// let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/profiles/Car7216_0001r.whl");
+/// // This measured wheel steps back by 0.6 mm at its flange tip (line 223).
+/// assert!(read_profile(&path, ProfileKind::Wheel).is_err());
+/// let options = ReadOptions { step_back: StepBack::Drop };
+/// let wheel = read_profile_with(&path, ProfileKind::Wheel, &options)?;
+/// assert!(wheel.dropped_step_backs.contains(&223));
+/// assert!(wheel.points.windows(2).all(|w| w[1][0] > w[0][0]));
+/// # Ok::<(), wheelrail::profile::read::ReadError>(())
+/// ```
+pub fn read_profile_with(
+    path: &Path,
+    kind: ProfileKind,
+    options: &ReadOptions,
+) -> Result<PointProfile, ReadError> {
     let origin = path.display().to_string();
     let extension = path
         .extension()
@@ -269,7 +334,7 @@ pub fn read_profile(path: &Path, kind: ProfileKind) -> Result<PointProfile, Read
     // replacing undecodable bytes keeps the header readable and makes a bad byte inside a
     // number a NonNumeric error on its line.
     let text = String::from_utf8_lossy(&bytes);
-    parse_with_hash(&text, format, kind, &origin, sha256_hex(&bytes))
+    parse_with_hash(&text, format, kind, &origin, sha256_hex(&bytes), options)
 }
 
 /// Parses profile text in a given format, as [`read_profile`] does after reading the file.
@@ -311,7 +376,30 @@ pub fn parse_str(
     kind: ProfileKind,
     origin: &str,
 ) -> Result<PointProfile, ReadError> {
-    parse_with_hash(text, format, kind, origin, sha256_hex(text.as_bytes()))
+    parse_str_with(text, format, kind, origin, &ReadOptions::default())
+}
+
+/// [`parse_str`] with [`ReadOptions`].
+///
+/// # Errors
+///
+/// As [`parse_str`]; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
+/// [`ReadError::DuplicatePoint`], but [`ReadError::TooFewPoints`] when too few remain.
+pub fn parse_str_with(
+    text: &str,
+    format: ProfileFormat,
+    kind: ProfileKind,
+    origin: &str,
+    options: &ReadOptions,
+) -> Result<PointProfile, ReadError> {
+    parse_with_hash(
+        text,
+        format,
+        kind,
+        origin,
+        sha256_hex(text.as_bytes()),
+        options,
+    )
 }
 
 fn parse_with_hash(
@@ -320,6 +408,7 @@ fn parse_with_hash(
     kind: ProfileKind,
     origin: &str,
     sha256: String,
+    options: &ReadOptions,
 ) -> Result<PointProfile, ReadError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
@@ -332,7 +421,8 @@ fn parse_with_hash(
         ProfileFormat::Simpack => (simpack::parse(text, kind, origin)?, false),
         ProfileFormat::MiniProf => (miniprof::parse(text, kind, origin)?, true),
     };
-    let points = validate::finish(raw, origin, trim_faces)?;
+    let (points, dropped_step_backs) =
+        validate::finish(raw, origin, trim_faces, options.step_back)?;
     Ok(PointProfile {
         kind,
         points,
@@ -341,6 +431,7 @@ fn parse_with_hash(
             sha256,
             format,
         },
+        dropped_step_backs,
     })
 }
 

@@ -19,10 +19,18 @@
 //!    reported (step 4), so a zig-zag at a flange tip names its line;
 //! 4. consecutive points closer than [`DUPLICATE_TOLERANCE_MM`] in both coordinates are a
 //!    [`ReadError::DuplicatePoint`]; any other step that does not increase the lateral
-//!    coordinate is a [`ReadError::NonMonotonic`] naming the line;
+//!    coordinate is a [`ReadError::NonMonotonic`] naming the line. On request
+//!    ([`StepBack::Drop`]) steps 3 and 4 are lenient: walking outwards from the crest on
+//!    each side, a point that does not advance the lateral coordinate beyond every point kept
+//!    before it (or repeats the last one) is dropped and its line recorded, as CONTACT's
+//!    `delete_foldback` option does (E. Vollebregt, `eve70a/CONTACT`, matlab
+//!    `modify_profile.m`), unless the rest of that side is an end face in the shadow of the
+//!    last kept point, which is trimmed as in step 3. A file that steps 3 and 4 accept reads
+//!    to the same points with nothing dropped;
 //! 5. extents: the lateral extent must lie in [`LATERAL_EXTENT_MM`], the vertical extent below
 //!    [`MAX_VERTICAL_EXTENT_MM`] ([`ReadError::ImplausibleExtent`]).
 
+use super::StepBack;
 use super::error::{Axis, Field, ReadError};
 use super::fields::RawPoint;
 
@@ -52,10 +60,15 @@ pub const MAX_VERTICAL_EXTENT_MM: f64 = 500.0;
 /// this much beyond the last kept point (step 3 of the module docs).
 pub const END_FACE_LATERAL_JITTER_MM: f64 = 0.2;
 
+/// Points kept by [`finish`], and the lines of the points it dropped because they stepped
+/// back ([`StepBack::Drop`] only; end faces are not counted).
+pub(crate) type Finished = (Vec<[f64; 2]>, Vec<usize>);
+
 /// Runs the checks listed in the module docs and returns the points sorted by strictly
 /// increasing lateral coordinate.
 ///
-/// `trim_faces` enables [`trim_end_faces`] (MiniProf measurements only).
+/// `trim_faces` enables [`trim_end_faces`] (MiniProf measurements only); `step_back` says
+/// whether a step back is an error or dropped ([`drop_step_backs`]).
 ///
 /// # Errors
 ///
@@ -64,7 +77,8 @@ pub(crate) fn finish(
     mut points: Vec<RawPoint>,
     origin: &str,
     trim_faces: bool,
-) -> Result<Vec<[f64; 2]>, ReadError> {
+    step_back: StepBack,
+) -> Result<Finished, ReadError> {
     if points.is_empty() {
         return Err(ReadError::NoPoints {
             origin: origin.to_owned(),
@@ -89,13 +103,16 @@ pub(crate) fn finish(
     {
         points.reverse();
     }
-    if trim_faces {
-        points = trim_end_faces(points, origin)?;
-        check_count(points.len(), origin)?;
+    let mut dropped = Vec::new();
+    match step_back {
+        StepBack::Refuse if trim_faces => points = trim_end_faces(points, origin)?,
+        StepBack::Refuse => {}
+        StepBack::Drop => (points, dropped) = drop_step_backs(points, trim_faces),
     }
+    check_count(points.len(), origin)?;
     check_monotonic(&points, origin)?;
     check_extents(&points, origin)?;
-    Ok(points.iter().map(|p| [p.lat, p.vert]).collect())
+    Ok((points.iter().map(|p| [p.lat, p.vert]).collect(), dropped))
 }
 
 fn check_count(found: usize, origin: &str) -> Result<(), ReadError> {
@@ -215,6 +232,88 @@ pub(crate) fn trim_end_faces(
     Ok(points[first..=last].to_vec())
 }
 
+/// Drops the points that step back ([`StepBack::Drop`]): the lenient counterpart of
+/// [`trim_end_faces`] and step 4, for measured profiles that zig-zag (both 2020 wheels of the
+/// test data at the flange tip, avg_HR.BAN at the gauge corner). Returns the kept points and
+/// the lines of the dropped ones, in the order met.
+///
+/// As CONTACT's `delete_foldback` option (E. Vollebregt, `eve70a/CONTACT`, matlab
+/// `modify_profile.m`) does, the walk starts at the crest (the highest point: flange tip or
+/// rail crown) and goes outwards on each side; a point is kept when it advances the lateral
+/// coordinate beyond every point kept before it on that side (and is not the same point,
+/// [`DUPLICATE_TOLERANCE_MM`]), and dropped otherwise. With `trim_faces` (MiniProf), where a
+/// point does not advance, the rest of that side is first tested as an end face in the
+/// shadow of the last kept point, exactly as [`trim_end_faces`] does, and removed (not
+/// counted as dropped) if it is one. So every file the strict reader accepts reads to the
+/// same points, with nothing dropped.
+pub(crate) fn drop_step_backs(
+    points: Vec<RawPoint>,
+    trim_faces: bool,
+) -> (Vec<RawPoint>, Vec<usize>) {
+    let n = points.len();
+    let Some(crest) = (0..n).max_by(|&i, &j| points[i].vert.total_cmp(&points[j].vert)) else {
+        return (points, Vec::new());
+    };
+    // For each side, extremes of the points from index i to that side's end, so that the
+    // end-face test is O(1): (highest vertical, furthest outward lateral).
+    let mut after = vec![(f64::NEG_INFINITY, f64::NEG_INFINITY); n + 1];
+    for i in (0..n).rev() {
+        after[i] = (
+            after[i + 1].0.max(points[i].vert),
+            after[i + 1].1.max(points[i].lat),
+        );
+    }
+    let mut before = vec![(f64::NEG_INFINITY, f64::INFINITY); n];
+    for i in 0..n {
+        let prev = if i > 0 { before[i - 1] } else { before[0] };
+        before[i] = (prev.0.max(points[i].vert), prev.1.min(points[i].lat));
+    }
+    let advances = |anchor: RawPoint, p: RawPoint, outward: f64| {
+        let same_place = (p.lat - anchor.lat).abs() <= DUPLICATE_TOLERANCE_MM
+            && (p.vert - anchor.vert).abs() <= DUPLICATE_TOLERANCE_MM;
+        outward * (p.lat - anchor.lat) > 0.0 && !same_place
+    };
+    let mut dropped = Vec::new();
+    // Field/gauge side after the crest (increasing lateral).
+    let mut tail = Vec::new();
+    let mut anchor = points[crest];
+    for i in crest + 1..n {
+        let p = points[i];
+        if advances(anchor, p, 1.0) {
+            tail.push(p);
+            anchor = p;
+        } else if trim_faces
+            && after[i].0 < anchor.vert
+            && after[i].1 - anchor.lat <= END_FACE_LATERAL_JITTER_MM
+        {
+            break;
+        } else {
+            dropped.push(p.line);
+        }
+    }
+    // The other side, walked from the crest towards index 0 (decreasing lateral).
+    let mut head = Vec::new();
+    anchor = points[crest];
+    for i in (0..crest).rev() {
+        let p = points[i];
+        if advances(anchor, p, -1.0) {
+            head.push(p);
+            anchor = p;
+        } else if trim_faces
+            && before[i].0 < anchor.vert
+            && anchor.lat - before[i].1 <= END_FACE_LATERAL_JITTER_MM
+        {
+            break;
+        } else {
+            dropped.push(p.line);
+        }
+    }
+    head.reverse();
+    head.push(points[crest]);
+    head.extend(tail);
+    (head, dropped)
+}
+
 /// Decides whether a MiniProf rail file has its vertical axis up (MiniProf's own convention,
 /// avg_HR.BAN, avg_low2.ban) or down (MBench_UIC60_v3.ban, converted from SIMPACK).
 ///
@@ -270,15 +369,15 @@ mod tests {
     fn reversed_input_is_reordered() {
         let mut xy = arc(20);
         xy.reverse();
-        let out = finish(pts(&xy), "t", false).unwrap();
-        assert!(out.windows(2).all(|w| w[1][0] > w[0][0]));
+        let out = finish(pts(&xy), "t", false, StepBack::Refuse).unwrap();
+        assert!(out.0.windows(2).all(|w| w[1][0] > w[0][0]));
     }
 
     #[test]
     fn zig_zag_names_its_line() {
         let mut xy = arc(20);
         xy[7].0 = xy[5].0;
-        let err = finish(pts(&xy), "t", false).unwrap_err();
+        let err = finish(pts(&xy), "t", false, StepBack::Refuse).unwrap_err();
         assert!(
             matches!(
                 err,
@@ -313,13 +412,44 @@ mod tests {
         zig.push((y_end - 0.1, z_end - 0.1));
         zig.push((y_end + 1.0, z_end - 0.5));
         assert!(matches!(
-            finish(pts(&zig), "t", true),
+            finish(pts(&zig), "t", true, StepBack::Refuse),
             Err(ReadError::NonMonotonic {
                 line: 21,
                 previous_line: 20,
                 ..
             })
         ));
+    }
+
+    #[test]
+    fn dropping_step_backs_keeps_what_strict_accepts_and_drops_zig_zags() {
+        // An end face in the shadow is trimmed the same way, nothing counted as dropped.
+        let mut faced = arc(20);
+        let (y_end, z_end) = faced[19];
+        for k in 1..6 {
+            faced.push((
+                y_end + if k % 2 == 0 { 0.05 } else { -0.05 },
+                z_end - k as f64,
+            ));
+        }
+        let strict = finish(pts(&faced), "t", true, StepBack::Refuse).unwrap();
+        let lenient = finish(pts(&faced), "t", true, StepBack::Drop).unwrap();
+        assert_eq!(strict.0, lenient.0);
+        assert!(lenient.1.is_empty());
+        // A zig-zag on either side of the crest: the points that do not advance are dropped
+        // and named by line; the duplicate too.
+        let mut zig = arc(20);
+        zig[15].0 = zig[13].0 - 0.01; // after the crest (index 10): steps back
+        zig[3].0 = zig[5].0 + 0.01; // before it, walked towards index 0: steps back
+        zig.insert(8, zig[7]); // a duplicate (lines 8, 9); lines shift by one after it
+        assert!(finish(pts(&zig), "t", false, StepBack::Refuse).is_err());
+        let (points, dropped) = finish(pts(&zig), "t", false, StepBack::Drop).unwrap();
+        assert_eq!(points.len(), 18);
+        assert!(points.windows(2).all(|w| w[1][0] > w[0][0]));
+        let mut lines = dropped.clone();
+        lines.sort_unstable();
+        // Before the crest the walk meets the second copy (line 9) first and drops line 8.
+        assert_eq!(lines, vec![4, 8, 17], "{dropped:?}");
     }
 
     #[test]

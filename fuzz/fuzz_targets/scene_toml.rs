@@ -1,0 +1,35 @@
+//! The scene parser on arbitrary text: `Scene::from_toml` returns, and a scene it accepts
+//! has a non-empty increasing finite sweep and values within the documented ranges.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use wheelrail::scene::Scene;
+
+fuzz_target!(|data: &[u8]| {
+    let text = String::from_utf8_lossy(data);
+    let Ok(scene) = Scene::from_toml(&text, "fuzz.toml", std::path::Path::new(".")) else {
+        return;
+    };
+    assert!(!scene.sweep_mm.is_empty());
+    assert!(
+        scene
+            .sweep_mm
+            .iter()
+            .all(|y| y.is_finite() && y.abs() <= 100.0)
+    );
+    assert!(scene.sweep_mm.windows(2).all(|w| w[1] > w[0]));
+    assert!(
+        scene
+            .nominal_radius_mm
+            .iter()
+            .all(|r| (100.0..=1000.0).contains(r))
+    );
+    assert!(scene.wheel_load_n.is_finite() && scene.wheel_load_n > 0.0);
+    let qe = scene.quasi_elastic;
+    assert!(qe.epsilon_mm > 0.0 && qe.epsilon_mm <= 1.0);
+    assert!(qe.cutoff.is_finite() && qe.cutoff > 0.0);
+    assert!(qe.max_step_mm.is_finite() && qe.max_step_mm > 0.0);
+    let layout = &scene.layout;
+    assert!(layout.gauge_mm.is_finite() && layout.flange_back_mm < layout.gauge_mm);
+    assert!((0.0..=0.2).contains(&layout.inclination.0));
+});
