@@ -16,7 +16,7 @@ use crate::profile::ProfileKind;
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep};
 use crate::scene::Scene;
-use crate::track::{PlacedRail, PlacedWheel, Placement, SidePair};
+use crate::track::{PlacedRail, PlacedWheel, Placement, Side, SidePair};
 use std::time::Instant;
 
 /// A stage of the pipeline.
@@ -403,9 +403,27 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     }
     let right = pairs.pop().expect("two sides were pushed");
     let left = pairs.pop().expect("two sides were pushed");
-    Ok(Placement {
+    let placement = Placement {
         layout: scene.layout.clone(),
         left,
         right,
-    })
+    };
+    // A wheel that lies nowhere above its rail with the wheelset centred cannot touch it in
+    // any sweep of a few centimetres: a unit mistake or a wrong profile, not a result.
+    for (side, key) in [(Side::Left, WHEEL_KEYS[0]), (Side::Right, WHEEL_KEYS[1])] {
+        if !placement.resting_gap(side).is_finite() {
+            return Err(crate::scene::SceneError::Profile {
+                path: scene.path.clone(),
+                key,
+                message: format!(
+                    "the {} wheel and rail do not overlap laterally with the wheelset centred (wheel {}, rail {}): check the profiles' lateral origins and units",
+                    side.name(),
+                    placement.side(side).wheel.profile().name(),
+                    placement.side(side).rail.profile().name()
+                ),
+            }
+            .into());
+        }
+    }
+    Ok(placement)
 }

@@ -184,6 +184,8 @@ pub struct RawWheel {
     pub right_nominal_radius_mm: Option<f64>,
     /// Filter wavelength of the spline through wheel profiles read from files (0: none).
     pub smoothing_wavelength_mm: Option<f64>,
+    /// Drop measured points that step back (MiniProf fold-backs) instead of refusing them.
+    pub drop_step_backs: Option<bool>,
 }
 
 /// `[rail]`: profile (both sides, or per side) and inclination.
@@ -202,6 +204,8 @@ pub struct RawRail {
     pub profile_inclination: Option<String>,
     /// Filter wavelength of the spline through rail profiles read from files (0: none).
     pub smoothing_wavelength_mm: Option<f64>,
+    /// Drop measured points that step back (MiniProf fold-backs) instead of refusing them.
+    pub drop_step_backs: Option<bool>,
 }
 
 /// `[track]`.
@@ -309,6 +313,8 @@ pub struct Scene {
     pub rail_profile_inclination: Inclination,
     /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
     pub smoothing_wavelength_mm: [f64; 2],
+    /// Whether wheel and rail files may have points that step back dropped.
+    pub drop_step_backs: [bool; 2],
     /// Track and wheelset dimensions.
     pub layout: TrackLayout,
     /// Vertical load per wheel, N.
@@ -717,6 +723,10 @@ impl Scene {
             rail_profiles,
             rail_profile_inclination,
             smoothing_wavelength_mm,
+            drop_step_backs: [
+                raw.wheel.drop_step_backs.unwrap_or(false),
+                raw.rail.drop_step_backs.unwrap_or(false),
+            ],
             layout,
             wheel_load_n,
             wheel_material,
@@ -760,11 +770,20 @@ impl Scene {
                 }
             }
             ProfileRef::File(path) => {
-                let points = read::read_profile(path, kind).map_err(|e| err(e.to_string()))?;
-                let smoothing = match kind {
-                    ProfileKind::Wheel => self.smoothing_wavelength_mm[0],
-                    ProfileKind::Rail => self.smoothing_wavelength_mm[1],
+                let i = match kind {
+                    ProfileKind::Wheel => 0,
+                    ProfileKind::Rail => 1,
                 };
+                let options = read::ReadOptions {
+                    step_back: if self.drop_step_backs[i] {
+                        read::StepBack::Drop
+                    } else {
+                        read::StepBack::Refuse
+                    },
+                };
+                let points = read::read_profile_with(path, kind, &options)
+                    .map_err(|e| err(e.to_string()))?;
+                let smoothing = self.smoothing_wavelength_mm[i];
                 Profile::from_points(points, smoothing)
                     .map_err(|e| err(format!("{}: {e}", path.display())))
             }

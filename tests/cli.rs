@@ -207,6 +207,11 @@ fn bad_scenes_name_the_key_and_exit_2() {
             &["rail.left_profile", "wheel profile"],
         ),
         ("[rigid]\nsolver = \"fast\"", &["rigid.solver"]),
+        ("[load]\nwheel_load_kN = 1e306", &["load.wheel_load_kN"]),
+        (
+            "[quasi_elastic]\nepsilon_mm = 0.0",
+            &["quasi_elastic.epsilon_mm"],
+        ),
     ];
     for (body, expected) in cases {
         let s = scene(&dir, body);
@@ -242,6 +247,12 @@ fn bad_profile_files_name_the_file_and_line() {
         ("rail", "metres_values.csv", &["metres_values.csv"]),
         ("rail", "metres_header.csv", &["metres_header.csv"]),
         ("wheel", "rail_type_in.prw", &["rail_type_in.prw"]),
+        // A rail file given as the wheel.
+        (
+            "wheel",
+            "../MBench_UIC60_v3.prr",
+            &["MBench_UIC60_v3.prr", "rail"],
+        ),
     ];
     for (body, file, expected) in cases {
         let s = scene(
@@ -251,6 +262,33 @@ fn bad_profile_files_name_the_file_and_line() {
         let o = bin().arg("report").arg(&s).output().unwrap();
         assert_clean_failure(&o, 2, expected);
     }
+}
+
+#[test]
+fn wheel_and_rail_that_never_overlap_are_an_error() {
+    // Placement puts any rail's gauge point at half the gauge, so the head is always where a
+    // rail belongs; a wheel profile that covers only its flange back (s from -70 to -65 mm)
+    // lies inside the gauge, over no rail: placement refuses it, naming the profiles.
+    let dir = scratch("no_overlap");
+    let mut csv = String::from("y_mm,z_mm\n");
+    for i in 0..=60 {
+        let y = 2000.0 + 0.1 * f64::from(i);
+        csv.push_str(&format!("{y},{}\n", -0.01 * (y - 2003.0) * (y - 2003.0)));
+    }
+    std::fs::write(dir.join("rail.csv"), csv).unwrap();
+    let mut wheel = String::from("s_mm,F_mm\n");
+    for i in 0..=20 {
+        let s = -70.0 + 0.25 * f64::from(i);
+        wheel.push_str(&format!("{s},{}\n", 10.0 + 0.1 * f64::from(i)));
+    }
+    std::fs::write(dir.join("wheel.csv"), wheel).unwrap();
+    let s = scene(
+        &dir,
+        "[wheel]\nprofile = \"wheel.csv\"\n[rail]\nprofile = \"rail.csv\"",
+    );
+    let o = bin().arg("report").arg(&s).output().unwrap();
+    assert_clean_failure(&o, 2, &["do not overlap"]);
+    assert!(!dir.join("index.html").exists());
 }
 
 #[test]
