@@ -178,11 +178,12 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
         SideGap::new(&placement.left, 1.0),
         SideGap::new(&placement.right, -1.0),
     ];
-    let mut work = Work::default();
+    // Positions are independent: averaged in parallel (rayon), buffers per thread.
+    use rayon::prelude::*;
     let positions = rigid
         .positions
-        .iter()
-        .map(|p| {
+        .par_iter()
+        .map_init(Work::default, |work, p| {
             let mut result = [SideResult::default(), SideResult::default()];
             if p.stop == Stop::Converged {
                 for k in 0..2 {
@@ -194,7 +195,7 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
                             p.axle_height,
                             c.s,
                             settings,
-                            &mut work,
+                            work,
                         );
                     }
                 }
