@@ -411,7 +411,11 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     // A wheel that lies nowhere above its rail with the wheelset centred cannot touch it in
     // any sweep of a few centimetres: a unit mistake or a wrong profile, not a result.
     for (side, key) in [(Side::Left, WHEEL_KEYS[0]), (Side::Right, WHEEL_KEYS[1])] {
-        if !placement.resting_gap(side).is_finite() {
+        let pair = placement.side(side);
+        let (s_lo, s_hi) = pair.wheel.profile().domain();
+        let (y_lo, y_hi) = pair.rail.y_range();
+        let taping = pair.wheel.taping_line_mm();
+        if taping + s_hi < y_lo || taping + s_lo > y_hi {
             return Err(crate::scene::SceneError::Profile {
                 path: scene.path.clone(),
                 key,
