@@ -77,10 +77,10 @@ fn batch_of_8_parallel(bencher: divan::Bencher) {
     });
 }
 
-/// One sweep split into two halves solved in parallel (each half continues from its own
-/// start), against the whole sweep sequentially: what continuation is worth.
+/// One sweep split into two calls run in parallel (each continues from its own start),
+/// against one call (which itself runs its two directions from the centre in parallel).
 #[divan::bench(sample_count = 10)]
-fn rigid_sweep_split_in_two_parallel(bencher: divan::Bencher) {
+fn rigid_sweep_two_calls_in_parallel(bencher: divan::Bencher) {
     let scene = paper();
     let placement = pipeline::place(&scene).unwrap();
     let (a, b) = scene.sweep_mm.split_at(scene.sweep_mm.len() / 2);
@@ -93,7 +93,7 @@ fn rigid_sweep_split_in_two_parallel(bencher: divan::Bencher) {
 }
 
 #[divan::bench(sample_count = 10)]
-fn rigid_sweep_sequential(bencher: divan::Bencher) {
+fn rigid_sweep_one_call(bencher: divan::Bencher) {
     let scene = paper();
     let placement = pipeline::place(&scene).unwrap();
     bencher.bench(|| wheelrail::rigid::search(&placement, &scene.sweep_mm, scene.rigid_solver));
