@@ -228,6 +228,21 @@ pub fn study(
     scene: &Scene,
     settings: &[Setting],
     repeats: usize,
+    progress: impl FnMut(usize, usize, &str) + Send,
+) -> Result<Vec<Measurement>, crate::Error> {
+    // Timed single-threaded: the stages' own parallelism (rayon) is confined to one thread,
+    // so that settings compare by their work, not by how well they parallelise.
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .map_err(|e| crate::Error::Other(format!("cannot start the timing thread: {e}")))?;
+    pool.install(|| study_on_this_thread(scene, settings, repeats, progress))
+}
+
+fn study_on_this_thread(
+    scene: &Scene,
+    settings: &[Setting],
+    repeats: usize,
     mut progress: impl FnMut(usize, usize, &str),
 ) -> Result<Vec<Measurement>, crate::Error> {
     let reference_setting = reference_setting();
