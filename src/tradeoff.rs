@@ -324,8 +324,8 @@ fn errors(reference: &Run, run: &Run) -> Errors {
     }
     for (a, b) in reference.hertz.iter().zip(&run.hertz) {
         for k in 0..2 {
-            let ea = a.sides[k].contact.as_ref().and_then(|c| c.ellipse());
-            let eb = b.sides[k].contact.as_ref().and_then(|c| c.ellipse());
+            let ea = a.sides[k].ellipse();
+            let eb = b.sides[k].ellipse();
             if let (Some(x), Some(y)) = (ea, eb) {
                 e.a_rel = e.a_rel.max((y.a_mm / x.a_mm - 1.0).abs());
                 e.b_rel = e.b_rel.max((y.b_mm / x.b_mm - 1.0).abs());

@@ -62,6 +62,13 @@ pub struct SideHertz {
     pub status: String,
 }
 
+impl SideHertz {
+    /// The ellipse, where the contact is Hertzian.
+    pub fn ellipse(&self) -> Option<&super::Ellipse> {
+        self.contact.as_ref().and_then(|c| c.ellipse())
+    }
+}
+
 /// The Hertz results at one position.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Position {

@@ -509,22 +509,20 @@ pub fn epsilon_sensitivity(sweep: &RigidSweep, e: &EpsilonSweeps) -> Figure {
     Figure::single(with_onsets(chart, sweep))
 }
 
+/// `(y_ws, f(ellipse))` of wheel `k` over a Hertz sweep, NaN where there is no ellipse.
+fn ellipse_series(
+    h: &[crate::hertz::sweep::Position],
+    k: usize,
+    f: fn(&crate::hertz::Ellipse) -> f64,
+) -> Vec<(f64, f64)> {
+    h.iter()
+        .map(|p| (p.y_ws, p.sides[k].ellipse().map_or(f64::NAN, f)))
+        .collect()
+}
+
 /// Semi-axes of the contact ellipses (paper Fig. 6).
 pub fn semi_axes(h: &[crate::hertz::sweep::Position]) -> Figure {
-    let get = |k: usize, f: fn(&crate::hertz::Ellipse) -> f64| -> Vec<(f64, f64)> {
-        h.iter()
-            .map(|p| {
-                (
-                    p.y_ws,
-                    p.sides[k]
-                        .contact
-                        .as_ref()
-                        .and_then(|c| c.ellipse())
-                        .map_or(f64::NAN, f),
-                )
-            })
-            .collect()
-    };
+    let get = |k, f| ellipse_series(h, k, f);
     Figure::single(
         Chart::new("Semi-axes of the contact ellipses", SHIFT, "semi-axis (mm)")
             .series(Series::line("left a (rolling)", get(0, |e| e.a_mm)).color(LEFT))
@@ -544,24 +542,14 @@ pub fn semi_axes(h: &[crate::hertz::sweep::Position]) -> Figure {
 
 /// Maximum contact pressure.
 pub fn pressure(h: &[crate::hertz::sweep::Position]) -> Figure {
-    let get = |k: usize| -> Vec<(f64, f64)> {
-        h.iter()
-            .map(|p| {
-                (
-                    p.y_ws,
-                    p.sides[k]
-                        .contact
-                        .as_ref()
-                        .and_then(|c| c.ellipse())
-                        .map_or(f64::NAN, |e| e.p0_mpa),
-                )
-            })
-            .collect()
-    };
     Figure::single(
         Chart::new("Maximum contact pressure", SHIFT, "p0 (MPa)")
-            .series(Series::line("left", get(0)).color(LEFT))
-            .series(Series::line("right", get(1)).color(RIGHT).dashed()),
+            .series(Series::line("left", ellipse_series(h, 0, |e| e.p0_mpa)).color(LEFT))
+            .series(
+                Series::line("right", ellipse_series(h, 1, |e| e.p0_mpa))
+                    .color(RIGHT)
+                    .dashed(),
+            ),
     )
 }
 
