@@ -159,7 +159,7 @@ pub struct PlacedRail {
     gauge_point: [f64; 2],
     top: [f64; 2],
     /// Start guesses for [`PlacedRail::at`]: `(u, du/dY)` at `Y = y_range.0 + i h`, with
-    /// `h` = [`INVERSE_TABLE_STEP_MM`] (at most); cubic Hermite interpolation between them.
+    /// `h` = `INVERSE_TABLE_STEP_MM` (at most); cubic Hermite interpolation between them.
     inverse: Vec<[f64; 2]>,
     /// `1 / h` of `inverse`.
     inverse_scale: f64,
@@ -316,7 +316,7 @@ impl PlacedRail {
     /// [`PlacedRail::y_range`].
     ///
     /// Solves `Y(u) = y` by Newton's method from a tabulated inverse (one step to 1e-15 mm
-    /// on the arcs, two where the head turns steep: see [`INVERSE_TABLE_STEP_MM`]).
+    /// on the arcs, two where the head turns steep: see `INVERSE_TABLE_STEP_MM`).
     #[inline]
     pub fn at(&self, y: f64) -> Option<RailPoint> {
         let (y_lo, y_hi) = self.y_range();

@@ -371,13 +371,7 @@ pub fn hertz(
         let name = side.name();
         let ell = |f: &dyn Fn(&crate::hertz::Ellipse) -> f64| -> Vec<f64> {
             h.iter()
-                .map(|p| {
-                    p.sides[k]
-                        .contact
-                        .as_ref()
-                        .and_then(|c| c.ellipse())
-                        .map_or(f64::NAN, f)
-                })
+                .map(|p| p.sides[k].ellipse().map_or(f64::NAN, f))
                 .collect()
         };
         t = t
