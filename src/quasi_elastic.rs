@@ -343,6 +343,16 @@ fn side_average(
         }
     }
     work.regions = regions;
+    if patches.iter().all(|a| a.weight <= 0.0) {
+        // The weight is narrower than any node spacing (a minimum at a vertical end of the
+        // profile, or eps far below the gap's curvature): the average tends to the value at
+        // the minimum itself, the rigid contact point.
+        patches = vec![Average {
+            mean: fields_of(side, &at_rigid),
+            weight: 1.0,
+            min_gap: 0.0,
+        }];
+    }
     let total_weight: f64 = patches.iter().map(|a| a.weight).sum();
     let r0 = side.wheel().nominal_radius_mm();
     let phi = side.sign * roll;

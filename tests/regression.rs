@@ -179,3 +179,49 @@ fn scene_rejects_a_quadrature_step_that_cannot_finish() {
     let e = scene.unwrap_err().to_string();
     assert!(e.contains("quasi_elastic.max_step_mm"), "{e}");
 }
+
+/// Found by the stress suite in CI (radii 583.5 / 338.9 mm, vertical rails, eps = 1e-5 mm,
+/// y_ws = 21 mm): the minimum of the gap sits at the vertical flange-back end of the wheel
+/// profile, where the weight is narrower than any quadrature node spacing, and the Gauss-
+/// Legendre pass returned no patch for a converged contact. The average now tends to its
+/// limit, the value at the rigid contact point.
+#[test]
+fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
+    let placement = place(
+        "[wheel]\nleft_nominal_radius_mm = 583.54963191168\nright_nominal_radius_mm = 338.9177371966275\n\
+         [rail]\ninclination = \"vertical\"\n\
+         [track]\ngauge_mm = 1430.0\ngauge_point_depth_mm = 10.0\n\
+         [wheelset]\nflange_back_mm = 1355.0\n",
+    );
+    // The stress suite's sweep: -45..45 mm every 3 mm (continuation reaches 21 mm from it).
+    let ys: Vec<f64> = (0..31).map(|i| -45.0 + 3.0 * f64::from(i)).collect();
+    let rigid = rigid::search(&placement, &ys, Solver::Default);
+    let settings = Settings {
+        epsilon_mm: 1e-5,
+        ..Settings::default()
+    };
+    let qe = quasi_elastic::search(&placement, &rigid, &settings);
+    let mut checked = 0;
+    for (p, q) in rigid.positions.iter().zip(&qe.positions) {
+        if p.stop != Stop::Converged {
+            continue;
+        }
+        for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+            let patches = &q.side(side).patches;
+            assert!(
+                !patches.is_empty(),
+                "y_ws {}: {side:?} has no patch",
+                p.y_ws
+            );
+            // Where the fallback applies, the patch is the rigid point itself.
+            let rigid_s = p.contact[k].unwrap().s;
+            assert!(
+                patches.iter().any(|x| (x.s - rigid_s).abs() < 0.1),
+                "y_ws {}: {patches:?}",
+                p.y_ws
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 0);
+}
