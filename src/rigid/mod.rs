@@ -409,6 +409,7 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
     };
     let mut theta = theta0;
     let mut scan = !scratch.warm;
+    let mut retried_level = false;
     // The roll at which the basins were last scanned (warm basins: about the start roll).
     let mut scanned_theta = theta0;
     // Whether this iteration re-examines the previous pose after a verification scan.
@@ -449,6 +450,15 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
             if !fresh {
                 // The warm basins may have slid off the rail: scan before giving up.
                 scan = true;
+                continue;
+            }
+            if !retried_level {
+                // A start roll extrapolated across a jump of the roll can turn the wheels
+                // off their rails; no contact is declared only for the wheelset unrolled.
+                retried_level = true;
+                theta = 0.0;
+                scan = true;
+                (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
                 continue;
             }
             scratch.warm = false;
