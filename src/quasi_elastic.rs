@@ -428,21 +428,19 @@ fn gauss_region(
     breaks.clear();
     breaks.push((lo, true));
     breaks.push((hi, true));
-    for j in side.wheel().profile().joints() {
+    for &j in side.wheel_joints() {
         if j > lo && j < hi {
             breaks.push((j, false));
         }
     }
     // Rail joints: the wheel coordinate whose point lies above the joint, Y(s) = Y_joint
     // (Newton: dY/ds = cos + sin F', close to 1).
-    let rail = &side.pair.rail;
     let y_of = |s: f64| {
         let w = side.wheel().at(s);
         let [y, _] = pose.apply(w.y, w.z);
         (y, pose.cos - pose.sin * w.slope)
     };
-    for u in rail.profile().joints() {
-        let target = rail.point_of(u)[0];
+    for &target in side.rail_joint_ys() {
         let mut s = 0.5 * (lo + hi);
         for _ in 0..20 {
             let (y, dy) = y_of(s);

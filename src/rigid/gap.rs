@@ -163,6 +163,8 @@ pub struct SideGap<'a> {
     domain: (f64, f64),
     /// Section joints of the wheel profile (where its value may jump).
     joints: Vec<f64>,
+    /// Side-frame lateral positions of the rail profile's section joints.
+    rail_joint_ys: Vec<f64>,
 }
 
 /// Tabulated wheel `(s, Yw, Zw)` and rail, for the paper's solver.
@@ -210,6 +212,13 @@ impl<'a> SideGap<'a> {
             tabulated: None,
             domain: (lo, hi),
             joints: pair.wheel.profile().joints(),
+            rail_joint_ys: pair
+                .rail
+                .profile()
+                .joints()
+                .into_iter()
+                .map(|u| pair.rail.point_of(u)[0])
+                .collect(),
         }
     }
 
@@ -248,6 +257,16 @@ impl<'a> SideGap<'a> {
             }
         }
         best
+    }
+
+    /// Section joints of the wheel profile, increasing (mm).
+    pub fn wheel_joints(&self) -> &[f64] {
+        &self.joints
+    }
+
+    /// Side-frame lateral positions `Y` of the rail profile's section joints (mm).
+    pub fn rail_joint_ys(&self) -> &[f64] {
+        &self.rail_joint_ys
     }
 
     /// The wheel.
