@@ -590,6 +590,8 @@ pub fn hertz_accuracy(a: &HertzAccuracy) -> Figure {
         )
         .color(QE),
     )
+    .y_range(1e-18, 1e4)
+    .legend(LegendPosition::UpperRight)
     .x_log()
     .y_log();
     Figure::grid(
