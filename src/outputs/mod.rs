@@ -269,13 +269,14 @@ fn report_page(
     tables: &[NamedTable],
     figures: Vec<FigureEntry>,
 ) -> ReportPage {
+    // The stages, not their times: the page is reproducible (`--timings` prints the times).
     let mut summary = vec![format!(
         "Stages run: {}.",
         results
             .record
             .stages
             .iter()
-            .map(|(s, t)| format!("{} ({:.1} ms)", s.name(), 1e3 * t))
+            .map(|(s, _)| s.name())
             .collect::<Vec<_>>()
             .join(", ")
     )];
