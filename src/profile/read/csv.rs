@@ -88,17 +88,7 @@ fn check_header(
         "y_mm" => Some(ProfileKind::Rail),
         _ => None,
     };
-    if let Some(found) = declared
-        && found != kind
-    {
-        return Err(ReadError::WrongKind {
-            origin: origin.to_owned(),
-            line: Some(line),
-            expected: kind,
-            found,
-        });
-    }
-    Ok(())
+    super::validate::check_kind(declared.map(|k| (k, Some(line))), kind, origin)
 }
 
 fn check_unit(name: &str, origin: &str, line: usize, column: usize) -> Result<(), ReadError> {

@@ -316,16 +316,7 @@ pub fn read_profile_with(
     let Some((format, implied)) = ProfileFormat::from_extension(&extension) else {
         return Err(ReadError::UnknownFormat { origin, extension });
     };
-    if let Some(found) = implied
-        && found != kind
-    {
-        return Err(ReadError::WrongKind {
-            origin,
-            line: None,
-            expected: kind,
-            found,
-        });
-    }
+    validate::check_kind(implied.map(|k| (k, None)), kind, &origin)?;
     let bytes = std::fs::read(path).map_err(|source| ReadError::Io {
         origin: origin.clone(),
         source,

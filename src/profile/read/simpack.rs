@@ -232,16 +232,7 @@ pub(super) fn parse(
             "no `point.begin ... point.end` block in the file".to_owned(),
         ));
     }
-    if let Some((found, line)) = declared
-        && found != kind
-    {
-        return Err(ReadError::WrongKind {
-            origin: origin.to_owned(),
-            line: Some(line),
-            expected: kind,
-            found,
-        });
-    }
+    super::validate::check_kind(declared.map(|(k, line)| (k, Some(line))), kind, origin)?;
     for (key, unit) in [
         ("units.len.f", proc.units_len),
         ("units.ang.f", proc.units_ang),

@@ -33,6 +33,7 @@
 use super::StepBack;
 use super::error::{Axis, Field, ReadError};
 use super::fields::RawPoint;
+use crate::profile::ProfileKind;
 
 /// Fewest points a profile may have. A wheel tread with flange or a rail head with its gauge
 /// corner cannot be described by fewer; the real files have hundreds. This is a sanity floor
@@ -113,6 +114,24 @@ pub(crate) fn finish(
     check_monotonic(&points, origin)?;
     check_extents(&points, origin)?;
     Ok((points.iter().map(|p| [p.lat, p.vert]).collect(), dropped))
+}
+
+/// `Ok` unless the file declares a kind (`declared`: the kind and the line that says so,
+/// `None` for the extension) other than the `expected` one: a rail file read as a wheel.
+pub(super) fn check_kind(
+    declared: Option<(ProfileKind, Option<usize>)>,
+    expected: ProfileKind,
+    origin: &str,
+) -> Result<(), ReadError> {
+    match declared {
+        Some((found, line)) if found != expected => Err(ReadError::WrongKind {
+            origin: origin.to_owned(),
+            line,
+            expected,
+            found,
+        }),
+        _ => Ok(()),
+    }
 }
 
 fn check_count(found: usize, origin: &str) -> Result<(), ReadError> {
