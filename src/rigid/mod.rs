@@ -470,43 +470,38 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
             pos.stop = stop;
             pos
         };
-        if f.abs() <= ROLL_RESIDUAL_TOL_MM {
+        let within = f.abs() <= ROLL_RESIDUAL_TOL_MM;
+        if !within {
+            if f > 0.0 {
+                hi = hi.min(theta);
+            } else {
+                lo = lo.max(theta);
+            }
+        }
+        // A bracket collapsed to the last bit of the roll: where rounding of the gaps (about
+        // 1e-13 mm each at |g| ~ 450 mm) keeps |F| just above the tolerance, the root is found
+        // as well as doubles allow, and accepted within the promised COLLAPSED_RESIDUAL_MM.
+        let collapsed = !within && hi - lo <= BRACKET_COLLAPSE_RAD * theta.abs().max(1.0);
+        if within || (collapsed && f.abs() <= COLLAPSED_RESIDUAL_MM) {
             if fresh {
                 scratch.warm = true;
                 return done(Stop::Converged);
             }
             // Verify against a scan at the solution: a basin that was not a coarse minimum
-            // where the basins were found may hold the lowest gap now. The bracket was built
-            // on the old basins and is dropped.
+            // where the basins were found may hold the lowest gap now. A bracket built on the
+            // old basins is dropped (a collapsed one is kept: it pins this roll).
             scan = true;
             verify = true;
-            (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
+            if within {
+                (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
+            }
             continue;
         }
         if iterations >= DEFAULT_MAX_ITER {
             scratch.warm = false;
             return done(Stop::IterationCap);
         }
-        if f > 0.0 {
-            hi = hi.min(theta);
-        } else {
-            lo = lo.max(theta);
-        }
-        if hi - lo <= BRACKET_COLLAPSE_RAD * theta.abs().max(1.0) {
-            // The root is bracketed to the last bit of the roll. Where rounding of the gaps
-            // (about 1e-13 mm each at |g| ~ 450 mm) keeps |F| just above the tolerance, the
-            // root is found as well as doubles allow: converged if within the promised
-            // COLLAPSED_RESIDUAL_MM, stalled (flagged) otherwise.
-            if f.abs() <= COLLAPSED_RESIDUAL_MM {
-                if fresh {
-                    scratch.warm = true;
-                    return done(Stop::Converged);
-                }
-                // Verify with a scan at this roll first, as for a normal convergence.
-                scan = true;
-                verify = true;
-                continue;
-            }
+        if collapsed {
             scratch.warm = false;
             return done(Stop::Stalled);
         }
