@@ -383,22 +383,33 @@ fn hertz_accuracy() -> HertzAccuracy {
 pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     const WHEEL_KEYS: [&str; 2] = ["wheel.left_profile", "wheel.right_profile"];
     const RAIL_KEYS: [&str; 2] = ["rail.left_profile", "rail.right_profile"];
-    let mut pairs = Vec::with_capacity(2);
+    let mut pairs: Vec<SidePair> = Vec::with_capacity(2);
+    let placement_error =
+        |key: &'static str, e: crate::track::PlacementError| crate::scene::SceneError::Profile {
+            path: scene.path.clone(),
+            key,
+            message: e.to_string(),
+        };
     for i in 0..2 {
-        let wheel =
-            scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?;
-        let rail = scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, RAIL_KEYS[i])?;
-        let placement_error = |key: &'static str, e: crate::track::PlacementError| {
-            crate::scene::SceneError::Profile {
-                path: scene.path.clone(),
-                key,
-                message: e.to_string(),
-            }
+        // The right side takes the left's profiles when the scene names the same ones (the
+        // usual case): read, fitted and placed once.
+        let same_wheel = i == 1 && scene.wheel_profiles[1] == scene.wheel_profiles[0];
+        let wheel = match pairs.first() {
+            Some(left) if same_wheel => left.wheel.profile().clone(),
+            _ => scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?,
         };
         let wheel = PlacedWheel::place(wheel, scene.nominal_radius_mm[i], &scene.layout)
             .map_err(|e| placement_error(WHEEL_KEYS[i], e))?;
-        let rail = PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
-            .map_err(|e| placement_error(RAIL_KEYS[i], e))?;
+        let same_rail = i == 1 && scene.rail_profiles[1] == scene.rail_profiles[0];
+        let rail = match pairs.first() {
+            Some(left) if same_rail => left.rail.clone(),
+            _ => {
+                let rail =
+                    scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, RAIL_KEYS[i])?;
+                PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
+                    .map_err(|e| placement_error(RAIL_KEYS[i], e))?
+            }
+        };
         pairs.push(SidePair { wheel, rail });
     }
     let right = pairs.pop().expect("two sides were pushed");

@@ -5,6 +5,7 @@
 //! README for the format; `reports/paper/scene.toml` is the paper's scene.
 
 use crate::profile::{Profile, ProfileKind, read};
+use crate::quasi_elastic::{self, Quadrature};
 use crate::track::{Inclination, TrackLayout};
 use serde::Deserialize;
 use std::fmt;
@@ -19,6 +20,12 @@ pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
 /// The smallest step of the trapezoid quadrature (mm): its nodes cover the low regions
 /// (millimetres wide), so 1e-6 mm would take half a minute per position.
 pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
+/// The shortest Gauss-Legendre panel accepted, in weight widths: the tradeoff study's
+/// reference uses 0.5; 0.05 would already take seconds per sweep.
+pub const MIN_PANEL_WIDTHS: f64 = 0.05;
+/// The longest Gauss-Legendre panel accepted, in weight widths: 8 nodes over 8 widths no
+/// longer resolve the weight (4 widths already err by 8e-5 in a and b on the paper scene).
+pub const MAX_PANEL_WIDTHS: f64 = 8.0;
 /// The smallest regularisation parameter (mm): below it the weight is narrower than the
 /// spacing of double-precision numbers around a contact point.
 pub const MIN_EPSILON_MM: f64 = 1e-6;
@@ -152,6 +159,8 @@ pub struct RawQuasiElastic {
     pub quadrature: Option<String>,
     /// Largest step of the trapezoid quadrature (mm).
     pub max_step_mm: Option<f64>,
+    /// Panel length of the Gauss-Legendre quadrature, in weight widths.
+    pub panel_widths: Option<f64>,
 }
 
 /// `[hertz]`.
@@ -610,41 +619,7 @@ impl Scene {
                 qe.cutoff,
                 crate::quasi_elastic::DEFAULT_CUTOFF,
             )?,
-            quadrature: match (qe.quadrature.as_deref(), qe.max_step_mm) {
-                (None | Some("gauss_legendre"), None) => {
-                    crate::quasi_elastic::Quadrature::GaussLegendre
-                }
-                (None | Some("gauss_legendre"), Some(_)) => {
-                    return Err(invalid(
-                        "quasi_elastic.max_step_mm",
-                        "applies to quadrature = \"trapezoid\" only".into(),
-                    ));
-                }
-                (Some("trapezoid"), step) => {
-                    let max_step_mm = positive(
-                        "quasi_elastic.max_step_mm",
-                        step,
-                        crate::quasi_elastic::DEFAULT_MAX_STEP_MM,
-                    )?;
-                    if max_step_mm < MIN_TRAPEZOID_STEP_MM {
-                        return Err(invalid(
-                            "quasi_elastic.max_step_mm",
-                            format!(
-                                "{max_step_mm} mm is below {MIN_TRAPEZOID_STEP_MM} mm: the quadrature would not finish"
-                            ),
-                        ));
-                    }
-                    crate::quasi_elastic::Quadrature::Trapezoid { max_step_mm }
-                }
-                (Some(other), _) => {
-                    return Err(invalid(
-                        "quasi_elastic.quadrature",
-                        format!(
-                            "unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""
-                        ),
-                    ));
-                }
-            },
+            quadrature: quadrature(qe).map_err(|(key, message)| invalid(key, message))?,
         };
         if quasi_elastic.epsilon_mm < MIN_EPSILON_MM {
             return Err(invalid(
@@ -791,6 +766,62 @@ impl Scene {
     }
 }
 
+/// The quadrature of `[quasi_elastic]`: its kind and the one step key that kind takes, or
+/// the offending key and a message.
+fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)> {
+    let finite_positive = |key: &'static str, v: f64| {
+        if v.is_finite() && v > 0.0 {
+            Ok(v)
+        } else {
+            Err((key, format!("{v} must be a positive finite number")))
+        }
+    };
+    match (qe.quadrature.as_deref(), qe.max_step_mm, qe.panel_widths) {
+        (None | Some("gauss_legendre"), Some(_), _) => Err((
+            "quasi_elastic.max_step_mm",
+            "applies to quadrature = \"trapezoid\" only".into(),
+        )),
+        (None | Some("gauss_legendre"), None, panel_widths) => {
+            let key = "quasi_elastic.panel_widths";
+            let panel_widths = finite_positive(
+                key,
+                panel_widths.unwrap_or(quasi_elastic::DEFAULT_PANEL_WIDTHS),
+            )?;
+            if !(MIN_PANEL_WIDTHS..=MAX_PANEL_WIDTHS).contains(&panel_widths) {
+                return Err((
+                    key,
+                    format!(
+                        "{panel_widths} is outside {MIN_PANEL_WIDTHS} to {MAX_PANEL_WIDTHS} weight widths: shorter panels would take minutes, longer ones no longer resolve the weight"
+                    ),
+                ));
+            }
+            Ok(Quadrature::GaussLegendre { panel_widths })
+        }
+        (Some("trapezoid"), _, Some(_)) => Err((
+            "quasi_elastic.panel_widths",
+            "applies to quadrature = \"gauss_legendre\" only".into(),
+        )),
+        (Some("trapezoid"), step, None) => {
+            let key = "quasi_elastic.max_step_mm";
+            let max_step_mm =
+                finite_positive(key, step.unwrap_or(quasi_elastic::DEFAULT_MAX_STEP_MM))?;
+            if max_step_mm < MIN_TRAPEZOID_STEP_MM {
+                return Err((
+                    key,
+                    format!(
+                        "{max_step_mm} mm is below {MIN_TRAPEZOID_STEP_MM} mm: the quadrature would not finish"
+                    ),
+                ));
+            }
+            Ok(Quadrature::Trapezoid { max_step_mm })
+        }
+        (Some(other), _, _) => Err((
+            "quasi_elastic.quadrature",
+            format!("unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""),
+        )),
+    }
+}
+
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
 fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
     let from = raw.from_mm.unwrap_or(-15.0);
@@ -872,6 +903,22 @@ mod tests {
             ("[load]\nwheel_load_kN = -70.0", "load.wheel_load_kN"),
             ("[rail]\ninclination = \"1:x\"", "rail.inclination"),
             ("[outputs]\nfigures = [\"nope\"]", "outputs.figures"),
+            (
+                "[quasi_elastic]\npanel_widths = 20.0",
+                "quasi_elastic.panel_widths",
+            ),
+            (
+                "[quasi_elastic]\npanel_widths = 0.01",
+                "quasi_elastic.panel_widths",
+            ),
+            (
+                "[quasi_elastic]\nquadrature = \"trapezoid\"\npanel_widths = 2.0",
+                "quasi_elastic.panel_widths",
+            ),
+            (
+                "[quasi_elastic]\nmax_step_mm = 0.05",
+                "quasi_elastic.max_step_mm",
+            ),
         ];
         for (text, key) in cases {
             let e = scene(text).unwrap_err().to_string();

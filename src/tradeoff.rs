@@ -66,8 +66,12 @@ pub struct Errors {
     pub p0_rel: f64,
 }
 
-/// The reference: analytic profiles, default solver, Gauss-Legendre quadrature with the
-/// cut-off at exp(-60), exact Hertz.
+/// Panel length of the reference's Gauss-Legendre quadrature, in weight widths: a sixth of
+/// the default's.
+pub const REFERENCE_PANEL_WIDTHS: f64 = 0.5;
+
+/// The reference: analytic profiles, default solver, Gauss-Legendre quadrature on panels of
+/// half a weight width with the cut-off at exp(-60), exact Hertz.
 pub fn reference_setting() -> Setting {
     Setting {
         label: "reference".into(),
@@ -75,6 +79,9 @@ pub fn reference_setting() -> Setting {
         solver: Solver::Default,
         quasi_elastic: quasi_elastic::Settings {
             cutoff: 60.0,
+            quadrature: quasi_elastic::Quadrature::GaussLegendre {
+                panel_widths: REFERENCE_PANEL_WIDTHS,
+            },
             ..quasi_elastic::Settings::default()
         },
         hertz: Method::Exact,
@@ -108,7 +115,7 @@ pub fn paper_setting(scene: &Scene) -> Setting {
 }
 
 /// The grid of the study: the default, the paper's, and one-at-a-time and combined
-/// variations of profile sampling, solver, quadrature step, cut-off and Hertz method.
+/// variations of profile sampling, solver, quadrature kind and step, cut-off and Hertz method.
 pub fn grid(scene: &Scene) -> Vec<Setting> {
     let d = default_setting(scene);
     let mut out = vec![d.clone(), paper_setting(scene)];
@@ -136,7 +143,17 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
             ..d.clone()
         });
     }
-    for cutoff in [10.0, 20.0] {
+    for panel_widths in [2.0, 4.0] {
+        out.push(Setting {
+            label: format!("Gauss-Legendre panels of {panel_widths} widths"),
+            quasi_elastic: quasi_elastic::Settings {
+                quadrature: quasi_elastic::Quadrature::GaussLegendre { panel_widths },
+                ..d.quasi_elastic
+            },
+            ..d.clone()
+        });
+    }
+    for cutoff in [10.0, 15.0, 37.0] {
         out.push(Setting {
             label: format!("cut-off exp(-{cutoff})"),
             quasi_elastic: quasi_elastic::Settings {

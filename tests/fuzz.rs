@@ -261,7 +261,7 @@ fn apply(text: &str, mutations: &[Mutation]) -> String {
 
 /// Every key of the scene format, by section (`""` for the top level), and a few that do not
 /// exist.
-const KEYS: [(&str, &str); 37] = [
+const KEYS: [(&str, &str); 38] = [
     ("", "name"),
     ("", "title"),
     ("wheel", "profile"),
@@ -294,6 +294,7 @@ const KEYS: [(&str, &str); 37] = [
     ("quasi_elastic", "cutoff"),
     ("quasi_elastic", "max_step_mm"),
     ("quasi_elastic", "quadrature"),
+    ("quasi_elastic", "panel_widths"),
     ("hertz", "method"),
     ("hertz", "contact"),
     ("hertz", "normal_load"),
@@ -418,8 +419,13 @@ fn check_scene(text: &str) -> Option<Scene> {
     let qe = scene.quasi_elastic;
     assert!(qe.epsilon_mm > 0.0 && qe.epsilon_mm <= 1.0);
     assert!(qe.cutoff.is_finite() && qe.cutoff > 0.0);
-    if let wheelrail::quasi_elastic::Quadrature::Trapezoid { max_step_mm } = qe.quadrature {
-        assert!(max_step_mm.is_finite() && max_step_mm >= 1e-4);
+    match qe.quadrature {
+        wheelrail::quasi_elastic::Quadrature::Trapezoid { max_step_mm } => {
+            assert!(max_step_mm.is_finite() && max_step_mm >= 1e-4);
+        }
+        wheelrail::quasi_elastic::Quadrature::GaussLegendre { panel_widths } => {
+            assert!((0.05..=8.0).contains(&panel_widths));
+        }
     }
     let layout = &scene.layout;
     assert!(layout.gauge_mm.is_finite() && layout.flange_back_mm < layout.gauge_mm);

@@ -89,7 +89,7 @@ fn two_equal_minima_give_two_patches() {
 
 #[test]
 fn cutoff_changes_nothing_at_output_precision() {
-    // Cutting at exp(-37) against cutting at exp(-60) (3 ulps of the weight): same averages
+    // Cutting at exp(-25) (the default) against cutting at exp(-60): same averages
     // to 1e-9 mm (10 significant digits of the outputs) at every position of a coarse paper
     // sweep. The cut-off moves the ends of the integration regions and so the quadrature
     // panels: the results differ by the quadrature's own error, about 1e-12 mm (measured).

@@ -249,8 +249,10 @@ pub fn rigid_jumps(sweep: &RigidSweep) -> Result<Table, TableError> {
 pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
     let mut t = Table::builder()
         .comment(format!(
-            "quasi-elastic contact: weights exp(-(d - d_min)/eps), eps = {} mm, cut-off {} eps, trapezoid quadrature",
-            q.settings.epsilon_mm, q.settings.cutoff
+            "quasi-elastic contact: weights exp(-(d - d_min)/eps), eps = {} mm, cut-off {} eps, quadrature {}",
+            q.settings.epsilon_mm,
+            q.settings.cutoff,
+            q.settings.quadrature.name()
         ))
         .comment(TRACK_FRAME)
         .comment(PER_WHEEL)
@@ -431,7 +433,7 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError>
         |f: &dyn Fn(&crate::tradeoff::Measurement) -> f64| m.iter().map(f).collect::<Vec<_>>();
     Table::builder()
         .comment("run time against error: the scene's pipeline (placement, rigid, quasi-elastic, Hertz; no rendering) per setting, single-threaded")
-        .comment("errors against the reference (analytic profiles, default solver, Gauss-Legendre quadrature, cut-off exp(-60), exact Hertz), max over the sweep and both wheels; contact_mm excludes positions within one step of a reference jump; qe_location_mm is weight-averaged over the patches")
+        .comment("errors against the reference (analytic profiles, default solver, Gauss-Legendre panels of half a weight width, cut-off exp(-60), exact Hertz), max over the sweep and both wheels; contact_mm excludes positions within one step of a reference jump; qe_location_mm is weight-averaged over the patches")
         .comment("times are machine-dependent: compare settings as ratios within one run")
         .text("setting", m.iter().map(|x| x.setting.label.clone()))
         .numeric("profile_step_mm", col(&|x| x.setting.profile_step_mm.unwrap_or(f64::NAN)))

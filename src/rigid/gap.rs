@@ -7,14 +7,11 @@
 //! the axle, paper Sect. 3; the lateral motion caused by roll is kept). The gap is
 //! `d(s) = z(s) - Zrail(Y(s))`; without the axle height `h` it is `g(s) = d(s) - h`.
 
-use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
+use crate::track::{HeightTable, PlacedWheel, RailPoint, SidePair, WheelPoint};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
 /// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].
 pub const COARSE_STEP_MM: f64 = 0.25;
-/// Step of the uniform table of rail heights used by the coarse scan (mm); linear
-/// interpolation errs by at most kappa h^2 / 8 = 3e-6 mm on the R13 gauge corner.
-pub const RAIL_TABLE_STEP_MM: f64 = 0.02;
 /// Coarse minima within this margin of the lowest coarse minimum are all refined. It bounds
 /// the error of the coarse values (kappa h^2 / 2 = 0.006 mm for a relative curvature of
 /// 1/5 mm^-1 at 0.25 mm) with a safety factor of 8.
@@ -98,57 +95,8 @@ impl GapPoint {
     }
 }
 
-/// Uniform table of rail heights in the side frame, for the coarse scan only.
-#[derive(Debug, Clone)]
-struct RailTable {
-    y0: f64,
-    inv_step: f64,
-    /// Largest table coordinate `t = (y - y0) / step` inside the table (`z.len() - 2`).
-    t_max: f64,
-    /// Heights at `y0 + i step`, the last one repeated so that interpolation at `t_max`
-    /// reads a valid neighbour.
-    z: Vec<f64>,
-}
-
-impl RailTable {
-    fn new(rail: &PlacedRail, step_mm: f64) -> RailTable {
-        let (lo, hi) = rail.y_range();
-        let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
-        let step = (hi - lo) / n as f64;
-        let mut z: Vec<f64> = (0..=n)
-            .map(|i| {
-                rail.at((lo + i as f64 * step).min(hi))
-                    .map_or(f64::NAN, |p| p.z)
-            })
-            .collect();
-        z.push(z[n]);
-        RailTable {
-            y0: lo,
-            inv_step: 1.0 / step,
-            t_max: n as f64,
-            z,
-        }
-    }
-
-    #[inline]
-    fn height(&self, y: f64) -> Option<f64> {
-        let t = (y - self.y0) * self.inv_step;
-        // Also rejects NaN.
-        if !(t >= 0.0 && t <= self.t_max) {
-            return None;
-        }
-        // Through i32 (the table is far shorter): one conversion each way, where usize
-        // would cost a dozen instructions for its saturation and sign handling.
-        let ti = t as i32;
-        let f = t - f64::from(ti);
-        let i = ti as usize;
-        let (a, b) = (self.z[i], self.z[i + 1]);
-        Some(a + f * (b - a))
-    }
-}
-
-/// One side's geometry prepared for repeated gap evaluations: the placed pair, the coarse
-/// wheel samples and the rail table. Built once per sweep.
+/// One side's geometry prepared for repeated gap evaluations: the placed pair and the coarse
+/// wheel samples (the coarse scans read the rail's [`HeightTable`]). Built once per sweep.
 #[derive(Debug, Clone)]
 pub struct SideGap<'a> {
     /// The wheel and rail of the side.
@@ -156,7 +104,6 @@ pub struct SideGap<'a> {
     /// +1 left, -1 right.
     pub sign: f64,
     coarse: Vec<[f64; 3]>,
-    table: RailTable,
     tabulated: Option<Tables>,
     /// The wheel profile's domain: beyond it the profile is clamped, and a point there
     /// would be a phantom of the wheel's end displaced sideways.
@@ -171,7 +118,7 @@ pub struct SideGap<'a> {
 #[derive(Debug, Clone)]
 struct Tables {
     wheel: Vec<[f64; 3]>,
-    rail: RailTable,
+    rail: HeightTable,
 }
 
 /// Keeps the coarse minimum `(g, i)` among the lowest `found.len()`.
@@ -208,7 +155,6 @@ impl<'a> SideGap<'a> {
             pair,
             sign,
             coarse,
-            table: RailTable::new(&pair.rail, RAIL_TABLE_STEP_MM),
             tabulated: None,
             domain: (lo, hi),
             joints: pair.wheel.profile().joints(),
@@ -236,7 +182,7 @@ impl<'a> SideGap<'a> {
             .collect();
         self.tabulated = Some(Tables {
             wheel,
-            rail: RailTable::new(&self.pair.rail, step_mm),
+            rail: HeightTable::new(&self.pair.rail, step_mm),
         });
         self
     }
@@ -315,7 +261,7 @@ impl<'a> SideGap<'a> {
         if n == 0 {
             return;
         }
-        let table = &self.table;
+        let table = self.pair.rail.heights();
         let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
@@ -361,6 +307,7 @@ impl<'a> SideGap<'a> {
         // not low, exactly as the table would answer.
         let (first, last) = self.over_rail(pose);
         let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
+        let table = self.pair.rail.heights();
         let mut open: Option<usize> = None;
         let close = |first_low: usize, i: usize, out: &mut Vec<(f64, f64)>| {
             let lo = self.coarse[first_low.saturating_sub(1)][0];
@@ -374,7 +321,7 @@ impl<'a> SideGap<'a> {
             let i = i + first;
             let y = delta + cos * yw - sin * zw;
             let z = sin * yw + cos * zw;
-            let low = self.table.height(y).is_some_and(|zr| z - zr < threshold);
+            let low = table.height(y).is_some_and(|zr| z - zr < threshold);
             match (low, open) {
                 (true, None) => open = Some(i),
                 (false, Some(first_low)) => {

@@ -622,7 +622,15 @@ fn find_jumps(
             }
             let (mut pa, mut pb) = (w[0], w[1]);
             let mut cold = true;
-            while pb.y_ws - pa.y_ws > JUMP_REFINE_MM {
+            let motion = |pa: &Position, pb: &Position| match (pa.side(side), pb.side(side)) {
+                (Some(ca), Some(cb)) => (ca.s - cb.s).abs(),
+                _ => f64::INFINITY,
+            };
+            // A jump keeps its size in the half that holds it; a contact point that only
+            // moves fast moves less across each half, and once it moves less than
+            // JUMP_CONFIRM_MM across the interval the candidate is dropped (most candidates
+            // near the flange are such, after about 3 halvings instead of 10).
+            while pb.y_ws - pa.y_ws > JUMP_REFINE_MM && motion(&pa, &pb) > JUMP_CONFIRM_MM {
                 let mid = solve(0.5 * (pa.y_ws + pb.y_ws), pa.roll, cold);
                 cold = false;
                 let Some(m) = mid.side(side) else { break };
