@@ -256,9 +256,11 @@ const GL8_W: [f64; 4] = [
     0.222_381_034_453_374_5,
     0.101_228_536_290_376_3,
 ];
-/// Bounds of the weight width used to size panels and the barrier scan (mm): below, the
-/// contact is so stiff that 1 micrometre panels are plenty; above (nearly conformal
-/// contact, d'' -> 0) panels of 2 mm still follow the profile's own variation.
+/// Bounds of the weight width used to size panels (mm): below, the contact is so stiff that
+/// micrometre panels are plenty; above (nearly conformal contact, d'' -> 0) the panels
+/// follow the profile's own variation instead of the weight. Measured on the paper scene
+/// with panels of 3 widths: raising the upper bound to 2 mm saves a fifth of the nodes but
+/// errs by 2e-6 in a and b (1.2e-8 at 1 mm).
 const WIDTH_BOUNDS_MM: (f64, f64) = (1e-3, 1.0);
 
 fn fields_of(side: &SideGap, p: &crate::rigid::gap::GapPoint) -> [f64; FIELDS] {
@@ -496,16 +498,6 @@ fn gauss_region(
                 Some(p) if p.dg < 0.0 => b = m,
                 _ => a = m,
             }
-        }
-        if std::env::var("DBG").is_ok() {
-            eprintln!(
-                "barrier {} from [{}, {}] delta {} sign {}",
-                0.5 * (a + b),
-                work.nodes[i - 1],
-                work.nodes[i + 1],
-                pose.delta,
-                side.sign
-            );
         }
         work.breaks.push((0.5 * (a + b), true));
     }

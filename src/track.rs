@@ -221,6 +221,8 @@ pub struct PlacedRail {
     inverse: Vec<[f64; 2]>,
     /// `1 / h` of `inverse`.
     inverse_scale: f64,
+    /// `h` of `inverse` (kept: a division less per lookup).
+    inverse_step: f64,
     /// Heights every [`HEIGHT_TABLE_STEP_MM`], built once with the placement.
     heights: HeightTable,
 }
@@ -256,6 +258,7 @@ impl PlacedRail {
             top: [0.0, 0.0],
             inverse: Vec::new(),
             inverse_scale: 0.0,
+            inverse_step: 0.0,
             heights: HeightTable {
                 y0: 0.0,
                 inv_step: 0.0,
@@ -410,7 +413,7 @@ impl PlacedRail {
         let ti = (t as i32).min(last as i32);
         let f = t - f64::from(ti);
         let i = ti as usize;
-        let h = 1.0 / self.inverse_scale;
+        let h = self.inverse_step;
         let ([u0, m0], [u1, m1]) = (self.inverse[i], self.inverse[i + 1]);
         let g = 1.0 - f;
         // Hermite basis in Horner-friendly form.
@@ -476,6 +479,7 @@ impl PlacedRail {
             })
             .collect();
         self.inverse_scale = 1.0 / h;
+        self.inverse_step = h;
     }
 
     #[inline]

@@ -95,7 +95,9 @@ fn depth_of_half(u: f64) -> [f64; 3] {
 fn arc_below_centre((cy, cd): (f64, f64), r: f64, u: f64) -> [f64; 3] {
     let v = u - cy;
     let root = (r * r - v * v).max(0.0).sqrt();
-    [cd - root, v / root, r * r / (root * root * root)]
+    // One division: the derivatives share 1 / root.
+    let inv = 1.0 / root;
+    [cd - root, v * inv, r * r * inv * inv * inv]
 }
 
 #[cfg(test)]

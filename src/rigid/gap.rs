@@ -385,6 +385,15 @@ impl<'a> SideGap<'a> {
         None
     }
 
+    /// The minimum of the gap inside `basin` only: `None` when it lies at an end of the
+    /// basin with the gap still falling outwards (the minimum has left it).
+    pub fn minimum_within(&self, basin: Basin, start: f64, pose: &SidePose) -> Option<GapPoint> {
+        let (lo, hi) = basin;
+        let p = self.newton_in(lo, hi, start.clamp(lo, hi), pose)?;
+        let beyond = (p.s <= lo + AT_END_MM && p.dg > 0.0) || (p.s >= hi - AT_END_MM && p.dg < 0.0);
+        (!beyond).then(|| self.lowest_at_joints(p, lo, hi, pose))
+    }
+
     /// `p`, or the one-sided limit of the gap at a section joint of the wheel profile inside
     /// `[lo, hi]` where that is clearly lower. A profile whose value jumps at a joint (S1002:
     /// 3.6e-5 mm at s = -26, 1.2e-4 mm at s = -35) can have its minimum there, which no
