@@ -161,7 +161,13 @@ pub struct HeightTable {
     /// Heights at `y0 + i step`, the last one repeated so that interpolation at `t_max`
     /// reads a valid neighbour.
     z: Vec<f64>,
+    /// `block_max[k][j]`: the highest of `z[j B ..= (j + 2^k) B]`, `B` = [`HEIGHT_BLOCK`] (a
+    /// sparse table: the maximum over any run of blocks is the larger of two entries).
+    block_max: Vec<Vec<f64>>,
 }
+
+/// Entries of [`HeightTable`] per block of its block maxima.
+const HEIGHT_BLOCK: usize = 16;
 
 impl HeightTable {
     /// Tabulates `rail` over its [`PlacedRail::y_range`] with a step of at most `step_mm`.
@@ -176,12 +182,52 @@ impl HeightTable {
             })
             .collect();
         z.push(z[n]);
+        // Every interpolated height between entries i and i + 1 lies below the maximum of
+        // block i / B, which includes the first entry of the next block.
+        let blocks = n / HEIGHT_BLOCK + 1;
+        let mut block_max = vec![
+            (0..blocks)
+                .map(|j| {
+                    let end = (j * HEIGHT_BLOCK + HEIGHT_BLOCK).min(n + 1);
+                    z[j * HEIGHT_BLOCK..=end]
+                        .iter()
+                        .fold(f64::NEG_INFINITY, |m, &v| m.max(v))
+                })
+                .collect::<Vec<f64>>(),
+        ];
+        let mut span = 1;
+        while 2 * span <= blocks {
+            let below = &block_max[block_max.len() - 1];
+            let level = (0..=blocks - 2 * span)
+                .map(|j| below[j].max(below[j + span]))
+                .collect();
+            block_max.push(level);
+            span *= 2;
+        }
         HeightTable {
             y0: lo,
             inv_step: 1.0 / step,
             t_max: n as f64,
             z,
+            block_max,
         }
+    }
+
+    /// An upper bound of the interpolated height over `[y_lo, y_hi]`, or `None` where that
+    /// interval misses the table. Exact to within the height variation of 16 entries.
+    #[inline]
+    pub fn max_over(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
+        let t_lo = ((y_lo - self.y0) * self.inv_step).max(0.0);
+        let t_hi = ((y_hi - self.y0) * self.inv_step).min(self.t_max);
+        if t_lo > t_hi {
+            return None;
+        }
+        // An interpolated height at t lies below the maximum of block floor(t) / B.
+        let (j_lo, j_hi) = (t_lo as usize / HEIGHT_BLOCK, t_hi as usize / HEIGHT_BLOCK);
+        let k = (usize::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
+        let level = &self.block_max[k];
+        let (a, b) = (level[j_lo], level[j_hi + 1 - (1 << k)]);
+        Some(if a > b { a } else { b })
     }
 
     /// The interpolated height at `y`, or `None` outside the table.
@@ -264,6 +310,7 @@ impl PlacedRail {
                 inv_step: 0.0,
                 t_max: 0.0,
                 z: Vec::new(),
+                block_max: Vec::new(),
             },
         };
         let (lo, hi) = rail.profile.domain();

@@ -16,6 +16,11 @@ pub const COARSE_STEP_MM: f64 = 0.25;
 /// the error of the coarse values (kappa h^2 / 2 = 0.006 mm for a relative curvature of
 /// 1/5 mm^-1 at 0.25 mm) with a safety factor of 8.
 pub const COARSE_MARGIN_MM: f64 = 0.05;
+/// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
+/// wheel point against the highest rail point under it) is too high to matter is skipped.
+const SCAN_BLOCK: usize = 8;
+/// Block bounds kept on the stack by a scan (a wheel of 1.6 m); more are computed twice.
+const MAX_SCAN_BLOCKS: usize = 800;
 /// Two minima closer than this in the wheel coordinate are one basin (mm).
 pub const SAME_BASIN_MM: f64 = 0.5;
 /// Convergence of the local minimisation in the wheel coordinate (mm).
@@ -104,6 +109,8 @@ pub struct SideGap<'a> {
     /// +1 left, -1 right.
     pub sign: f64,
     coarse: Vec<[f64; 3]>,
+    /// Per block of [`SCAN_BLOCK`] coarse samples: `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]`.
+    blocks: Vec<[f64; 4]>,
     tabulated: Option<Tables>,
     /// The wheel profile's domain: beyond it the profile is clamped, and a point there
     /// would be a phantom of the wheel's end displaced sideways.
@@ -144,17 +151,29 @@ impl<'a> SideGap<'a> {
     pub fn new(pair: &'a SidePair, sign: f64) -> SideGap<'a> {
         let (lo, hi) = pair.wheel.profile().domain();
         let n = ((hi - lo) / COARSE_STEP_MM).ceil() as usize;
-        let coarse = (0..=n)
+        let coarse: Vec<[f64; 3]> = (0..=n)
             .map(|i| {
                 let s = lo + (hi - lo) * i as f64 / n as f64;
                 let p = pair.wheel.at(s);
                 [s, p.y, p.z]
             })
             .collect();
+        let blocks = coarse
+            .chunks(SCAN_BLOCK)
+            .map(|c| {
+                let (z_lo, z_hi) = c
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                        (a.min(p[2]), b.max(p[2]))
+                    });
+                [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
+            })
+            .collect();
         SideGap {
             pair,
             sign,
             coarse,
+            blocks,
             tabulated: None,
             domain: (lo, hi),
             joints: pair.wheel.profile().joints(),
@@ -261,25 +280,57 @@ impl<'a> SideGap<'a> {
         if n == 0 {
             return;
         }
-        let table = self.pair.rail.heights();
-        let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
+        // The lowest sample is a sampled local minimum, and the lowest of them: a block
+        // whose bound lies more than the margin above some sample's gap holds no minimum
+        // that is refined. The block with the lowest bound gives that sample first.
+        let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
+        let mut bounds = [0.0; MAX_SCAN_BLOCKS];
+        let stored = blocks.len() <= MAX_SCAN_BLOCKS;
+        let bound = |b: usize, bounds: &[f64]| {
+            if stored {
+                bounds[b - blocks.start]
+            } else {
+                self.block_bound(b, pose)
+            }
+        };
+        let mut best = (f64::INFINITY, blocks.start);
+        for b in blocks.clone() {
+            let v = self.block_bound(b, pose);
+            if stored {
+                bounds[b - blocks.start] = v;
+            }
+            if v < best.0 {
+                best = (v, b);
+            }
+        }
+        let b = best.1;
+        let mut running = ((b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last))
+            .fold(f64::INFINITY, |m, i| m.min(self.coarse_gap(i, pose)));
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
         let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
         let mut count = 0;
         let mut lowest = f64::INFINITY;
         // The gap of sample i is known when sample i + 1 is computed: `here` is sample i - 1.
+        // Samples of skipped blocks count as off the rail (+inf): higher than any sample
+        // that could be refined, so the minima that matter are found as without skipping.
         let (mut prev, mut here) = (f64::INFINITY, f64::INFINITY);
-        for (i, &[_, yw, zw]) in coarse.iter().enumerate() {
-            let y = delta + cos * yw - sin * zw;
-            let z = sin * yw + cos * zw;
-            let next = table.height(y).map_or(f64::INFINITY, |zr| z - zr);
-            if here <= prev && here <= next && here < f64::INFINITY {
-                lowest = lowest.min(here);
-                record(&mut found, &mut count, here, i - 1);
+        for b in blocks.clone() {
+            let skip = bound(b, &bounds) > running + COARSE_MARGIN_MM;
+            for i in (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last) {
+                let next = if skip {
+                    f64::INFINITY
+                } else {
+                    self.coarse_gap(i, pose)
+                };
+                running = running.min(next);
+                if here <= prev && here <= next && here < f64::INFINITY {
+                    lowest = lowest.min(here);
+                    record(&mut found, &mut count, here, i - first - 1);
+                }
+                prev = here;
+                here = next;
             }
-            prev = here;
-            here = next;
         }
         // The last sample has no right neighbour.
         if here <= prev && here < f64::INFINITY {
@@ -297,6 +348,38 @@ impl<'a> SideGap<'a> {
         }
     }
 
+    /// The coarse gap (table rail) of sample `i`, `+inf` where it is not above the rail.
+    #[inline]
+    fn coarse_gap(&self, i: usize, pose: &SidePose) -> f64 {
+        let [_, yw, zw] = self.coarse[i];
+        let [y, z] = pose.apply(yw, zw);
+        self.pair
+            .rail
+            .heights()
+            .height(y)
+            .map_or(f64::INFINITY, |zr| z - zr)
+    }
+
+    /// A lower bound of the coarse gaps of block `b` at `pose` (`+inf` when none of its
+    /// samples can be above the rail): the lowest its points can be, against the highest
+    /// the rail table is under the lateral span they can cover.
+    #[inline]
+    fn block_bound(&self, b: usize, pose: &SidePose) -> f64 {
+        let [yw_lo, yw_hi, zw_lo, zw_hi] = self.blocks[b];
+        let (cos, sin) = (pose.cos, pose.sin);
+        // Y = delta + cos Yw - sin Zw, z = sin Yw + cos Zw (cos > 0); Yw and Zw vary
+        // independently within their ranges, so the extremes lie at range ends.
+        let (a, c) = (-sin * zw_lo, -sin * zw_hi);
+        let y_lo = pose.delta + cos * yw_lo + a.min(c);
+        let y_hi = pose.delta + cos * yw_hi + a.max(c);
+        let z_lo = (sin * yw_lo).min(sin * yw_hi) + cos * zw_lo;
+        self.pair
+            .rail
+            .heights()
+            .max_over(y_lo, y_hi)
+            .map_or(f64::INFINITY, |rail| z_lo - rail)
+    }
+
     /// Stretches of the wheel (`(s_lo, s_hi)`, increasing, disjoint) where the coarse gap
     /// lies below `threshold` (mm, same reference as [`GapPoint::g`]), each widened by one
     /// coarse step so that the fine gap below the threshold lies inside.
@@ -306,8 +389,9 @@ impl<'a> SideGap<'a> {
         // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
         // not low, exactly as the table would answer.
         let (first, last) = self.over_rail(pose);
-        let (cos, sin, delta) = (pose.cos, pose.sin, pose.delta);
-        let table = self.pair.rail.heights();
+        if first >= last {
+            return;
+        }
         let mut open: Option<usize> = None;
         let close = |first_low: usize, i: usize, out: &mut Vec<(f64, f64)>| {
             let lo = self.coarse[first_low.saturating_sub(1)][0];
@@ -317,18 +401,19 @@ impl<'a> SideGap<'a> {
                 _ => out.push((lo, hi)),
             }
         };
-        for (i, &[_, yw, zw]) in self.coarse[first..last].iter().enumerate() {
-            let i = i + first;
-            let y = delta + cos * yw - sin * zw;
-            let z = sin * yw + cos * zw;
-            let low = table.height(y).is_some_and(|zr| z - zr < threshold);
-            match (low, open) {
-                (true, None) => open = Some(i),
-                (false, Some(first_low)) => {
-                    close(first_low, i, out);
-                    open = None;
+        for b in first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1 {
+            // A block whose bound reaches the threshold has no low sample.
+            let skip = self.block_bound(b, pose) >= threshold;
+            for i in (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last) {
+                let low = !skip && self.coarse_gap(i, pose) < threshold;
+                match (low, open) {
+                    (true, None) => open = Some(i),
+                    (false, Some(first_low)) => {
+                        close(first_low, i, out);
+                        open = None;
+                    }
+                    _ => {}
                 }
-                _ => {}
             }
         }
         if let Some(first_low) = open {
@@ -481,5 +566,136 @@ impl<'a> SideGap<'a> {
             }
         }
         Some(best)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    fn placement() -> crate::track::Placement {
+        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        crate::pipeline::place(&scene).unwrap()
+    }
+
+    /// Poses over the paper sweep and beyond, with rolls up to 0.02 rad, and the solved
+    /// poses around the paper's jumps, where two minima lie within the margin.
+    fn poses() -> Vec<SidePose> {
+        let mut poses: Vec<SidePose> = (0..=120)
+            .flat_map(|i| {
+                let y_ws = -30.0 + 0.5 * f64::from(i);
+                [-0.02, -1e-3, 0.0, 7e-4, 0.02].map(|roll| SidePose::new(1.0, y_ws, roll))
+            })
+            .collect();
+        let near_jumps: Vec<f64> = (0..=40)
+            .flat_map(|i| {
+                let d = 0.0025 * f64::from(i) - 0.05;
+                [0.226 + d, 4.992 + d, 6.26 + d]
+            })
+            .collect();
+        let sweep = crate::rigid::search(&placement(), &near_jumps, crate::rigid::Solver::Default);
+        poses.extend(
+            sweep
+                .positions
+                .iter()
+                .map(|p| SidePose::new(1.0, p.y_ws, p.roll)),
+        );
+        poses
+    }
+
+    /// The scans without skipping: every sample of the over-rail range evaluated.
+    fn all_gaps(side: &SideGap, pose: &SidePose) -> Vec<(usize, f64)> {
+        let (first, last) = side.over_rail(pose);
+        (first..last)
+            .map(|i| (i, side.coarse_gap(i, pose)))
+            .collect()
+    }
+
+    #[test]
+    fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
+        let placement = placement();
+        let side = SideGap::new(&placement.left, 1.0);
+        let (mut basins, mut regions) = (Vec::new(), Vec::new());
+        let mut skipped_any = false;
+        let mut several_basins = 0;
+        for pose in poses() {
+            let gaps = all_gaps(&side, &pose);
+            let Some(lowest) = gaps.iter().map(|g| g.1).min_by(f64::total_cmp) else {
+                continue;
+            };
+            // Basins: brackets around the sampled local minima within the margin.
+            side.basins(&pose, &mut basins);
+            let mut expected: Vec<(f64, Basin)> = Vec::new();
+            for (k, &(i, g)) in gaps.iter().enumerate() {
+                let prev = if k > 0 { gaps[k - 1].1 } else { f64::INFINITY };
+                let next = gaps.get(k + 1).map_or(f64::INFINITY, |n| n.1);
+                if g < f64::INFINITY && g <= prev && g <= next && g <= lowest + COARSE_MARGIN_MM {
+                    let lo = side.coarse[i.saturating_sub(1).max(gaps[0].0)][0];
+                    let hi = side.coarse[(i + 1).min(gaps[gaps.len() - 1].0)][0];
+                    expected.push((g, (lo, hi)));
+                }
+            }
+            expected.sort_by(|a, b| a.0.total_cmp(&b.0));
+            if expected.len() > 1 {
+                several_basins += 1;
+            }
+            let expected: Vec<Basin> = expected.into_iter().map(|e| e.1).collect();
+            assert_eq!(basins, expected, "basins at {pose:?}");
+            // Low regions at a threshold 0.3 mm above the lowest sample.
+            let threshold = lowest + 0.3;
+            side.low_regions(&pose, threshold, &mut regions);
+            // Runs of low samples, each from the sample before its first to its end.
+            let n = side.coarse.len();
+            let mut expected: Vec<(f64, f64)> = Vec::new();
+            let mut k = 0;
+            while k < gaps.len() {
+                if gaps[k].1 < threshold {
+                    let start = gaps[k].0;
+                    while k < gaps.len() && gaps[k].1 < threshold {
+                        k += 1;
+                    }
+                    let end = gaps.get(k).map_or(gaps[gaps.len() - 1].0 + 1, |g| g.0);
+                    let (lo, hi) = (
+                        side.coarse[start.saturating_sub(1)][0],
+                        side.coarse[end.min(n - 1)][0],
+                    );
+                    match expected.last_mut() {
+                        Some(last) if last.1 >= lo => last.1 = hi,
+                        _ => expected.push((lo, hi)),
+                    }
+                } else {
+                    k += 1;
+                }
+            }
+            assert_eq!(regions, expected, "low regions at {pose:?}");
+            let blocks = gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1;
+            skipped_any |= blocks
+                .into_iter()
+                .any(|b| side.block_bound(b, &pose) >= threshold);
+        }
+        assert!(
+            skipped_any,
+            "the bounds never allowed a skip: the test proves nothing"
+        );
+        assert!(
+            several_basins > 10,
+            "{several_basins} poses with two basins to refine"
+        );
+    }
+
+    #[test]
+    fn block_bounds_are_below_every_sample_of_their_block() {
+        let placement = placement();
+        let side = SideGap::new(&placement.left, 1.0);
+        for pose in poses() {
+            for (i, g) in all_gaps(&side, &pose) {
+                let bound = side.block_bound(i / SCAN_BLOCK, &pose);
+                assert!(
+                    bound <= g,
+                    "sample {i}: bound {bound} above gap {g} at {pose:?}"
+                );
+            }
+        }
     }
 }
