@@ -219,6 +219,12 @@ impl Profile {
         convex_curvature(d1, d2)
     }
 
+    /// Whether the profile is a spline through points (its smoothness between
+    /// [`Profile::joints`] is that of a cubic spline, not of an analytic definition).
+    pub fn is_sampled(&self) -> bool {
+        matches!(self.shape, Shape::Sampled(_))
+    }
+
     /// Section joints or spline knots that lie inside the domain (mm), increasing. Analytic
     /// profiles give their section joints; sampled ones give nothing (their knots are
     /// everywhere).

@@ -74,6 +74,7 @@ const ARC_H: (f64, f64, f64) = (9.519259302, 20.5, 49.5);
 /// let [f, _, _] = wheelrail::profile::s1002::eval(-55.0);
 /// assert!((f - 28.0).abs() < 1e-9); // flange tip, EN 13715
 /// ```
+#[inline]
 pub fn eval(s: f64) -> [f64; 3] {
     let s = s.clamp(S_MIN, S_MAX);
     if s >= JOINTS[0] {

@@ -67,6 +67,7 @@ pub fn joints() -> [f64; 6] {
 /// let [z, _, _] = uic60::eval(10.228);
 /// assert!((z + 0.174404).abs() < 1e-6);
 /// ```
+#[inline]
 pub fn eval(y: f64) -> [f64; 3] {
     let w = half_width();
     let (u, sign) = if y < 0.0 { (-y, -1.0) } else { (y, 1.0) };

@@ -597,7 +597,11 @@ fn finish(
             z: m.rail.z,
             r: sides[k].wheel().nominal_radius_mm() + sides[k].wheel().profile().eval(m.s)[0],
             gamma: m.wheel.slope.atan() + phi,
-            rail_u: m.rail.u,
+            rail_u: sides[k]
+                .pair
+                .rail
+                .profile_coordinate(m.y)
+                .unwrap_or(f64::NAN),
             rail_tan_gamma: m.rail.slope,
             wheel_curvature: m.wheel.curvature(),
             rail_curvature: m.rail.curvature(),
