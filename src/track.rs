@@ -342,9 +342,23 @@ impl PlacedRail {
             .map(|i| lo + (hi - lo) * i as f64 / n as f64)
             .collect();
 
+        // Every sample's rotated point and tangent, from one evaluation each.
+        let samples: Vec<[f64; 4]> = us
+            .iter()
+            .map(|&u| {
+                let [v, d1, _] = rail.profile.eval(u);
+                [
+                    rail.cos * u - rail.sin * v,
+                    rail.sin * u + rail.cos * v,
+                    rail.cos - rail.sin * d1,
+                    rail.sin + rail.cos * d1,
+                ]
+            })
+            .collect();
+
         // Top: maximum of Z(u), refined by bisection on dZ/du (concave near the top).
         let i_top = (0..us.len())
-            .max_by(|&a, &b| rail.rotated(us[a])[1].total_cmp(&rail.rotated(us[b])[1]))
+            .max_by(|&a, &b| samples[a][1].total_cmp(&samples[b][1]))
             .unwrap_or(0);
         let u_top = refine_extremum(
             |u| rail.rotated_tangent(u)[1],
@@ -356,8 +370,7 @@ impl PlacedRail {
         // Gauge point: the most gauge-side (smallest Y) point with Z >= top - depth.
         let floor = top[1] - layout.gauge_point_depth_mm;
         let mut best: Option<(usize, f64)> = None;
-        for (i, &u) in us.iter().enumerate() {
-            let p = rail.rotated(u);
+        for (i, p) in samples.iter().enumerate() {
             if p[1] >= floor && best.is_none_or(|(_, y)| p[0] < y) {
                 best = Some((i, p[0]));
             }
@@ -367,7 +380,7 @@ impl PlacedRail {
                 profile: rail.profile.name().to_string(),
             });
         };
-        let below = |i: usize| rail.rotated(us[i])[1] < floor;
+        let below = |i: usize| samples[i][1] < floor;
         let u_gp = if i_gp > 0 && below(i_gp - 1) {
             // The depth line cuts the head between two samples: bisect Z(u) = floor.
             bisect(|u| rail.rotated(u)[1] - floor, us[i_gp - 1], us[i_gp])
@@ -387,16 +400,16 @@ impl PlacedRail {
 
         // Running surface: the connected stretch around the top where Y(u) increases and the
         // placed slope stays below MAX_RAIL_SLOPE.
-        let steep = |u: f64| {
-            let [ty, tz] = rail.rotated_tangent(u);
+        let steep = |i: usize| {
+            let [_, _, ty, tz] = samples[i];
             ty <= 0.0 || tz.abs() > MAX_RAIL_SLOPE * ty
         };
         let mut i_lo = i_top;
-        while i_lo > 0 && !steep(us[i_lo - 1]) {
+        while i_lo > 0 && !steep(i_lo - 1) {
             i_lo -= 1;
         }
         let mut i_hi = i_top;
-        while i_hi + 1 < us.len() && !steep(us[i_hi + 1]) {
+        while i_hi + 1 < us.len() && !steep(i_hi + 1) {
             i_hi += 1;
         }
         rail.surface = (us[i_lo], us[i_hi]);
@@ -405,8 +418,9 @@ impl PlacedRail {
             rail.point_of(rail.surface.1)[0],
         );
         rail.tabulate_inverse();
-        rail.heights = HeightTable::new(&rail, HEIGHT_TABLE_STEP_MM);
+        // The heights are read from the surface table, which is built first.
         rail.tabulate_surface();
+        rail.heights = HeightTable::new(&rail, HEIGHT_TABLE_STEP_MM);
         Ok(rail)
     }
 
