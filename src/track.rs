@@ -215,16 +215,22 @@ impl HeightTable {
     /// interval misses the table. Exact to within the height variation of 16 entries.
     #[inline]
     pub fn max_over(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
-        let t_lo = ((y_lo - self.y0) * self.inv_step).max(0.0);
-        let t_hi = ((y_hi - self.y0) * self.inv_step).min(self.t_max);
-        if t_lo > t_hi {
+        let t_lo = (y_lo - self.y0) * self.inv_step;
+        let t_hi = (y_hi - self.y0) * self.inv_step;
+        // Also rejects NaN.
+        if !(t_hi >= 0.0 && t_lo <= self.t_max && t_lo <= t_hi) {
             return None;
         }
-        // An interpolated height at t lies below the maximum of block floor(t) / B.
-        let (j_lo, j_hi) = (t_lo as usize / HEIGHT_BLOCK, t_hi as usize / HEIGHT_BLOCK);
-        let k = (usize::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
+        // An interpolated height at t lies below the maximum of block floor(t) / B. Through
+        // i32 as in `height`; both are inside [0, t_max] after the clamps.
+        let j_lo = (t_lo.max(0.0) as i32 as u32) / HEIGHT_BLOCK as u32;
+        let j_hi = (t_hi.min(self.t_max) as i32 as u32) / HEIGHT_BLOCK as u32;
+        let k = (u32::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
         let level = &self.block_max[k];
-        let (a, b) = (level[j_lo], level[j_hi + 1 - (1 << k)]);
+        let (a, b) = (
+            level[j_lo as usize],
+            level[(j_hi + 1 - (1 << k)) as usize],
+        );
         Some(if a > b { a } else { b })
     }
 
