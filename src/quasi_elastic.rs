@@ -256,6 +256,15 @@ const GL8_W: [f64; 4] = [
     0.222_381_034_453_374_5,
     0.101_228_536_290_376_3,
 ];
+/// Nodes of the 4-point Gauss-Legendre rule on [-1, 1] (positive half; symmetric).
+const GL4_X: [f64; 2] = [0.339_981_043_584_856_3, 0.861_136_311_594_052_6];
+/// Weights of the 4-point Gauss-Legendre rule, matching [`GL4_X`].
+const GL4_W: [f64; 2] = [0.652_145_154_862_546_1, 0.347_854_845_137_453_9];
+/// Pieces shorter than this fraction of a panel take the 4-point rule. The rule is exact to
+/// degree 7; over a twelfth of the default panel (a quarter of a weight width) the weight's
+/// Taylor terms beyond that are below `0.25^8 / 8! = 4e-10` of it, and the fields are
+/// analytic within a piece. Shorter panels (finer settings) shrink the bound with them.
+const SHORT_PIECE: f64 = 1.0 / 12.0;
 /// Bounds of the weight width used to size panels (mm): below, the contact is so stiff that
 /// micrometre panels are plenty; above (nearly conformal contact, d'' -> 0) the panels
 /// follow the profile's own variation instead of the weight. Measured on the paper scene
@@ -293,7 +302,13 @@ fn side_average(
     // Gaps are measured from the rigid minimum of this wheel: one reference for every
     // region and patch, so that their weights compare.
     let d_min = at_rigid.g + axle_height;
-    let width = (eps / at_rigid.ddg.max(1e-12)).sqrt();
+    // The distance over which the gap rises by eps: sqrt(eps / d'') at a smooth minimum,
+    // eps / |d'| at a minimum on an end of the surfaces (the rail's running surface ends
+    // where it turns steep), where the gap rises linearly and the weight decays within
+    // eps / |d'|: panels sized by the curvature alone would step over it.
+    let width = (eps / at_rigid.ddg.max(1e-12))
+        .sqrt()
+        .min(eps / at_rigid.dg.abs().max(f64::MIN_POSITIVE));
     let limit = settings.cutoff * eps;
     // Regions where the gap may be below the cut-off; the coarse gap errs by less than
     // the margin (see rigid::gap::COARSE_MARGIN_MM).
@@ -446,20 +461,25 @@ fn gauss_region(
     breaks.clear();
     breaks.push((lo, true));
     breaks.push((hi, true));
-    for &j in side.wheel_joints() {
-        if j > lo && j < hi {
-            breaks.push((j, false));
-        }
-    }
-    // Rail joints: the wheel coordinate whose point lies above the joint, Y(s) = Y_joint
-    // (Newton: dY/ds = cos + sin F', close to 1).
+    // The wheel's breaks inside the region.
+    let wheel = side.wheel_breaks();
+    let from = wheel.partition_point(|&j| j <= lo);
+    let to = wheel.partition_point(|&j| j < hi);
+    breaks.extend(wheel[from..to].iter().map(|&j| (j, false)));
+    // The rail's breaks under the region: the wheel coordinate whose point lies above each,
+    // Y(s) = Y_break (Newton: dY/ds = cos + sin F', close to 1, so Y grows with s).
     let y_of = |s: f64| {
         let w = side.wheel().at(s);
         let [y, _] = pose.apply(w.y, w.z);
         (y, pose.cos - pose.sin * w.slope)
     };
-    for &target in side.rail_joint_ys() {
-        let mut s = 0.5 * (lo + hi);
+    let rail = side.rail_break_ys();
+    let (y_lo, y_hi) = (y_of(lo).0, y_of(hi).0);
+    let from = rail.partition_point(|&y| y < y_lo.min(y_hi) - 1.0);
+    let to = rail.partition_point(|&y| y <= y_lo.max(y_hi) + 1.0);
+    let mut s = lo;
+    for &target in &rail[from..to] {
+        // From the previous break's wheel coordinate (the targets increase).
         for _ in 0..20 {
             let (y, dy) = y_of(s);
             let step = (y - target) / dy;
@@ -470,6 +490,8 @@ fn gauss_region(
         }
         if s > lo && s < hi {
             breaks.push((s, false));
+        } else {
+            s = s.clamp(lo, hi);
         }
     }
     breaks.sort_by(|x, y| x.0.total_cmp(&y.0));
@@ -538,11 +560,18 @@ impl Gauss<'_, '_> {
             if b - a > 1e-12 {
                 let panels = ((b - a) / self.panel).ceil().max(1.0) as usize;
                 let h = (b - a) / panels as f64;
+                // A piece much shorter than a panel (between close joints, or between the
+                // knots of a spline) takes the 4-point rule: see SHORT_PIECE.
+                let (xs, ws): (&[f64], &[f64]) = if b - a <= SHORT_PIECE * self.panel {
+                    (&GL4_X, &GL4_W)
+                } else {
+                    (&GL8_X, &GL8_W)
+                };
                 for j in 0..panels {
                     let mid = a + (j as f64 + 0.5) * h;
                     // Nodes in increasing `s`: the lower half from the panel's start inwards.
-                    let lower = GL8_X.iter().zip(GL8_W).rev().map(|(x, w)| (-x, w));
-                    let upper = GL8_X.iter().zip(GL8_W).map(|(x, w)| (*x, w));
+                    let lower = xs.iter().zip(ws).rev().map(|(x, w)| (-x, *w));
+                    let upper = xs.iter().zip(ws).map(|(x, w)| (*x, *w));
                     for (x, w) in lower.chain(upper) {
                         let s = mid + 0.5 * h * x;
                         let Some(p) = self.side.at(s, self.pose) else {

@@ -227,10 +227,7 @@ impl HeightTable {
         let j_hi = (t_hi.min(self.t_max) as i32 as u32) / HEIGHT_BLOCK as u32;
         let k = (u32::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
         let level = &self.block_max[k];
-        let (a, b) = (
-            level[j_lo as usize],
-            level[(j_hi + 1 - (1 << k)) as usize],
-        );
+        let (a, b) = (level[j_lo as usize], level[(j_hi + 1 - (1 << k)) as usize]);
         Some(if a > b { a } else { b })
     }
 

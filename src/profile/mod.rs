@@ -219,6 +219,19 @@ impl Profile {
         convex_curvature(d1, d2)
     }
 
+    /// Where the profile's second derivative may jump or kink (increasing): the section
+    /// joints of a built-in profile, the interior knots of a spline. Between two of them the
+    /// profile is analytic, so quadratures that break there converge fast.
+    pub fn breaks(&self) -> Vec<f64> {
+        match &self.shape {
+            Shape::Sampled(sp) => {
+                let k = sp.knots();
+                k[1..k.len().saturating_sub(1)].to_vec()
+            }
+            _ => self.joints(),
+        }
+    }
+
     /// Whether the profile is a spline through points (its smoothness between
     /// [`Profile::joints`] is that of a cubic spline, not of an analytic definition).
     pub fn is_sampled(&self) -> bool {

@@ -117,8 +117,11 @@ pub struct SideGap<'a> {
     domain: (f64, f64),
     /// Section joints of the wheel profile (where its value may jump).
     joints: Vec<f64>,
-    /// Side-frame lateral positions of the rail profile's section joints.
-    rail_joint_ys: Vec<f64>,
+    /// Side-frame lateral positions of the rail profile's breaks
+    /// ([`crate::profile::Profile::breaks`]) and of the ends of its running surface, increasing.
+    rail_break_ys: Vec<f64>,
+    /// The wheel profile's breaks and the ends of its domain, increasing.
+    wheel_breaks: Vec<f64>,
 }
 
 /// Tabulated wheel `(s, Yw, Zw)` and rail, for the paper's solver.
@@ -177,13 +180,26 @@ impl<'a> SideGap<'a> {
             tabulated: None,
             domain: (lo, hi),
             joints: pair.wheel.profile().joints(),
-            rail_joint_ys: pair
-                .rail
-                .profile()
-                .joints()
-                .into_iter()
-                .map(|u| pair.rail.point_of(u)[0])
-                .collect(),
+            rail_break_ys: {
+                // The ends of the running surface too: beyond them the gap is undefined.
+                let (y_lo, y_hi) = pair.rail.y_range();
+                let mut ys: Vec<f64> = pair
+                    .rail
+                    .profile()
+                    .breaks()
+                    .into_iter()
+                    .map(|u| pair.rail.point_of(u)[0])
+                    .chain([y_lo, y_hi])
+                    .collect();
+                ys.sort_by(f64::total_cmp);
+                ys
+            },
+            wheel_breaks: {
+                let mut b = pair.wheel.profile().breaks();
+                b.extend([lo, hi]);
+                b.sort_by(f64::total_cmp);
+                b
+            },
         }
     }
 
@@ -229,9 +245,16 @@ impl<'a> SideGap<'a> {
         &self.joints
     }
 
-    /// Side-frame lateral positions `Y` of the rail profile's section joints (mm).
-    pub fn rail_joint_ys(&self) -> &[f64] {
-        &self.rail_joint_ys
+    /// Where the wheel profile's second derivative may jump (joints, spline knots) and the
+    /// ends of its domain, increasing (mm).
+    pub fn wheel_breaks(&self) -> &[f64] {
+        &self.wheel_breaks
+    }
+
+    /// Side-frame lateral positions `Y` of the rail profile's breaks (joints, spline knots)
+    /// and of the ends of its running surface, increasing (mm).
+    pub fn rail_break_ys(&self) -> &[f64] {
+        &self.rail_break_ys
     }
 
     /// The wheel.
