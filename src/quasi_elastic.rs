@@ -30,13 +30,14 @@ use crate::track::{Placement, Side};
 /// Default regularisation parameter (mm): the paper's 1e-5 m.
 pub const DEFAULT_EPSILON_MM: f64 = 0.01;
 /// Integrals stop where `(d - d_min) / eps` exceeds this. For a quadratic gap the weight left
-/// out is `erfc(sqrt(25)) = 1.6e-12` of the total; on the paper scene a and b move by less
-/// than 1e-11 relative against a cut-off at 60, and the integration regions are 18 % shorter
-/// than at 37 (`wheelrail tradeoff`).
+/// out is `erfc(sqrt(25)) = 1.6e-12` of the total, and the integration regions are 18 %
+/// shorter than at 37. On the paper scene the default's error in a and b (2.3e-8 against
+/// the tradeoff study's reference) is the panels'; cut-offs of 15 and 37 give 4e-7 and
+/// 5e-8 (`wheelrail tradeoff`).
 pub const DEFAULT_CUTOFF: f64 = 25.0;
 /// Default panel length of the Gauss-Legendre quadrature in weight widths `sqrt(eps / d'')`.
-/// On the paper scene, against panels of half a width: a and b err by 1.2e-8 relative at 3
-/// widths, 8.3e-9 at 2 (a third more nodes), 8e-5 at 4 (`wheelrail tradeoff` measures it).
+/// On the paper scene, against panels of half a width (`wheelrail tradeoff`): a and b err by
+/// 2.3e-8 relative at 3 widths, 1.3e-8 at 2 (17 % slower), 2.9e-7 at 4 (8 % faster).
 pub const DEFAULT_PANEL_WIDTHS: f64 = 3.0;
 /// Largest step of the trapezoid variant in the wheel coordinate (mm).
 pub const DEFAULT_MAX_STEP_MM: f64 = 0.05;
@@ -269,7 +270,7 @@ const SHORT_PIECE: f64 = 1.0 / 12.0;
 /// micrometre panels are plenty; above (nearly conformal contact, d'' -> 0) the panels
 /// follow the profile's own variation instead of the weight. Measured on the paper scene
 /// with panels of 3 widths: raising the upper bound to 2 mm saves a fifth of the nodes but
-/// errs by 2e-6 in a and b (1.2e-8 at 1 mm).
+/// errs by 2e-6 in a and b (2.3e-8 at 1 mm).
 const WIDTH_BOUNDS_MM: (f64, f64) = (1e-3, 1.0);
 
 fn fields_of(side: &SideGap, p: &crate::rigid::gap::GapPoint) -> [f64; FIELDS] {

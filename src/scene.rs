@@ -24,7 +24,7 @@ pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
 /// reference uses 0.5; 0.05 would already take seconds per sweep.
 pub const MIN_PANEL_WIDTHS: f64 = 0.05;
 /// The longest Gauss-Legendre panel accepted, in weight widths: 8 nodes over 8 widths no
-/// longer resolve the weight (4 widths already err by 8e-5 in a and b on the paper scene).
+/// longer resolve the weight (4 widths already err by 3e-7 in a and b on the paper scene).
 pub const MAX_PANEL_WIDTHS: f64 = 8.0;
 /// The smallest regularisation parameter (mm): below it the weight is narrower than the
 /// spacing of double-precision numbers around a contact point.
