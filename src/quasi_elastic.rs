@@ -439,8 +439,8 @@ fn include_rigid_point(regions: &mut Vec<(f64, f64)>, s_rigid: f64, domain: (f64
 /// wheel's section joints, the rail's section joints (mapped onto the wheel) and the
 /// barriers that separate patches; pushes one [`Average`] per patch.
 ///
-/// The barriers are found from the gaps at the quadrature nodes themselves (about four per
-/// weight width): most regions have none, and are integrated once. A region with a barrier
+/// The barriers are found from the gaps at the quadrature nodes themselves (8 per panel of
+/// 3 weight widths by default): most regions have none, and are integrated once. A region with a barrier
 /// is integrated again with the refined barriers as patch boundaries.
 #[allow(clippy::too_many_arguments)]
 fn gauss_region(

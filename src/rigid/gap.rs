@@ -240,11 +240,6 @@ impl<'a> SideGap<'a> {
         best
     }
 
-    /// Section joints of the wheel profile, increasing (mm).
-    pub fn wheel_joints(&self) -> &[f64] {
-        &self.joints
-    }
-
     /// Where the wheel profile's second derivative may jump (joints, spline knots) and the
     /// ends of its domain, increasing (mm).
     pub fn wheel_breaks(&self) -> &[f64] {
