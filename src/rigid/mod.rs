@@ -289,6 +289,8 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
 struct Continuation {
     /// The last three converged `(y_ws, roll)`, newest first.
     points: [Option<(f64, f64)>; 3],
+    /// The contact points `s` of the newest converged position.
+    last: Option<[Option<f64>; 2]>,
     fallback: f64,
 }
 
@@ -296,6 +298,7 @@ impl Continuation {
     fn new(roll: f64) -> Continuation {
         Continuation {
             points: [None, None, None],
+            last: None,
             fallback: roll,
         }
     }
@@ -320,9 +323,24 @@ impl Continuation {
     }
 
     fn push(&mut self, p: &Position) {
-        if p.stop == Stop::Converged {
-            self.points = [Some((p.y_ws, p.roll)), self.points[0], self.points[1]];
+        if p.stop != Stop::Converged {
+            return;
         }
+        // Across a jump of a contact point the roll only has a continuous value, not a
+        // smooth one: the history before it would extrapolate the old slope (measured: a
+        // start 2.5 times off, 19 iterations instead of 7). It starts again from here.
+        let jumped = self.last.is_some_and(|last| {
+            (0..2).any(|k| match (last[k], p.contact[k]) {
+                (Some(a), Some(b)) => (a - b.s).abs() > JUMP_SCREEN_MM,
+                _ => true,
+            })
+        });
+        self.points = if jumped {
+            [Some((p.y_ws, p.roll)), None, None]
+        } else {
+            [Some((p.y_ws, p.roll)), self.points[0], self.points[1]]
+        };
+        self.last = Some(p.contact.map(|c| c.map(|c| c.s)));
     }
 }
 
@@ -524,13 +542,18 @@ fn solve_default(sides: &[SideGap; 2], y_ws: f64, theta0: f64, scratch: &mut Scr
         // slope only gains a constant factor per step (0.66 measured: 60 iterations were not
         // enough). Where the residual fell by less than half, the secant slope of the last
         // two iterates (positive: F increases) takes over.
+        // Only iterates on the same basins compare (a scan may have changed them), and the
+        // secant step is held to four times the last one.
+        if fresh {
+            previous = None;
+        }
         if let Some((t0, f0)) = previous
             && f.abs() > 0.5 * f0.abs()
             && f.signum() == f0.signum()
             && (theta - t0).abs() > 0.0
         {
             let secant = (f - f0) / (theta - t0);
-            if secant > 0.0 {
+            if secant > 0.0 && (f / secant).abs() <= 4.0 * (theta - t0).abs() {
                 slope = secant;
             }
         }
@@ -697,10 +720,15 @@ fn find_jumps(
                 };
                 let mut lost = false;
                 for &y in ys {
-                    // The roll is continuous across a jump (only its slope jumps): it is
-                    // interpolated between the ends.
-                    let t = (y - pa.y_ws) / (pb.y_ws - pa.y_ws);
-                    let mid = solve(y, pa.roll + t * (pb.roll - pa.roll), cold);
+                    // A second straddling position that the first already moved an end past
+                    // is not solved: the interval only shrinks.
+                    if !(y > pa.y_ws && y < pb.y_ws) {
+                        continue;
+                    }
+                    // From the roll of the lower end: the refinement follows the branch the
+                    // sweep came on (where two rolls balance the wheelset, as near a fold of
+                    // a measured flange, a start between the ends can land on the other).
+                    let mid = solve(y, pa.roll, cold);
                     cold = false;
                     let Some(m) = mid.side(side) else {
                         lost = true;
