@@ -150,7 +150,7 @@ pub const HEIGHT_TABLE_STEP_MM: f64 = 0.02;
 
 /// A uniform table of a placed rail's heights `Z(Y)` in the side frame, interpolated
 /// linearly: the cheap, approximate rail of coarse scans (and the paper's tabulated rail).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct HeightTable {
     y0: f64,
     inv_step: f64,
@@ -330,13 +330,7 @@ impl PlacedRail {
             inverse: Vec::new(),
             inverse_scale: 0.0,
             inverse_step: 0.0,
-            heights: HeightTable {
-                y0: 0.0,
-                inv_step: 0.0,
-                t_max: 0.0,
-                z: Vec::new(),
-                block_max: Vec::new(),
-            },
+            heights: HeightTable::default(),
             surface_table: SurfaceTable::default(),
         };
         let (lo, hi) = rail.profile.domain();

@@ -19,8 +19,15 @@ pub const COARSE_MARGIN_MM: f64 = 0.05;
 /// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
 /// wheel point against the highest rail point under it) is too high to matter is skipped.
 const SCAN_BLOCK: usize = 8;
-/// Block bounds kept on the stack by a scan (a wheel of 1.6 m); more are computed twice.
-const MAX_SCAN_BLOCKS: usize = 800;
+/// Block bounds kept on the stack by a scan (a wheel of 256 mm at the coarse step); a scan
+/// over more computes them twice.
+const MAX_SCAN_BLOCKS: usize = 128;
+
+/// The coarse samples of block `b` inside `first..last`.
+#[inline]
+fn block_samples(b: usize, first: usize, last: usize) -> std::ops::Range<usize> {
+    (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last)
+}
 /// Two minima closer than this in the wheel coordinate are one basin (mm).
 pub const SAME_BASIN_MM: f64 = 0.5;
 /// Convergence of the local minimisation in the wheel coordinate (mm).
@@ -322,7 +329,7 @@ impl<'a> SideGap<'a> {
             }
         }
         let b = best.1;
-        let mut running = ((b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last))
+        let mut running = block_samples(b, first, last)
             .fold(f64::INFINITY, |m, i| m.min(self.coarse_gap(i, pose)));
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
@@ -335,7 +342,7 @@ impl<'a> SideGap<'a> {
         let (mut prev, mut here) = (f64::INFINITY, f64::INFINITY);
         for b in blocks.clone() {
             let skip = bound(b, &bounds) > running + COARSE_MARGIN_MM;
-            for i in (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last) {
+            for i in block_samples(b, first, last) {
                 let next = if skip {
                     f64::INFINITY
                 } else {
@@ -422,7 +429,7 @@ impl<'a> SideGap<'a> {
         for b in first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1 {
             // A block whose bound reaches the threshold has no low sample.
             let skip = self.block_bound(b, pose) >= threshold;
-            for i in (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last) {
+            for i in block_samples(b, first, last) {
                 let low = !skip && self.coarse_gap(i, pose) < threshold;
                 match (low, open) {
                     (true, None) => open = Some(i),
