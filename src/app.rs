@@ -69,6 +69,19 @@ pub enum Command {
     },
     /// Hertz contact ellipse for given curvatures and load; prints a CSV header and row.
     Hertz(crate::hertz::cli::HertzArgs),
+    /// Equivalent conicity (EN 15302) from a Δr table (columns `y_mm,delta_r_mm`, `#`
+    /// comments allowed); prints CSV (amplitude_mm, tan_gamma_e, centre_mm, status).
+    Conicity {
+        /// The Δr table (CSV: y_mm,delta_r_mm, y strictly increasing, at least 3 rows).
+        delta_r: PathBuf,
+        /// `klingel` (EN 15302 Annex B, default) or `regression` (Annex C).
+        #[arg(long, default_value = "klingel")]
+        method: String,
+        /// Amplitudes FROM:TO:STEP in mm (default 0.5:10:0.1, clipped to what the table
+        /// supports; amplitudes given here are all printed, NaN with a status beyond it).
+        #[arg(long, value_name = "FROM:TO:STEP")]
+        amplitudes_mm: Option<String>,
+    },
     /// Run time against error of numerical settings: writes tradeoff.csv and its chart.
     Tradeoff {
         /// The scene file (default: the paper's scene).
@@ -138,6 +151,11 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             let scene = scene.unwrap_or_else(|| PathBuf::from(PAPER_SCENE));
             tradeoff(&scene, out.as_deref(), repeats)
         }
+        Some(Command::Conicity {
+            delta_r,
+            method,
+            amplitudes_mm,
+        }) => conicity(&delta_r, &method, amplitudes_mm.as_deref()),
         Some(Command::Hertz(args)) => {
             let text = crate::hertz::cli::run(&args).map_err(|e| Error::Other(e.to_string()))?;
             print!("{text}");
@@ -348,6 +366,59 @@ fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Erro
         );
         Ok(ExitCode::from(1))
     }
+}
+
+fn conicity(path: &Path, method: &str, amplitudes: Option<&str>) -> Result<ExitCode, Error> {
+    use crate::conicity::{self, DeltaR, Method};
+    let method = Method::from_name(method).ok_or_else(|| {
+        Error::Other(format!(
+            "--method {method:?}: expected \"klingel\" or \"regression\""
+        ))
+    })?;
+    let amplitudes = amplitudes.map(parse_range).transpose()?;
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let delta_r = DeltaR::parse_csv(&text, &path.display().to_string()).map_err(Error::Other)?;
+    let result = match amplitudes {
+        Some(a) => conicity::equivalent_conicity(&delta_r, &a, method),
+        None => conicity::equivalent_conicity_clipped(&delta_r, method),
+    };
+    let table = outputs::tables::conicity_points(&result, &path.display().to_string())
+        .map_err(|e| Error::Other(format!("internal error building the table: {e}")))?;
+    print!("{}", table.to_csv_with(CSV_FORMAT));
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Parses `FROM:TO:STEP` (mm) into the values from FROM to TO (included when the step
+/// divides the range to 1e-9 of a step), at most 100001 of them.
+fn parse_range(text: &str) -> Result<Vec<f64>, Error> {
+    let bad = |why: &str| Error::Other(format!("--amplitudes-mm {text:?}: {why}"));
+    let parts: Vec<&str> = text.split(':').collect();
+    let [from, to, step] = parts[..] else {
+        return Err(bad("expected FROM:TO:STEP in mm, e.g. 0.5:10:0.1"));
+    };
+    let num = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| bad(&format!("{s:?} is not a finite number")))
+    };
+    let (from, to, step) = (num(from)?, num(to)?, num(step)?);
+    if !(from > 0.0 && to >= from && step > 0.0) {
+        return Err(bad(
+            "expected 0 < FROM <= TO and STEP > 0 (amplitudes are positive, in mm)",
+        ));
+    }
+    let n = ((to - from) / step + 1e-9).floor();
+    if n >= 100_001.0 {
+        return Err(bad("more than 100001 amplitudes"));
+    }
+    Ok((0..=n as usize)
+        .map(|i| ((from + i as f64 * step) * 1e9).round() / 1e9)
+        .collect())
 }
 
 fn export_profile(name: &str, out: &Path, step_mm: f64) -> Result<ExitCode, Error> {

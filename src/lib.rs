@@ -43,6 +43,7 @@
 //! The full statement lives in `ARCHITECTURE.md`; every CSV header repeats it.
 
 pub mod app;
+pub mod conicity;
 pub mod error;
 pub mod hertz;
 pub mod outputs;

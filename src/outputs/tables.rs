@@ -452,3 +452,45 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError>
         .numeric("p0_rel_error", col(&|x| x.errors.p0_rel))
         .build()
 }
+
+/// Definition lines shared by the conicity tables.
+const CONICITY_FRAME: &str = "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; amplitude = half the peak-to-peak motion; centre_mm = middle of the motion (the equilibrium for a symmetric pair)";
+
+/// The equivalent conicity of one method over its amplitudes, as printed by `wheelrail
+/// conicity` (`source` names the Δr table).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn conicity_points(
+    c: &crate::conicity::EquivalentConicity,
+    source: &str,
+) -> Result<Table, TableError> {
+    let p = &c.points;
+    Table::builder()
+        .comment(format!(
+            "equivalent conicity tan_gamma_e (EN 15302), method {}, from {source}",
+            conicity_method_text(c.method)
+        ))
+        .comment(CONICITY_FRAME)
+        .comment(format!(
+            "equilibrium (delta_r = 0) at y = {:.6} mm; largest amplitude the delta_r function supports: {:.6} mm",
+            c.equilibrium_mm, c.max_amplitude_mm
+        ))
+        .numeric("amplitude_mm", p.iter().map(|p| p.amplitude_mm).collect::<Vec<_>>())
+        .numeric("tan_gamma_e", p.iter().map(|p| p.tan_gamma_e).collect::<Vec<_>>())
+        .numeric("centre_mm", p.iter().map(|p| p.centre_mm).collect::<Vec<_>>())
+        .text("status", p.iter().map(|p| p.status.name()))
+        .build()
+}
+
+/// What each method is, for table headers.
+pub fn conicity_method_text(m: crate::conicity::Method) -> &'static str {
+    match m {
+        crate::conicity::Method::Klingel => {
+            "klingel (EN 15302 Annex B: wavelength of the nonlinear kinematic motion, closed-form integral)"
+        }
+        crate::conicity::Method::Regression => {
+            "regression (EN 15302 Annex C: least-squares line through delta_r over the motion, weighted as a harmonic motion)"
+        }
+    }
+}

@@ -1,0 +1,1057 @@
+//! Equivalent conicity (EN 15302) from the rolling radius difference function Δr(y).
+//!
+//! A wheelset rolling without slip on straight track follows Klingel's kinematic equation
+//! `y'' = -Δr(y) / (2 e r0)` (`y` its lateral displacement, `x` the distance run, `2e` the
+//! distance between the contact points, `r0` the rolling radius). For a cone, `Δr = 2 λ y`
+//! and the motion is harmonic with Klingel's wavelength `L = 2π sqrt(e r0 / λ)`. For any other
+//! Δr the *equivalent conicity* `tan γe(ŷ)` is the conicity of the cone whose wavelength equals
+//! that of the motion of amplitude ŷ.
+//!
+//! # Methods
+//!
+//! * [`Method::Klingel`] (default), EN 15302:2008+A1:2010 Annex B: the wavelength of the
+//!   nonlinear kinematic motion. Its first integral `(y')² e r0 + S(y) = h`, with
+//!   `S(y) = ∫ Δr dy` from the equilibrium `Δr(y_eq) = 0`, gives the turning points
+//!   `S(y1) = S(y2) = h` of each level `h` and the half wavelength
+//!   `L/2 = sqrt(e r0) ∫ dy / sqrt(h - S(y))` from `y1` to `y2`. Equating with Klingel's
+//!   formula, `tan γe = (π / I)²` with `I = ∫ dy / sqrt(h - S(y))`: **the distance between the
+//!   contact points and the rolling radius cancel**, so neither is an input. The amplitude is
+//!   half the peak-to-peak motion, `ŷ = (y2 - y1) / 2`; for an asymmetric Δr the motion is not
+//!   centred on `y_eq`. Δr is linear between its points, so `S` is quadratic on each piece and
+//!   the integral is evaluated in closed form piece by piece, including the pieces that end at
+//!   a turning point, where the integrand is singular (integrable): no time stepping, no
+//!   cut-off, no quadrature error. A jump of Δr (a contact-point jump) is a piece of zero
+//!   width: `S` stays continuous and the integral is exact across it.
+//! * [`Method::Regression`], EN 15302:2008+A1:2010 Annex C, linear regression of the Δr
+//!   function: the straight line fitted to Δr over the motion `y_eq ± ŷ` by least squares,
+//!   each `y` weighted by the time a harmonic motion `y = y_eq + ŷ sin ωt` spends there
+//!   (density `1 / (π sqrt(ŷ² - (y - y_eq)²))`), and `tan γe` half its slope (a cone has
+//!   `Δr = 2 tan γ y`). The weighted fit is the harmonic linearisation of the kinematic
+//!   equation; on a piecewise linear Δr it too is evaluated in closed form:
+//!   `tan γe = (1 / (π ŷ)) ∫ sin φ Δr(y_eq + ŷ sin φ) dφ` over `φ ∈ [-π/2, π/2]`.
+//!
+//! Both give `λ` exactly for a cone `Δr = 2 λ y`, and 0 while the motion stays within a band
+//! where Δr = 0. They differ where Δr is strongly nonlinear (flange contact, jumps): the
+//! regression weights Δr by the time spent at each `y`, the Klingel wavelength by `1/speed`
+//! along the actual nonlinear motion.
+//!
+//! # Units and signs
+//!
+//! `y` (mm) is the lateral displacement of the wheelset, positive to the left (track frame);
+//! `Δr = r_left - r_right` (mm), increasing with `y` for a stable pair. `tan γe` is
+//! dimensionless.
+//!
+//! # Example
+//!
+//! ```
+//! use wheelrail::conicity::{DeltaR, Method, equivalent_conicity};
+//! // A cone of conicity 0.2: Δr = 2 · 0.2 · y.
+//! let y: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();
+//! let dr = y.iter().map(|y| 0.4 * y).collect();
+//! let delta_r = DeltaR::new(y, dr).unwrap();
+//! let c = equivalent_conicity(&delta_r, &[1.0, 3.0, 5.0], Method::Klingel);
+//! for p in &c.points {
+//!     assert!((p.tan_gamma_e - 0.2).abs() < 1e-12);
+//! }
+//! ```
+
+use std::f64::consts::PI;
+use std::fmt;
+
+/// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
+pub const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
+
+/// The default amplitudes: 0.5 to 10 mm in steps of 0.1 mm (96 values), exact decimals.
+pub fn default_amplitudes_mm() -> Vec<f64> {
+    (5..=100).map(|i| f64::from(i) / 10.0).collect()
+}
+
+/// How the equivalent conicity is computed from Δr.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// Wavelength of the nonlinear kinematic motion (EN 15302 Annex B), exact closed forms.
+    Klingel,
+    /// Linear regression of Δr over the motion, weighted as a harmonic motion (EN 15302
+    /// Annex C).
+    Regression,
+}
+
+impl Method {
+    /// Both methods, default first.
+    pub const ALL: [Method; 2] = [Method::Klingel, Method::Regression];
+
+    /// The name used in scene files, on the command line and in column names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Klingel => "klingel",
+            Method::Regression => "regression",
+        }
+    }
+
+    /// The method of a name.
+    pub fn from_name(name: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == name)
+    }
+}
+
+/// Why an amplitude has the value it has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    /// Computed.
+    Ok,
+    /// The whole motion lies in a band where Δr = 0: no restoring effect, `tan γe = 0`.
+    ZeroBand,
+    /// The motion would leave the range where Δr is known (the sweep's ends, or a position
+    /// where the rigid search did not converge): NaN, never extrapolated.
+    BeyondRange,
+    /// No periodic motion has this amplitude: Δr changes sign again beyond the equilibrium,
+    /// and the amplitude lies in the gap that the second well opens (NaN).
+    NoPeriodicMotion,
+    /// Δr has no stable zero crossing (from negative to positive): there is no equilibrium
+    /// (NaN).
+    NoEquilibrium,
+}
+
+impl Status {
+    /// Text of the `status` columns.
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Ok => "ok",
+            Status::ZeroBand => "zero band",
+            Status::BeyondRange => "beyond delta_r range",
+            Status::NoPeriodicMotion => "no periodic motion",
+            Status::NoEquilibrium => "no equilibrium",
+        }
+    }
+}
+
+/// Why a Δr function cannot be used.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DeltaRError {
+    /// Fewer than 3 points.
+    TooFewPoints {
+        /// Points given.
+        count: usize,
+    },
+    /// A value is NaN or infinite (index of the point).
+    NonFinite {
+        /// Index of the point.
+        index: usize,
+    },
+    /// `y` decreases (or repeats more than once) at this point.
+    NotIncreasing {
+        /// Index of the point.
+        index: usize,
+    },
+    /// Δr never changes sign from negative to positive: no equilibrium.
+    NoSignChange,
+    /// The `y` and Δr columns differ in length.
+    LengthMismatch,
+}
+
+impl fmt::Display for DeltaRError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DeltaRError::TooFewPoints { count } => {
+                write!(f, "{count} points; at least 3 are needed")
+            }
+            DeltaRError::NonFinite { index } => write!(f, "point {index} is not finite"),
+            DeltaRError::NotIncreasing { index } => {
+                write!(f, "y does not increase at point {index}")
+            }
+            DeltaRError::NoSignChange => write!(
+                f,
+                "delta_r never changes sign from negative to positive: no equilibrium position"
+            ),
+            DeltaRError::LengthMismatch => write!(f, "y and delta_r differ in length"),
+        }
+    }
+}
+
+impl std::error::Error for DeltaRError {}
+
+/// A rolling radius difference function: Δr (mm) linear between points `(y, Δr)`, `y`
+/// increasing. Two consecutive points at the same `y` are a jump of Δr there (a contact-point
+/// jump): the first holds the value from the left, the second the value from the right.
+/// A NaN value marks a point where Δr is unknown; the function ends there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeltaR {
+    y: Vec<f64>,
+    dr: Vec<f64>,
+}
+
+impl DeltaR {
+    /// A Δr function from a table with strictly increasing `y`, all values finite, at least
+    /// 3 points and a change of sign.
+    ///
+    /// # Errors
+    /// [`DeltaRError`] naming the offending point.
+    pub fn new(y: Vec<f64>, delta_r: Vec<f64>) -> Result<DeltaR, DeltaRError> {
+        if y.len() != delta_r.len() {
+            return Err(DeltaRError::LengthMismatch);
+        }
+        if y.len() < 3 {
+            return Err(DeltaRError::TooFewPoints { count: y.len() });
+        }
+        for (i, (a, b)) in y.iter().zip(&delta_r).enumerate() {
+            if !(a.is_finite() && b.is_finite()) {
+                return Err(DeltaRError::NonFinite { index: i });
+            }
+            if i > 0 && *a <= y[i - 1] {
+                return Err(DeltaRError::NotIncreasing { index: i });
+            }
+        }
+        let d = DeltaR { y, dr: delta_r };
+        if d.equilibrium().is_none() {
+            return Err(DeltaRError::NoSignChange);
+        }
+        Ok(d)
+    }
+
+    /// A Δr function with jumps (a `y` given twice: values from the left, then from the
+    /// right) and unknown values (NaN), as a rigid sweep gives it. `y` must not decrease and
+    /// no `y` may appear three times; no sign change is required (the conicity then says
+    /// [`Status::NoEquilibrium`]).
+    ///
+    /// # Errors
+    /// [`DeltaRError::NotIncreasing`], [`DeltaRError::NonFinite`] for a non-finite `y`.
+    pub fn with_jumps(y: Vec<f64>, delta_r: Vec<f64>) -> Result<DeltaR, DeltaRError> {
+        if y.len() != delta_r.len() {
+            return Err(DeltaRError::LengthMismatch);
+        }
+        for i in 0..y.len() {
+            if !y[i].is_finite() {
+                return Err(DeltaRError::NonFinite { index: i });
+            }
+            let repeats_twice = i >= 2 && y[i] <= y[i - 2];
+            if i > 0 && (y[i] < y[i - 1] || repeats_twice) {
+                return Err(DeltaRError::NotIncreasing { index: i });
+            }
+        }
+        Ok(DeltaR { y, dr: delta_r })
+    }
+
+    /// Parses a CSV table with columns `y_mm,delta_r_mm` (a header row, `#` comments, blank
+    /// lines allowed; further columns ignored).
+    ///
+    /// # Errors
+    /// A message naming `origin` and the line.
+    pub fn parse_csv(text: &str, origin: &str) -> Result<DeltaR, String> {
+        let mut y = Vec::new();
+        let mut dr = Vec::new();
+        let mut lines = Vec::new();
+        let mut header_seen = false;
+        for (k, raw) in text.lines().enumerate() {
+            let line_no = k + 1;
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            if !header_seen {
+                header_seen = true;
+                if cells.len() < 2 || cells[0] != "y_mm" || cells[1] != "delta_r_mm" {
+                    return Err(format!(
+                        "{origin}:{line_no}: expected the header `y_mm,delta_r_mm`, found {line:?}"
+                    ));
+                }
+                continue;
+            }
+            if cells.len() < 2 {
+                return Err(format!(
+                    "{origin}:{line_no}: expected two values `y_mm,delta_r_mm`, found {line:?}"
+                ));
+            }
+            let parse = |cell: &str, column: &str| -> Result<f64, String> {
+                let v: f64 = cell.parse().map_err(|_| {
+                    format!("{origin}:{line_no}: {column} {cell:?} is not a number")
+                })?;
+                if v.is_finite() {
+                    Ok(v)
+                } else {
+                    Err(format!("{origin}:{line_no}: {column} {cell} is not finite"))
+                }
+            };
+            y.push(parse(cells[0], "y_mm")?);
+            dr.push(parse(cells[1], "delta_r_mm")?);
+            lines.push(line_no);
+        }
+        if !header_seen {
+            return Err(format!(
+                "{origin}: empty: expected the header `y_mm,delta_r_mm` and at least 3 rows"
+            ));
+        }
+        DeltaR::new(y, dr).map_err(|e| match e {
+            DeltaRError::NotIncreasing { index } => format!(
+                "{origin}:{}: y_mm {} does not increase (previous row: {})",
+                lines[index],
+                y_text(text, lines[index]),
+                y_text(text, lines[index - 1])
+            ),
+            DeltaRError::NonFinite { index } => {
+                format!("{origin}:{}: value not finite", lines[index])
+            }
+            other => format!("{origin}: {other}"),
+        })
+    }
+
+    /// The points `(y, Δr)` (mm).
+    pub fn points(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        self.y.iter().copied().zip(self.dr.iter().copied())
+    }
+
+    /// Δr at `y` by linear interpolation (the value from the right at a jump); `None`
+    /// outside the points or where a neighbouring value is unknown.
+    pub fn at(&self, y: f64) -> Option<f64> {
+        let n = self.y.len();
+        if n == 0 || !(y >= self.y[0] && y <= self.y[n - 1]) {
+            return None;
+        }
+        // The last point with y_i <= y (at a jump, the one holding the right value).
+        let i = self.y.partition_point(|&v| v <= y).max(1) - 1;
+        if i + 1 == n {
+            return self.dr[i].is_finite().then_some(self.dr[i]);
+        }
+        let (y0, y1, d0, d1) = (self.y[i], self.y[i + 1], self.dr[i], self.dr[i + 1]);
+        let v = if y1 > y0 {
+            d0 + (d1 - d0) * (y - y0) / (y1 - y0)
+        } else {
+            d1
+        };
+        v.is_finite().then_some(v)
+    }
+
+    /// The equilibrium: the stable zero crossing of Δr (from negative to positive) nearest
+    /// to `y = 0`, as the band `[from, to]` where Δr = 0 (`from == to` for a crossing point).
+    /// `None` when Δr has no stable crossing.
+    pub fn equilibrium(&self) -> Option<(f64, f64)> {
+        let (y, d) = (&self.y, &self.dr);
+        let n = y.len();
+        let mut best: Option<(f64, f64)> = None;
+        let mut consider = |band: (f64, f64)| {
+            let mid = 0.5 * (band.0 + band.1);
+            if best.is_none_or(|b| mid.abs() < (0.5 * (b.0 + b.1)).abs()) {
+                best = Some(band);
+            }
+        };
+        let mut i = 0;
+        while i < n {
+            if d[i] == 0.0 {
+                // A run of zeros: stable when entered from below and left upwards.
+                let mut j = i;
+                while j + 1 < n && d[j + 1] == 0.0 {
+                    j += 1;
+                }
+                let below = i > 0 && d[i - 1] < 0.0;
+                let above = j + 1 < n && d[j + 1] > 0.0;
+                if below && above {
+                    consider((y[i], y[j]));
+                }
+                i = j + 1;
+                continue;
+            }
+            if i + 1 < n && d[i] < 0.0 && d[i + 1] > 0.0 {
+                let crossing = if y[i + 1] > y[i] {
+                    y[i] + (y[i + 1] - y[i]) * (-d[i] / (d[i + 1] - d[i]))
+                } else {
+                    y[i]
+                };
+                consider((crossing, crossing));
+            }
+            i += 1;
+        }
+        best
+    }
+
+    /// The range of `y` around the equilibrium over which Δr is known (mm).
+    pub fn known_range(&self) -> Option<(f64, f64)> {
+        let (from, to) = self.equilibrium()?;
+        let n = self.y.len();
+        let mut lo = self.y.partition_point(|&v| v < from);
+        while lo > 0 && self.dr[lo - 1].is_finite() {
+            lo -= 1;
+        }
+        let mut hi = self.y.partition_point(|&v| v <= to).min(n) - 1;
+        while hi + 1 < n && self.dr[hi + 1].is_finite() {
+            hi += 1;
+        }
+        Some((self.y[lo], self.y[hi]))
+    }
+}
+
+/// The text of the first cell of line `line_no` (1-based), for messages.
+fn y_text(text: &str, line_no: usize) -> String {
+    text.lines()
+        .nth(line_no - 1)
+        .and_then(|l| l.split(',').next())
+        .map_or_else(String::new, |s| s.trim().to_string())
+}
+
+/// The equivalent conicity at one amplitude.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConicityPoint {
+    /// Amplitude ŷ of the motion, half its peak-to-peak extent (mm).
+    pub amplitude_mm: f64,
+    /// Equivalent conicity (NaN unless the status is ok or zero band).
+    pub tan_gamma_e: f64,
+    /// Centre of the motion, `(y1 + y2) / 2` (mm): the equilibrium for a symmetric Δr.
+    pub centre_mm: f64,
+    /// How the value was obtained.
+    pub status: Status,
+}
+
+/// The equivalent conicity function of one Δr by one method.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EquivalentConicity {
+    /// The method.
+    pub method: Method,
+    /// The equilibrium position, the middle of the band where Δr = 0 (mm; NaN if none).
+    pub equilibrium_mm: f64,
+    /// The largest amplitude the Δr function supports (mm; NaN if none).
+    pub max_amplitude_mm: f64,
+    /// One point per amplitude asked for, in the order asked.
+    pub points: Vec<ConicityPoint>,
+}
+
+impl EquivalentConicity {
+    /// `tan γe` at amplitude `a` (mm), when `a` was among the amplitudes computed.
+    pub fn at(&self, a: f64) -> Option<f64> {
+        self.points
+            .iter()
+            .find(|p| (p.amplitude_mm - a).abs() < 1e-9)
+            .map(|p| p.tan_gamma_e)
+    }
+}
+
+/// The equivalent conicity of `delta_r` at each amplitude of `amplitudes_mm` (mm, any
+/// order, positive) by `method`.
+///
+/// # Example
+/// ```
+/// use wheelrail::conicity::{DeltaR, Method, Status, equivalent_conicity};
+/// // Δr = 0 for |y| <= 1 mm, a cone of 0.1 outside: no restoring effect below ŷ = 1 mm.
+/// let y: Vec<f64> = (-50..=50).map(|i| f64::from(i) * 0.1).collect();
+/// let dr = y.iter().map(|&y: &f64| 0.2 * (y.abs() - 1.0).max(0.0) * y.signum()).collect();
+/// let c = equivalent_conicity(&DeltaR::new(y, dr).unwrap(), &[0.5, 2.0], Method::Klingel);
+/// assert_eq!(c.points[0].status, Status::ZeroBand);
+/// assert_eq!(c.points[0].tan_gamma_e.to_bits(), 0f64.to_bits());
+/// assert!(c.points[1].tan_gamma_e > 0.0 && c.points[1].tan_gamma_e < 0.1);
+/// ```
+pub fn equivalent_conicity(
+    delta_r: &DeltaR,
+    amplitudes_mm: &[f64],
+    method: Method,
+) -> EquivalentConicity {
+    let Some(well) = Well::new(delta_r) else {
+        return EquivalentConicity {
+            method,
+            equilibrium_mm: f64::NAN,
+            max_amplitude_mm: f64::NAN,
+            points: amplitudes_mm
+                .iter()
+                .map(|&a| ConicityPoint {
+                    amplitude_mm: a,
+                    tan_gamma_e: f64::NAN,
+                    centre_mm: f64::NAN,
+                    status: Status::NoEquilibrium,
+                })
+                .collect(),
+        };
+    };
+    let points = match method {
+        Method::Klingel => well.klingel(amplitudes_mm),
+        Method::Regression => amplitudes_mm
+            .iter()
+            .map(|&a| well.regression(delta_r, a))
+            .collect(),
+    };
+    EquivalentConicity {
+        method,
+        equilibrium_mm: well.equilibrium(),
+        max_amplitude_mm: match method {
+            Method::Klingel => well.klingel_max_amplitude(),
+            Method::Regression => well.regression_max_amplitude(),
+        },
+        points,
+    }
+}
+
+/// The equivalent conicity at the default amplitudes ([`default_amplitudes_mm`]) that
+/// `delta_r` supports: those beyond [`EquivalentConicity::max_amplitude_mm`] of the Klingel
+/// method are left out rather than reported as NaN.
+pub fn equivalent_conicity_clipped(delta_r: &DeltaR, method: Method) -> EquivalentConicity {
+    let amplitudes = supported_default_amplitudes(delta_r);
+    equivalent_conicity(delta_r, &amplitudes, method)
+}
+
+/// The default amplitudes up to the largest one the Klingel motion supports on `delta_r`
+/// (all of them when Δr has no equilibrium: each is then reported as such).
+pub fn supported_default_amplitudes(delta_r: &DeltaR) -> Vec<f64> {
+    let mut amplitudes = default_amplitudes_mm();
+    if let Some(well) = Well::new(delta_r) {
+        let max = well.klingel_max_amplitude();
+        amplitudes.retain(|&a| a <= max * (1.0 + 1e-12));
+    }
+    amplitudes
+}
+
+/// One piece of a branch of `S`, in the branch coordinate `t >= 0` (distance from the
+/// equilibrium band): `S(t0 + τ) = s0 + g0 τ + hm τ²` for `τ ∈ [0, len]`.
+#[derive(Debug, Clone, Copy)]
+struct Piece {
+    t0: f64,
+    len: f64,
+    s0: f64,
+    /// `dS/dt` at the start of the piece.
+    g0: f64,
+    /// Half the second derivative of `S` on the piece.
+    hm: f64,
+    /// The largest `S` over this piece and all before it.
+    running_max: f64,
+}
+
+impl Piece {
+    fn s_at(&self, tau: f64) -> f64 {
+        self.s0 + tau * (self.g0 + self.hm * tau)
+    }
+
+    fn s_end(&self) -> f64 {
+        self.s_at(self.len)
+    }
+
+    /// The first `τ` in the piece where `S = h`, for `S(0) < h <= max S` on the piece.
+    fn reach(&self, h: f64) -> f64 {
+        let c = h - self.s0;
+        if c <= 0.0 {
+            return 0.0;
+        }
+        let tau = if self.hm == 0.0 {
+            c / self.g0
+        } else {
+            let disc = (self.g0 * self.g0 + 4.0 * self.hm * c).max(0.0).sqrt();
+            if self.g0 >= 0.0 {
+                2.0 * c / (self.g0 + disc)
+            } else {
+                (disc - self.g0) / (2.0 * self.hm)
+            }
+        };
+        tau.clamp(0.0, self.len)
+    }
+
+    /// `∫ dτ / sqrt(h - S)` over `[0, len]` in closed form, given `r0 = sqrt(h - S(0))` and
+    /// `r1 = sqrt(h - S(len))` (either may be 0: the integrable end singularity is exact).
+    fn integral(&self, len: f64, r0: f64, r1: f64) -> f64 {
+        let (g0, hm) = (self.g0, self.hm);
+        let g1 = g0 + 2.0 * hm * len;
+        if hm > 0.0 {
+            // h - S = c + b τ + a τ² with a = -hm < 0: an arcsine, written as one atan2 of
+            // the end values (no cancellation, exact at a turning point).
+            let k = hm.sqrt();
+            let num = (2.0 * k * (g1 * r0 - g0 * r1)).abs();
+            let den = 4.0 * hm * r0 * r1 + g0 * g1;
+            num.atan2(den) / k
+        } else if hm < 0.0 {
+            // a > 0: a logarithm, as ln1p of the end values' relative change.
+            let k = (-hm).sqrt();
+            if g0 + g1 >= 0.0 {
+                (2.0 * k * (r0 - r1 + k * len) / (2.0 * k * r1 + g1)).ln_1p() / k
+            } else {
+                (2.0 * k * (r1 - r0 + k * len) / (2.0 * k * r0 - g0)).ln_1p() / k
+            }
+        } else if r0 + r1 > 0.0 {
+            2.0 * len / (r0 + r1)
+        } else {
+            f64::INFINITY
+        }
+    }
+}
+
+/// `S` on both sides of the equilibrium band, as pieces in the branch coordinates.
+#[derive(Debug)]
+struct Well {
+    /// The band where Δr = 0 (mm; equal ends for a crossing point).
+    band: (f64, f64),
+    /// Towards larger `y`: `t = y - band.1`.
+    right: Vec<Piece>,
+    /// Towards smaller `y`: `t = band.0 - y`.
+    left: Vec<Piece>,
+}
+
+impl Well {
+    fn new(delta_r: &DeltaR) -> Option<Well> {
+        let band = delta_r.equilibrium()?;
+        let (y, d) = (&delta_r.y, &delta_r.dr);
+        let n = y.len();
+        // Right branch, t = y - band.1, dS/dt = Δr: from the value just right of the band
+        // (0 at a crossing inside a piece; at a knot, the last point there holds the value
+        // from the right) through every later point.
+        let start = y.partition_point(|&v| v <= band.1);
+        let mut right = Vec::new();
+        if start > 0 && start < n {
+            let g = if y[start - 1] >= band.1 {
+                d[start - 1]
+            } else {
+                0.0
+            };
+            let pts: Vec<(f64, f64)> = std::iter::once((0.0, g))
+                .chain((start..n).map(|k| (y[k] - band.1, d[k])))
+                .collect();
+            right = branch(&pts);
+        }
+        // Left branch, mirrored: t = band.0 - y, dS/dt = -Δr(y); at a knot the first point
+        // there holds the value from the left.
+        let stop = y.partition_point(|&v| v < band.0);
+        let mut left = Vec::new();
+        if stop > 0 && stop < n {
+            let g = if y[stop] <= band.0 { -d[stop] } else { 0.0 };
+            let pts: Vec<(f64, f64)> = std::iter::once((0.0, g))
+                .chain((0..stop).rev().map(|k| (band.0 - y[k], -d[k])))
+                .collect();
+            left = branch(&pts);
+        }
+        Some(Well { band, right, left })
+    }
+
+    fn equilibrium(&self) -> f64 {
+        0.5 * (self.band.0 + self.band.1)
+    }
+
+    fn band_width(&self) -> f64 {
+        self.band.1 - self.band.0
+    }
+
+    /// The first `t` of a branch where `S = h`, on piece `p`.
+    fn turning(pieces: &[Piece], p: usize, h: f64) -> f64 {
+        pieces[p].t0 + pieces[p].reach(h)
+    }
+
+    /// `∫ dt / sqrt(h - S)` from 0 to the turning point on piece `p`.
+    fn branch_integral(pieces: &[Piece], p: usize, h: f64) -> f64 {
+        let mut sum = 0.0;
+        let mut r0 = (h - pieces[0].s0).max(0.0).sqrt();
+        for piece in &pieces[..p] {
+            let r1 = (h - piece.s_end()).max(0.0).sqrt();
+            sum += piece.integral(piece.len, r0, r1);
+            r0 = r1;
+        }
+        let last = &pieces[p];
+        let tau = last.reach(h);
+        sum + last.integral(tau, r0, 0.0)
+    }
+
+    fn klingel_max_amplitude(&self) -> f64 {
+        let (Some(r), Some(l)) = (self.right.last(), self.left.last()) else {
+            return 0.5 * self.band_width();
+        };
+        let h = r.running_max.min(l.running_max);
+        let pr = self.right.partition_point(|p| p.running_max < h);
+        let pl = self.left.partition_point(|p| p.running_max < h);
+        0.5 * (self.band_width()
+            + Well::turning(&self.right, pr, h)
+            + Well::turning(&self.left, pl, h))
+    }
+
+    /// The Klingel equivalent conicity at each amplitude (any order).
+    fn klingel(&self, amplitudes: &[f64]) -> Vec<ConicityPoint> {
+        let mut order: Vec<usize> = (0..amplitudes.len()).collect();
+        order.sort_by(|&a, &b| amplitudes[a].total_cmp(&amplitudes[b]));
+        let mut out = vec![
+            ConicityPoint {
+                amplitude_mm: f64::NAN,
+                tan_gamma_e: f64::NAN,
+                centre_mm: f64::NAN,
+                status: Status::BeyondRange,
+            };
+            amplitudes.len()
+        ];
+        let (mut pr, mut pl) = (0usize, 0usize);
+        let band = self.band_width();
+        for &i in &order {
+            let a = amplitudes[i];
+            out[i].amplitude_mm = a;
+            let target = 2.0 * a - band;
+            if a.is_nan() || a <= 0.0 {
+                out[i].status = Status::BeyondRange;
+                continue;
+            }
+            if target <= 0.0 {
+                out[i] = ConicityPoint {
+                    amplitude_mm: a,
+                    tan_gamma_e: 0.0,
+                    centre_mm: self.equilibrium(),
+                    status: Status::ZeroBand,
+                };
+                continue;
+            }
+            // Advance to the pieces holding the turning points of the wanted level.
+            let width = |pr: usize, pl: usize, h: f64| {
+                Well::turning(&self.right, pr, h) + Well::turning(&self.left, pl, h)
+            };
+            let found = loop {
+                if pr >= self.right.len() || pl >= self.left.len() {
+                    break false;
+                }
+                let hi = self.right[pr].running_max.min(self.left[pl].running_max);
+                if width(pr, pl, hi) >= target {
+                    break true;
+                }
+                if self.right[pr].running_max <= hi {
+                    pr += 1;
+                }
+                if self.left[pl].running_max <= hi {
+                    pl += 1;
+                }
+            };
+            if !found {
+                out[i].status = Status::BeyondRange;
+                continue;
+            }
+            let lo = [
+                pr.checked_sub(1).map(|k| self.right[k].running_max),
+                pl.checked_sub(1).map(|k| self.left[k].running_max),
+            ]
+            .into_iter()
+            .flatten()
+            .fold(0.0, f64::max);
+            let hi = self.right[pr].running_max.min(self.left[pl].running_max);
+            if width(pr, pl, lo) > target * (1.0 + 1e-12) {
+                out[i].status = Status::NoPeriodicMotion;
+                continue;
+            }
+            let h = solve_level(|h| width(pr, pl, h) - target, lo, hi);
+            let (tr, tl) = (
+                Well::turning(&self.right, pr, h),
+                Well::turning(&self.left, pl, h),
+            );
+            let integral = band / h.sqrt()
+                + Well::branch_integral(&self.right, pr, h)
+                + Well::branch_integral(&self.left, pl, h);
+            let ratio = PI / integral;
+            out[i] = ConicityPoint {
+                amplitude_mm: a,
+                tan_gamma_e: ratio * ratio,
+                centre_mm: 0.5 * ((self.band.1 + tr) + (self.band.0 - tl)),
+                status: Status::Ok,
+            };
+        }
+        out
+    }
+
+    fn regression_max_amplitude(&self) -> f64 {
+        let reach = |p: &[Piece]| p.last().map_or(0.0, |p| p.t0 + p.len);
+        let c = self.equilibrium();
+        (self.band.1 + reach(&self.right) - c).min(c - (self.band.0 - reach(&self.left)))
+    }
+
+    /// The regression equivalent conicity at amplitude `a`: `(1/(π a)) ∫ sin φ Δr(c + a sin
+    /// φ) dφ` over `[-π/2, π/2]`, exact on each linear piece.
+    fn regression(&self, delta_r: &DeltaR, a: f64) -> ConicityPoint {
+        let c = self.equilibrium();
+        let mut point = ConicityPoint {
+            amplitude_mm: a,
+            tan_gamma_e: f64::NAN,
+            centre_mm: c,
+            status: Status::BeyondRange,
+        };
+        if a.is_nan() || a <= 0.0 || a > self.regression_max_amplitude() * (1.0 + 1e-12) + 1e-12 {
+            return point;
+        }
+        if 2.0 * a <= self.band_width() {
+            point.tan_gamma_e = 0.0;
+            point.status = Status::ZeroBand;
+            return point;
+        }
+        let (y, d) = (&delta_r.y, &delta_r.dr);
+        let (lo, hi) = (c - a, c + a);
+        // Antiderivative pieces: with x = sin φ = (y - c)/a and Δr = A + B x on a piece,
+        // ∫ sin φ (A + B sin φ) dφ = -A cos φ + B (φ - sin φ cos φ) / 2.
+        let prim = |x: f64, aa: f64, bb: f64| {
+            let x = x.clamp(-1.0, 1.0);
+            let cos = (1.0 - x * x).max(0.0).sqrt();
+            -aa * cos + 0.5 * bb * (x.asin() - x * cos)
+        };
+        let mut sum = 0.0;
+        for k in 0..y.len().saturating_sub(1) {
+            let (y0, y1) = (y[k], y[k + 1]);
+            if y1 <= y0 || y1 <= lo || y0 >= hi {
+                continue;
+            }
+            let m = (d[k + 1] - d[k]) / (y1 - y0);
+            // Δr = d0 + m (y - y0) = (d0 + m (c - y0)) + (m a) x.
+            let aa = d[k] + m * (c - y0);
+            let bb = m * a;
+            let x0 = ((y0.max(lo)) - c) / a;
+            let x1 = ((y1.min(hi)) - c) / a;
+            sum += prim(x1, aa, bb) - prim(x0, aa, bb);
+        }
+        point.tan_gamma_e = sum / (PI * a);
+        point.status = Status::Ok;
+        point
+    }
+}
+
+/// The pieces of one branch from its points `(t, dS/dt)`, `t` not decreasing from 0 (a
+/// repeated `t` is a jump of the slope). Ends at the first unknown value.
+fn branch(pts: &[(f64, f64)]) -> Vec<Piece> {
+    let mut pieces = Vec::with_capacity(pts.len());
+    let mut s = 0.0;
+    let mut running_max: f64 = 0.0;
+    for w in pts.windows(2) {
+        let ((t0, g0), (t1, g1)) = (w[0], w[1]);
+        if !(g0.is_finite() && g1.is_finite()) {
+            break;
+        }
+        let len = t1 - t0;
+        if len <= 0.0 {
+            continue;
+        }
+        let hm = 0.5 * (g1 - g0) / len;
+        let piece = Piece {
+            t0,
+            len,
+            s0: s,
+            g0,
+            hm,
+            running_max,
+        };
+        // The largest S on the piece: at an end, or where dS/dt changes from + to -.
+        let mut top = piece.s_end().max(s);
+        if g0 > 0.0 && g1 < 0.0 {
+            top = top.max(piece.s_at(-g0 / (2.0 * hm)));
+        }
+        running_max = running_max.max(top);
+        s = piece.s_end();
+        pieces.push(Piece {
+            running_max,
+            ..piece
+        });
+    }
+    pieces
+}
+
+/// The level `h` in `[lo, hi]` where `f(h) = 0`, for `f` increasing with `f(lo) <= 0 <=
+/// f(hi)`: secant steps on `u = sqrt(h)` (the turning points are smooth in `u` near the
+/// equilibrium, where they grow like `sqrt(h)`), safeguarded by bisection.
+fn solve_level(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+    let (mut ua, mut ub) = (lo.max(0.0).sqrt(), hi.sqrt());
+    let (mut fa, mut fb) = (f(ua * ua), f(ub * ub));
+    if fb <= 0.0 {
+        return hi;
+    }
+    if fa >= 0.0 {
+        return lo;
+    }
+    // Illinois variant of regula falsi: superlinear, never leaves the bracket.
+    let mut side = 0i8;
+    for _ in 0..100 {
+        let u = (ua * fb - ub * fa) / (fb - fa);
+        let u = if u > ua && u < ub { u } else { 0.5 * (ua + ub) };
+        let fu = f(u * u);
+        if fu == 0.0 || (ub - ua) <= 4.0 * f64::EPSILON * ub {
+            return u * u;
+        }
+        if fu < 0.0 {
+            ua = u;
+            fa = fu;
+            if side == -1 {
+                fb *= 0.5;
+            }
+            side = -1;
+        } else {
+            ub = u;
+            fb = fu;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+        if (ub - ua) <= 4.0 * f64::EPSILON * ub {
+            break;
+        }
+    }
+    let u = 0.5 * (ua + ub);
+    u * u
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn grid(from: f64, to: f64, step: f64) -> Vec<f64> {
+        let n = ((to - from) / step).round() as usize;
+        (0..=n).map(|i| from + i as f64 * step).collect()
+    }
+
+    fn cone(lambda: f64) -> DeltaR {
+        let y = grid(-12.0, 12.0, 0.1);
+        let dr = y.iter().map(|y| 2.0 * lambda * y).collect();
+        DeltaR::new(y, dr).unwrap()
+    }
+
+    #[test]
+    fn cone_gives_its_conicity_at_every_amplitude() {
+        for lambda in [0.001, 0.05, 0.2, 1.5] {
+            let d = cone(lambda);
+            let amps = default_amplitudes_mm();
+            for method in Method::ALL {
+                let c = equivalent_conicity(&d, &amps, method);
+                assert_eq!(c.points.len(), 96);
+                for p in &c.points {
+                    assert_eq!(p.status, Status::Ok, "{method:?} {p:?}");
+                    assert!(
+                        (p.tan_gamma_e - lambda).abs() < 1e-10 * lambda.max(1.0),
+                        "{method:?} lambda {lambda} at {}: {}",
+                        p.amplitude_mm,
+                        p.tan_gamma_e
+                    );
+                    assert!(p.centre_mm.abs() < 1e-12);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn piece_integral_matches_quadrature() {
+        // Against a fine midpoint rule on a piece away from any root, every case of hm.
+        for (g0, hm) in [
+            (0.3, 0.2),
+            (0.3, -0.05),
+            (0.3, 0.0),
+            (-0.1, 0.4),
+            (0.0, 1e-9),
+        ] {
+            let p = Piece {
+                t0: 0.0,
+                len: 0.7,
+                s0: 0.1,
+                g0,
+                hm,
+                running_max: 0.0,
+            };
+            let h = 2.0;
+            let r0 = (h - p.s_at(0.0)).sqrt();
+            let r1 = (h - p.s_end()).sqrt();
+            let exact = p.integral(p.len, r0, r1);
+            let n = 200_000;
+            let dt = p.len / f64::from(n);
+            let mid: f64 = (0..n)
+                .map(|i| dt / (h - p.s_at((f64::from(i) + 0.5) * dt)).sqrt())
+                .sum();
+            assert!((exact - mid).abs() < 1e-10, "{g0} {hm}: {exact} {mid}");
+        }
+    }
+
+    #[test]
+    fn zero_band_gives_zero_below_its_half_width() {
+        let y = grid(-8.0, 8.0, 0.1);
+        let dr = y
+            .iter()
+            .map(|&y: &f64| 0.3 * (y.abs() - 1.5).max(0.0) * y.signum())
+            .collect();
+        let d = DeltaR::new(y, dr).unwrap();
+        for method in Method::ALL {
+            let c = equivalent_conicity(&d, &[0.5, 1.0, 1.5, 1.6, 3.0], method);
+            for p in &c.points[..3] {
+                assert_eq!(p.status, Status::ZeroBand);
+                assert_eq!(p.tan_gamma_e.to_bits(), 0.0f64.to_bits());
+            }
+            for p in &c.points[3..] {
+                assert_eq!(p.status, Status::Ok);
+                assert!(p.tan_gamma_e > 0.0 && p.tan_gamma_e < 0.15, "{p:?}");
+            }
+            assert!(c.equilibrium_mm.abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn amplitudes_beyond_the_table_are_nan() {
+        let y = grid(-4.0, 5.0, 0.1);
+        let dr = y.iter().map(|y| 0.2 * y).collect();
+        let d = DeltaR::new(y, dr).unwrap();
+        for method in Method::ALL {
+            let c = equivalent_conicity(&d, &[3.9, 4.1, 6.0], method);
+            assert_eq!(c.points[0].status, Status::Ok);
+            assert!((c.points[0].tan_gamma_e - 0.1).abs() < 1e-12);
+            for p in &c.points[1..] {
+                assert_eq!(p.status, Status::BeyondRange, "{method:?}");
+                assert!(p.tan_gamma_e.is_nan());
+            }
+            assert!((c.max_amplitude_mm - 4.0).abs() < 1e-9, "{c:?}");
+        }
+    }
+
+    #[test]
+    fn shifted_cone_is_centred_on_its_equilibrium() {
+        // Δr = 2 λ (y - 0.7): an asymmetric pair (radii differ).
+        let y = grid(-9.0, 11.0, 0.1);
+        let dr = y.iter().map(|y| 0.3 * (y - 0.7)).collect();
+        let d = DeltaR::new(y, dr).unwrap();
+        let c = equivalent_conicity(&d, &[1.0, 5.0], Method::Klingel);
+        assert!((c.equilibrium_mm - 0.7).abs() < 1e-12);
+        for p in &c.points {
+            assert!((p.tan_gamma_e - 0.15).abs() < 1e-12);
+            assert!((p.centre_mm - 0.7).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn two_cones_match_the_closed_form() {
+        // Δr = 2 λ1 y for y < 0 and 2 λ2 y for y > 0: the half periods add,
+        // I = π/(2 sqrt λ1) + π/(2 sqrt λ2), and the amplitude is (sqrt(h/λ1) + sqrt(h/λ2))/2.
+        let (l1, l2) = (0.05, 0.3);
+        let y = grid(-30.0, 30.0, 0.1);
+        let dr = y
+            .iter()
+            .map(|&y| 2.0 * if y < 0.0 { l1 } else { l2 } * y)
+            .collect();
+        let d = DeltaR::new(y, dr).unwrap();
+        let expected = (2.0 / (1.0 / l1.sqrt() + 1.0 / l2.sqrt())).powi(2);
+        let c = equivalent_conicity(&d, &[2.0, 7.0], Method::Klingel);
+        for p in &c.points {
+            assert!((p.tan_gamma_e - expected).abs() < 1e-12, "{p:?} {expected}");
+            // Turning points sqrt(h/λ): the centre lies towards the softer side.
+            let w = 1.0 / l1.sqrt() + 1.0 / l2.sqrt();
+            let centre = p.amplitude_mm * (1.0 / l2.sqrt() - 1.0 / l1.sqrt()) / w;
+            assert!((p.centre_mm - centre).abs() < 1e-9, "{p:?} {centre}");
+        }
+    }
+
+    #[test]
+    fn a_jump_is_integrated_exactly() {
+        // A cone of 0.1 whose Δr jumps by 1 mm at |y| = 2 mm (a contact-point jump), given
+        // as a repeated point. Exact: S = 0.1 y² below 2, then 0.4 + 0.2(y-2) + ... ;
+        // checked against the same function sampled 100 times finer with a steep ramp
+        // instead of the jump (converging to it).
+        let jumpy = |ramp: f64, step: f64| {
+            let mut y = Vec::new();
+            let mut dr = Vec::new();
+            let f = |y: f64| 0.2 * y + if y.abs() >= 2.0 { y.signum() } else { 0.0 };
+            for v in grid(-6.0, 6.0, step) {
+                if ramp == 0.0 && (v.abs() - 2.0).abs() < 1e-12 {
+                    let s = v.signum();
+                    y.push(v);
+                    dr.push(if s < 0.0 { f(v) } else { 0.2 * v });
+                    y.push(v);
+                    dr.push(if s < 0.0 { 0.2 * v } else { f(v) });
+                } else if ramp > 0.0 && (v.abs() - 2.0).abs() < ramp {
+                    // linear ramp across the jump
+                    let t = (v.abs() - (2.0 - ramp)) / (2.0 * ramp);
+                    y.push(v);
+                    dr.push(v.signum() * (0.2 * v.abs() + t.clamp(0.0, 1.0)));
+                } else {
+                    y.push(v);
+                    dr.push(f(v));
+                }
+            }
+            DeltaR::with_jumps(y, dr).unwrap()
+        };
+        let exact = equivalent_conicity(&jumpy(0.0, 0.1), &[3.0], Method::Klingel).points[0];
+        let fine = equivalent_conicity(&jumpy(1e-4, 1e-5), &[3.0], Method::Klingel).points[0];
+        assert_eq!(exact.status, Status::Ok);
+        assert!(
+            (exact.tan_gamma_e - fine.tan_gamma_e).abs() < 1e-4,
+            "{exact:?} {fine:?}"
+        );
+        assert!(exact.tan_gamma_e > 0.1);
+    }
+}
