@@ -3,7 +3,8 @@
 //!
 //! ```text
 //! Profiles ──> Rigid ──> QuasiElastic ──> Hertz
-//!                    └─> EpsilonSensitivity
+//!                    ├─> EpsilonSensitivity
+//!                    └─> EquivalentConicity
 //! HertzAccuracy (no inputs: the paper's Hertz numerics against the exact ones)
 //! ```
 //!
@@ -11,6 +12,7 @@
 //! computes that stage and the stages it depends on ([`Stage::requires`]), nothing else, and
 //! records what it ran in a [`RunRecord`] (printed by `wheelrail report --timings`).
 
+use crate::conicity;
 use crate::hertz;
 use crate::profile::ProfileKind;
 use crate::quasi_elastic::{self, QuasiElasticSweep};
@@ -32,18 +34,21 @@ pub enum Stage {
     EpsilonSensitivity,
     /// Hertz ellipses over the sweep.
     Hertz,
+    /// Equivalent conicity (EN 15302) and the pair's parameters, from the rigid Δr.
+    EquivalentConicity,
     /// Accuracy of the paper's Hertz numerics against the exact method (scene-independent).
     HertzAccuracy,
 }
 
 impl Stage {
     /// Every stage, in an order that respects the dependencies.
-    pub const ALL: [Stage; 6] = [
+    pub const ALL: [Stage; 7] = [
         Stage::Profiles,
         Stage::Rigid,
         Stage::QuasiElastic,
         Stage::EpsilonSensitivity,
         Stage::Hertz,
+        Stage::EquivalentConicity,
         Stage::HertzAccuracy,
     ];
 
@@ -55,6 +60,7 @@ impl Stage {
             Stage::QuasiElastic => "quasi_elastic",
             Stage::EpsilonSensitivity => "epsilon_sensitivity",
             Stage::Hertz => "hertz",
+            Stage::EquivalentConicity => "equivalent_conicity",
             Stage::HertzAccuracy => "hertz_accuracy",
         }
     }
@@ -64,7 +70,9 @@ impl Stage {
         match self {
             Stage::Profiles | Stage::HertzAccuracy => &[],
             Stage::Rigid => &[Stage::Profiles],
-            Stage::QuasiElastic | Stage::EpsilonSensitivity => &[Stage::Rigid],
+            Stage::QuasiElastic | Stage::EpsilonSensitivity | Stage::EquivalentConicity => {
+                &[Stage::Rigid]
+            }
             // Hertz may use the rigid contact only; the closure below adds QuasiElastic when
             // the scene says so (see `needed_stages`).
             Stage::Hertz => &[Stage::Rigid],
@@ -105,16 +113,22 @@ pub enum Figure {
     Pressure,
     /// Accuracy of the paper's Hertz numerics.
     HertzAccuracy,
+    /// Equivalent conicity against the amplitude, both methods (EN 15302).
+    EquivalentConicity,
+    /// Δr with the linear function of the equivalent cone at 3 mm.
+    DeltaRLinearised,
 }
 
 impl Figure {
     /// Every figure, in report order.
-    pub const ALL: [Figure; 15] = [
+    pub const ALL: [Figure; 17] = [
         Figure::Profiles,
         Figure::Conicity,
         Figure::Curvature,
         Figure::ContactPoints,
         Figure::RollingRadius,
+        Figure::EquivalentConicity,
+        Figure::DeltaRLinearised,
         Figure::ContactAngles,
         Figure::Roll,
         Figure::ContactAngleParameter,
@@ -145,6 +159,8 @@ impl Figure {
             Figure::SemiAxes => "semi_axes",
             Figure::Pressure => "pressure",
             Figure::HertzAccuracy => "hertz_accuracy",
+            Figure::EquivalentConicity => "equivalent_conicity",
+            Figure::DeltaRLinearised => "delta_r_linearised",
         }
     }
 
@@ -167,6 +183,7 @@ impl Figure {
             Figure::EpsilonSensitivity => Stage::EpsilonSensitivity,
             Figure::SemiAxes | Figure::Pressure => Stage::Hertz,
             Figure::HertzAccuracy => Stage::HertzAccuracy,
+            Figure::EquivalentConicity | Figure::DeltaRLinearised => Stage::EquivalentConicity,
         }
     }
 }
@@ -213,6 +230,8 @@ pub struct Results {
     pub epsilon: Option<EpsilonSweeps>,
     /// Hertz ellipses over the sweep.
     pub hertz: Option<Vec<hertz::sweep::Position>>,
+    /// Equivalent conicity and the pair's parameters.
+    pub conicity: Option<conicity::PairConicity>,
     /// Accuracy of the paper's Hertz numerics.
     pub hertz_accuracy: Option<HertzAccuracy>,
     /// What ran, and how long it took.
@@ -269,6 +288,7 @@ pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
         quasi_elastic: None,
         epsilon: None,
         hertz: None,
+        conicity: None,
         hertz_accuracy: None,
         record,
     };
@@ -328,6 +348,14 @@ pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
                     )
                 });
                 results.hertz = Some(h);
+            }
+            Stage::EquivalentConicity => {
+                let rigid = results
+                    .rigid
+                    .as_ref()
+                    .expect("rigid runs before the equivalent conicity");
+                let c = record.time(stage, || conicity::assess(rigid, &scene.conicity));
+                results.conicity = Some(c);
             }
             Stage::HertzAccuracy => {
                 let a = record.time(stage, hertz_accuracy);

@@ -135,6 +135,20 @@ pub struct RawScene {
     /// `[hertz]`.
     #[serde(default)]
     pub hertz: RawHertz,
+    /// `[conicity]`.
+    #[serde(default)]
+    pub conicity: RawConicity,
+}
+
+/// `[conicity]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawConicity {
+    /// "klingel" (EN 15302 Annex B, default) or "regression" (Annex C).
+    pub method: Option<String>,
+    /// Amplitudes (mm, increasing); default 0.5 to 10 mm in 0.1 mm steps, clipped to what
+    /// the sweep supports.
+    pub amplitudes_mm: Option<Vec<f64>>,
 }
 
 /// `[rigid]`.
@@ -346,6 +360,8 @@ pub struct Scene {
     pub epsilon_sensitivity_mm: Vec<f64>,
     /// Hertz settings over the sweep.
     pub hertz: crate::hertz::sweep::Settings,
+    /// Equivalent conicity settings.
+    pub conicity: crate::conicity::Settings,
 }
 
 impl Scene {
@@ -689,6 +705,8 @@ impl Scene {
             },
         };
 
+        let conicity = conicity_settings(&raw.conicity).map_err(|(key, m)| invalid(key, m))?;
+
         Ok(Scene {
             path: origin.to_string(),
             name,
@@ -713,6 +731,7 @@ impl Scene {
             quasi_elastic,
             epsilon_sensitivity_mm,
             hertz,
+            conicity,
         })
     }
 
@@ -820,6 +839,59 @@ fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)
             format!("unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""),
         )),
     }
+}
+
+/// The largest amplitude of the equivalent conicity accepted (mm): the motion must stay on
+/// the rail heads, and `[sweep]` is limited to ±100 mm.
+pub const MAX_CONICITY_AMPLITUDE_MM: f64 = 100.0;
+
+/// The settings of `[conicity]`, or the offending key and a message.
+fn conicity_settings(
+    raw: &RawConicity,
+) -> Result<crate::conicity::Settings, (&'static str, String)> {
+    use crate::conicity::Method;
+    let method = match raw.method.as_deref() {
+        None => Method::Klingel,
+        Some(name) => Method::from_name(name).ok_or_else(|| {
+            (
+                "conicity.method",
+                format!("unknown method {name:?}; expected \"klingel\" or \"regression\""),
+            )
+        })?,
+    };
+    if let Some(a) = &raw.amplitudes_mm {
+        let key = "conicity.amplitudes_mm";
+        if a.is_empty() || a.len() > MAX_SWEEP_POSITIONS {
+            return Err((
+                key,
+                format!(
+                    "expected 1 to {MAX_SWEEP_POSITIONS} amplitudes, found {}",
+                    a.len()
+                ),
+            ));
+        }
+        for (i, v) in a.iter().enumerate() {
+            if !(v.is_finite() && *v > 0.0 && *v <= MAX_CONICITY_AMPLITUDE_MM) {
+                return Err((
+                    key,
+                    format!(
+                        "amplitude {v} (item {}) must be a number above 0 and at most {MAX_CONICITY_AMPLITUDE_MM} mm",
+                        i + 1
+                    ),
+                ));
+            }
+            if i > 0 && *v <= a[i - 1] {
+                return Err((
+                    key,
+                    format!("amplitudes must increase: {v} follows {}", a[i - 1]),
+                ));
+            }
+        }
+    }
+    Ok(crate::conicity::Settings {
+        method,
+        amplitudes_mm: raw.amplitudes_mm.clone(),
+    })
 }
 
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.

@@ -11,8 +11,6 @@ use crate::report::{Chart, Figure, LegendPosition, Series};
 use crate::rigid::{Position, RigidSweep, SideContact, Stop};
 use crate::track::{Placement, Side};
 
-/// Contact angle above which a wheel is in flange contact (rad), for the onset marker.
-pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
 /// Vertical offset of the wheel above the rail in contact maps (mm), so that the lines
 /// linking contact points are visible.
 const MAP_LIFT_MM: f64 = 8.0;
@@ -237,30 +235,17 @@ fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&Position) -> f64) -> Ve
     out
 }
 
-/// The shifts where flange contact begins on either side (first position beyond which the
-/// contact angle exceeds [`FLANGE_CONTACT_GAMMA_RAD`]).
+/// The shifts where flange contact begins on either side
+/// ([`crate::conicity::pair::flange_contact`]), with their labels.
 pub fn flange_onsets(sweep: &RigidSweep) -> Vec<(f64, &'static str)> {
-    let mut out = Vec::new();
-    let on_flange = |p: &Position, side: Side| {
-        p.side(side)
-            .is_some_and(|c| c.gamma > FLANGE_CONTACT_GAMMA_RAD)
-    };
-    if let Some(p) = sweep
-        .positions
-        .iter()
-        .find(|p| p.y_ws > 0.0 && on_flange(p, Side::Left))
-    {
-        out.push((p.y_ws, "left flange contact"));
-    }
-    if let Some(p) = sweep
-        .positions
-        .iter()
-        .rev()
-        .find(|p| p.y_ws < 0.0 && on_flange(p, Side::Right))
-    {
-        out.push((p.y_ws, "right flange contact"));
-    }
-    out
+    [
+        (Side::Left, "left flange contact"),
+        (Side::Right, "right flange contact"),
+    ]
+    .into_iter()
+    .map(|(side, label)| (crate::conicity::pair::flange_contact(sweep, side), label))
+    .filter(|(y, _)| y.is_finite())
+    .collect()
 }
 
 fn with_onsets(mut chart: Chart, sweep: &RigidSweep) -> Chart {
@@ -642,5 +627,95 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Figure {
             }),
         ],
         2,
+    )
+}
+
+/// The equivalent conicity function by both methods, `tan γe(3 mm)` marked (EN 15302).
+pub fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Figure {
+    use crate::conicity::{Method, REFERENCE_AMPLITUDE_MM};
+    let series = |m: Method| -> Line {
+        c.by(m)
+            .points
+            .iter()
+            .map(|p| (p.amplitude_mm, p.tan_gamma_e))
+            .collect()
+    };
+    let method = c.parameters.method;
+    let at3 = c.parameters.tan_gamma_e[1];
+    let mut chart = Chart::new(
+        "Equivalent conicity (EN 15302)",
+        "amplitude of the kinematic motion ŷ (mm)",
+        "equivalent conicity tan γe",
+    )
+    .series(Series::line("Klingel wavelength (Annex B)", series(Method::Klingel)).color(0))
+    .series(
+        Series::line("regression of Δr (Annex C)", series(Method::Regression))
+            .color(1)
+            .dashed(),
+    );
+    if at3.is_finite() {
+        chart = chart
+            .series(
+                Series::markers(
+                    format!("tan γe(3 mm) = {at3:.3} ({})", method.name()),
+                    vec![(REFERENCE_AMPLITUDE_MM, at3)],
+                )
+                .color(2),
+            )
+            .vline(REFERENCE_AMPLITUDE_MM, "ŷ = 3 mm");
+    }
+    Figure::single(chart.legend(LegendPosition::Auto))
+}
+
+/// Δr of the rigid sweep with the linear function of the equivalent cone at ŷ = 3 mm,
+/// `2 tan γe(3 mm) (y - y_eq)`, over the motion `y_eq ± 3 mm`.
+pub fn delta_r_linearised(c: &crate::conicity::PairConicity) -> Figure {
+    use crate::conicity::REFERENCE_AMPLITUDE_MM;
+    let p = &c.parameters;
+    let eq = if p.equilibrium_mm.is_finite() {
+        p.equilibrium_mm
+    } else {
+        0.0
+    };
+    let a = REFERENCE_AMPLITUDE_MM;
+    // The window: twice the motion, scaled to Δr within it (flange contact beyond would
+    // flatten the part that matters).
+    let (x_lo, x_hi) = (eq - 2.2 * a, eq + 2.2 * a);
+    let within: Line = c
+        .delta_r
+        .points()
+        .filter(|(y, _)| *y >= x_lo && *y <= x_hi)
+        .collect();
+    let span = within
+        .iter()
+        .filter(|(y, _)| (y - eq).abs() <= 1.6 * a)
+        .map(|(_, d)| d.abs())
+        .filter(|d| d.is_finite())
+        .fold(0.0, f64::max)
+        .max(1e-3);
+    let tan = p.tan_gamma_e[1];
+    let mut chart = Chart::new(
+        "Rolling radius difference and its equivalent cone at ŷ = 3 mm",
+        SHIFT,
+        "Δr = r_left - r_right (mm)",
+    )
+    .x_range(x_lo, x_hi)
+    .y_range(-1.25 * span, 1.25 * span)
+    .series(Series::line("Δr (rigid)", within).color(RIGID));
+    if tan.is_finite() {
+        chart = chart.series(
+            Series::line(
+                format!("2 tan γe(3 mm) (y - y_eq), tan γe = {tan:.3}"),
+                vec![(eq - a, -2.0 * tan * a), (eq + a, 2.0 * tan * a)],
+            )
+            .color(1)
+            .dashed(),
+        );
+    }
+    Figure::single(
+        chart
+            .vline(eq - a, "y_eq - 3 mm")
+            .vline(eq + a, "y_eq + 3 mm")
+            .legend(LegendPosition::LowerRight),
     )
 }

@@ -113,6 +113,18 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
             tables::hertz(h, &scene.hertz).map_err(table_error)?,
         );
     }
+    if let Some(c) = &results.conicity {
+        push(
+            "equivalent_conicity.csv",
+            "equivalent conicity against the amplitude, both methods (EN 15302)",
+            tables::equivalent_conicity(c).map_err(table_error)?,
+        );
+        push(
+            "parameters.csv",
+            "parameters of the pair: tan gamma_e at 2, 3, 4 mm, nonlinearity, flange contact, jumps",
+            tables::parameters(&c.parameters).map_err(table_error)?,
+        );
+    }
     if let Some(a) = &results.hertz_accuracy {
         let (series, ratio) = tables::hertz_accuracy(a).map_err(table_error)?;
         push(
@@ -170,6 +182,12 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
         Figure::HertzAccuracy => {
             figures::hertz_accuracy(results.hertz_accuracy.as_ref().ok_or_else(missing)?)
         }
+        Figure::EquivalentConicity => {
+            figures::equivalent_conicity(results.conicity.as_ref().ok_or_else(missing)?)
+        }
+        Figure::DeltaRLinearised => {
+            figures::delta_r_linearised(results.conicity.as_ref().ok_or_else(missing)?)
+        }
     })
 }
 
@@ -193,6 +211,8 @@ pub fn caption(fig: Figure, scene: &Scene) -> String {
             scene.hertz.method, scene.hertz.source, scene.hertz.normal_load, scene.wheel_load_n / 1000.0
         ),
         Figure::Pressure => "Maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
+        Figure::EquivalentConicity => format!("Equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),
+        Figure::DeltaRLinearised => "Rolling radius difference of the rigid sweep (jumps as steps) and the linear function 2 tan γe(3 mm) (y - y_eq) of the equivalent cone over the motion y_eq ± 3 mm.".into(),
         Figure::HertzAccuracy => "Accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
     }
 }
@@ -407,8 +427,25 @@ fn report_page(
             "mm, N, MPa, rad; track frame y left, z up; see every CSV header".into(),
         ),
     ];
+    let key_results = results.conicity.as_ref().map_or_else(Vec::new, |c| {
+        c.parameters
+            .rows()
+            .into_iter()
+            .map(|r| {
+                let value = if r.value.is_nan() {
+                    "—".to_string()
+                } else if r.unit == "count" {
+                    format!("{}", r.value)
+                } else {
+                    format!("{:.4}", r.value)
+                };
+                [r.name.to_string(), value, r.unit.to_string(), r.definition]
+            })
+            .collect()
+    });
     ReportPage {
         title: scene.title.clone(),
+        key_results,
         summary,
         parameters,
         provenance,

@@ -494,3 +494,45 @@ pub fn conicity_method_text(m: crate::conicity::Method) -> &'static str {
         }
     }
 }
+
+/// The equivalent conicity function of a pair by both methods (`equivalent_conicity.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Result<Table, TableError> {
+    use crate::conicity::Method;
+    let k = &c.klingel.points;
+    let r = &c.regression.points;
+    Table::builder()
+        .comment("equivalent conicity tan_gamma_e (EN 15302) of the rigid delta_r function, by both methods; NaN with a status where not computable")
+        .comment(format!("tan_gamma_e_klingel: {}", conicity_method_text(Method::Klingel)))
+        .comment(format!("tan_gamma_e_regression: {}", conicity_method_text(Method::Regression)))
+        .comment(CONICITY_FRAME)
+        .comment(format!(
+            "equilibrium (delta_r = 0) at y = {:.6} mm; largest amplitude supported: {:.6} mm (klingel), {:.6} mm (regression)",
+            c.klingel.equilibrium_mm, c.klingel.max_amplitude_mm, c.regression.max_amplitude_mm
+        ))
+        .numeric("amplitude_mm", k.iter().map(|p| p.amplitude_mm).collect::<Vec<_>>())
+        .numeric("tan_gamma_e_klingel", k.iter().map(|p| p.tan_gamma_e).collect::<Vec<_>>())
+        .numeric("tan_gamma_e_regression", r.iter().map(|p| p.tan_gamma_e).collect::<Vec<_>>())
+        .numeric("centre_mm", k.iter().map(|p| p.centre_mm).collect::<Vec<_>>())
+        .text("status_klingel", k.iter().map(|p| p.status.name()))
+        .text("status_regression", r.iter().map(|p| p.status.name()))
+        .build()
+}
+
+/// The parameters of the pair (`parameters.csv`): one row each, with unit and definition.
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn parameters(p: &crate::conicity::Parameters) -> Result<Table, TableError> {
+    let rows = p.rows();
+    Table::builder()
+        .comment("parameters of the wheel/rail pair from its rigid sweep; NaN where undefined (e.g. flange contact beyond the sweep)")
+        .comment(CONICITY_FRAME)
+        .text("parameter", rows.iter().map(|r| r.name))
+        .numeric("value", rows.iter().map(|r| r.value).collect::<Vec<_>>())
+        .text("unit", rows.iter().map(|r| r.unit))
+        .text("definition", rows.iter().map(|r| r.definition.clone()))
+        .build()
+}

@@ -37,6 +37,8 @@ pub struct TableEntry {
 pub struct ReportPage {
     /// Page title and top heading.
     pub title: String,
+    /// The key results, shown first as `(name, value, unit, definition)` rows.
+    pub key_results: Vec<[String; 4]>,
     /// Summary paragraphs.
     pub summary: Vec<String>,
     /// Run parameters as `(name, value)` rows, e.g. `("gauge_mm", "1435")`.
@@ -98,6 +100,23 @@ pub fn render_html(page: &ReportPage) -> String {
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>{title}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n<h1>{title}</h1>\n"
     );
+    if !page.key_results.is_empty() {
+        out.push_str(
+            "<h2 id=\"key-results\">Key results</h2>\n<table>\n<tr><th>Parameter</th>\
+             <th>Value</th><th>Unit</th><th>Definition</th></tr>\n",
+        );
+        for [name, value, unit, definition] in &page.key_results {
+            let _ = writeln!(
+                out,
+                "<tr><td>{}</td><td class=\"v\">{}</td><td>{}</td><td>{}</td></tr>",
+                escape_html(name),
+                escape_html(value),
+                escape_html(unit),
+                escape_html(definition)
+            );
+        }
+        out.push_str("</table>\n");
+    }
     for paragraph in &page.summary {
         let _ = writeln!(out, "<p>{}</p>", escape_html(paragraph));
     }

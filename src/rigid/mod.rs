@@ -152,6 +152,15 @@ impl Position {
     pub fn side(&self, side: Side) -> Option<&SideContact> {
         self.contact[side_index(side)].as_ref()
     }
+
+    /// Rolling radius difference `r_left - r_right` (mm); NaN unless both wheels touch and
+    /// the iteration converged.
+    pub fn delta_r(&self) -> f64 {
+        match self.contact {
+            [Some(l), Some(r)] if self.stop == Stop::Converged => l.r - r.r,
+            _ => f64::NAN,
+        }
+    }
 }
 
 /// An interval of `y_ws` across which the contact point of one wheel jumps.
@@ -167,6 +176,11 @@ pub struct Jump {
     pub s_from: f64,
     /// Wheel coordinate of the contact point at `y_to` (mm).
     pub s_to: f64,
+    /// Rolling radius difference `r_left - r_right` at `y_from` (mm; NaN where a wheel has
+    /// no contact): the value of the Δr function just before the jump.
+    pub delta_r_from: f64,
+    /// Rolling radius difference at `y_to` (mm): the value just after the jump.
+    pub delta_r_to: f64,
 }
 
 /// A contact point moving more than this between neighbouring positions of the sweep is
@@ -753,6 +767,8 @@ fn find_jumps(
                     y_to: pb.y_ws,
                     s_from: ca.s,
                     s_to: cb.s,
+                    delta_r_from: pa.delta_r(),
+                    delta_r_to: pb.delta_r(),
                 });
             }
         }

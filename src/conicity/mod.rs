@@ -58,6 +58,10 @@
 use std::f64::consts::PI;
 use std::fmt;
 
+pub mod pair;
+
+pub use pair::{PairConicity, Parameters, Settings, assess};
+
 /// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
 pub const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
 

@@ -1,0 +1,308 @@
+//! The parameters engineers judge a wheel/rail pair by, from its rigid sweep: the equivalent
+//! conicity function by both methods, `tan γe` at 2, 3 and 4 mm, Polach's nonlinearity
+//! parameter, where flange contact begins, the contact-point jumps, Δr and the contact angle
+//! difference at ±3 mm.
+
+use super::{
+    DeltaR, EquivalentConicity, Method, equivalent_conicity, supported_default_amplitudes,
+};
+use crate::rigid::{Position, RigidSweep, Stop};
+use crate::track::Side;
+
+/// Contact angle above which a wheel is in flange contact (rad): 63°, below the flank angle
+/// of S1002 (70°, 1.22 rad) and of the usual worn flanges (65-70°), above every tread and
+/// flange-root contact (S1002 on UIC60 1:40 reaches 0.9 rad at the root).
+pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
+
+/// The lateral shift at which Δr and the contact angle difference are reported (mm).
+pub const REPORT_SHIFT_MM: f64 = 3.0;
+
+/// The amplitudes bounding Polach's nonlinearity parameter (mm).
+pub const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
+
+/// Settings of the `equivalent_conicity` stage (`[conicity]` in a scene).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Settings {
+    /// The method of the pair's parameters (both methods are always tabulated).
+    pub method: Method,
+    /// Amplitudes (mm, increasing); `None`: 0.5 to 10 mm in 0.1 mm steps, clipped to what
+    /// the sweep supports.
+    pub amplitudes_mm: Option<Vec<f64>>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            method: Method::Klingel,
+            amplitudes_mm: None,
+        }
+    }
+}
+
+/// The parameters of a wheel/rail pair (see [`Parameters::rows`] for their definitions).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Parameters {
+    /// The method of the `tan γe` values.
+    pub method: Method,
+    /// `tan γe` at ŷ = 2, 3 and 4 mm.
+    pub tan_gamma_e: [f64; 3],
+    /// Polach's nonlinearity parameter (1/mm).
+    pub nonlinearity_per_mm: f64,
+    /// Equilibrium position of the wheelset, where Δr = 0 (mm).
+    pub equilibrium_mm: f64,
+    /// Shift where the left wheel's flange contact begins (mm, > 0; NaN beyond the sweep).
+    pub flange_contact_left_mm: f64,
+    /// Shift where the right wheel's flange contact begins (mm, < 0; NaN beyond the sweep).
+    pub flange_contact_right_mm: f64,
+    /// Number of contact-point jumps over the sweep (both wheels).
+    pub contact_point_jumps: usize,
+    /// Δr at y_ws = +3 mm and -3 mm (mm).
+    pub delta_r_mm: [f64; 2],
+    /// Contact angle difference `γ_left - γ_right` at y_ws = +3 mm and -3 mm (rad).
+    pub contact_angle_difference_rad: [f64; 2],
+}
+
+/// One row of the parameter table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParameterRow {
+    /// Machine name (`parameters.csv`, fleet columns).
+    pub name: &'static str,
+    /// Value (NaN where undefined).
+    pub value: f64,
+    /// Unit (`1` for dimensionless, `count`).
+    pub unit: &'static str,
+    /// Definition in words, with its source.
+    pub definition: String,
+}
+
+impl Parameters {
+    /// The parameters as named rows with units and definitions, in report order.
+    pub fn rows(&self) -> Vec<ParameterRow> {
+        let m = match self.method {
+            Method::Klingel => "EN 15302 Annex B, Klingel wavelength of the kinematic motion",
+            Method::Regression => "EN 15302 Annex C, regression of delta_r over the motion",
+        };
+        let tan = |i: usize, a: &str| ParameterRow {
+            name: ["tan_gamma_e_2mm", "tan_gamma_e_3mm", "tan_gamma_e_4mm"][i],
+            value: self.tan_gamma_e[i],
+            unit: "1",
+            definition: format!("equivalent conicity at amplitude {a} mm ({m})"),
+        };
+        vec![
+            tan(0, "2"),
+            tan(1, "3"),
+            tan(2, "4"),
+            ParameterRow {
+                name: "nonlinearity_parameter_per_mm",
+                value: self.nonlinearity_per_mm,
+                unit: "1/mm",
+                definition: "Polach's nonlinearity parameter NP = (tan_gamma_e(4 mm) - tan_gamma_e(2 mm)) / (4 mm - 2 mm), the slope of the equivalent conicity function (O. Polach, Vehicle System Dynamics 48 (2010) Suppl., 19-36); < 0 for a function falling with amplitude, typical of worn, conformal pairs".into(),
+            },
+            ParameterRow {
+                name: "equilibrium_y_mm",
+                value: self.equilibrium_mm,
+                unit: "mm",
+                definition: "wheelset shift where delta_r = 0 (stable crossing nearest 0; the middle of a band of delta_r = 0); the kinematic motion oscillates about it".into(),
+            },
+            ParameterRow {
+                name: "flange_contact_left_y_mm",
+                value: self.flange_contact_left_mm,
+                unit: "mm",
+                definition: format!("smallest shift y_ws > 0 at which the left wheel's contact angle exceeds {FLANGE_CONTACT_GAMMA_RAD} rad (linear between sweep positions; at a contact-point jump, its middle); NaN if not within the sweep"),
+            },
+            ParameterRow {
+                name: "flange_contact_right_y_mm",
+                value: self.flange_contact_right_mm,
+                unit: "mm",
+                definition: format!("the same for the right wheel, y_ws < 0 (contact angle above {FLANGE_CONTACT_GAMMA_RAD} rad)"),
+            },
+            ParameterRow {
+                name: "contact_point_jumps",
+                value: self.contact_point_jumps as f64,
+                unit: "count",
+                definition: "contact-point jumps of either wheel over the sweep (listed in rigid_jumps.csv, located to 1e-4 mm)".into(),
+            },
+            ParameterRow {
+                name: "delta_r_at_plus_3mm_mm",
+                value: self.delta_r_mm[0],
+                unit: "mm",
+                definition: "rolling radius difference r_left - r_right at y_ws = +3 mm".into(),
+            },
+            ParameterRow {
+                name: "delta_r_at_minus_3mm_mm",
+                value: self.delta_r_mm[1],
+                unit: "mm",
+                definition: "rolling radius difference r_left - r_right at y_ws = -3 mm".into(),
+            },
+            ParameterRow {
+                name: "contact_angle_difference_at_plus_3mm_rad",
+                value: self.contact_angle_difference_rad[0],
+                unit: "rad",
+                definition: "gamma_left - gamma_right at y_ws = +3 mm (track frame, roll included, mirrored per side)".into(),
+            },
+            ParameterRow {
+                name: "contact_angle_difference_at_minus_3mm_rad",
+                value: self.contact_angle_difference_rad[1],
+                unit: "rad",
+                definition: "gamma_left - gamma_right at y_ws = -3 mm".into(),
+            },
+        ]
+    }
+}
+
+/// The equivalent conicity of a pair and its parameters (the `equivalent_conicity` stage).
+#[derive(Debug, Clone)]
+pub struct PairConicity {
+    /// The Δr function of the rigid sweep, with its jumps.
+    pub delta_r: DeltaR,
+    /// The equivalent conicity by the Klingel method (EN 15302 Annex B).
+    pub klingel: EquivalentConicity,
+    /// The equivalent conicity by regression (EN 15302 Annex C), at the same amplitudes.
+    pub regression: EquivalentConicity,
+    /// The pair's parameters, by the settings' method.
+    pub parameters: Parameters,
+}
+
+impl PairConicity {
+    /// The result of `method`.
+    pub fn by(&self, method: Method) -> &EquivalentConicity {
+        match method {
+            Method::Klingel => &self.klingel,
+            Method::Regression => &self.regression,
+        }
+    }
+}
+
+/// The Δr function of a rigid sweep: `r_left - r_right` at every converged position, NaN
+/// where a position did not converge or a wheel has no contact, and each contact-point
+/// jump as a discontinuity in the middle of its refined interval (values from its ends).
+pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
+    let mut points: Vec<(f64, f64)> = sweep
+        .positions
+        .iter()
+        .map(|p| (p.y_ws, p.delta_r()))
+        .collect();
+    for j in &sweep.jumps {
+        let mid = 0.5 * (j.y_from + j.y_to);
+        // Drop sweep positions inside the refined interval (none on a sweep coarser than
+        // 1e-4 mm), then insert the discontinuity.
+        points.retain(|&(y, _)| y <= j.y_from || y >= j.y_to);
+        let at = points.partition_point(|&(y, _)| y < mid);
+        points.insert(at, (mid, j.delta_r_to));
+        points.insert(at, (mid, j.delta_r_from));
+    }
+    let (y, dr): (Vec<f64>, Vec<f64>) = points.into_iter().unzip();
+    DeltaR::with_jumps(y, dr).unwrap_or_else(|_| {
+        // Two jumps in one refined interval would repeat a y three times: keep the sweep
+        // positions only (the jumps' effect is then that of linear interpolation).
+        let (y, dr) = sweep
+            .positions
+            .iter()
+            .map(|p| (p.y_ws, p.delta_r()))
+            .unzip();
+        DeltaR::with_jumps(y, dr).expect("sweep positions increase")
+    })
+}
+
+/// The equivalent conicity and parameters of the pair swept by `sweep`.
+pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
+    let delta_r = delta_r_of(sweep);
+    let amplitudes = settings
+        .amplitudes_mm
+        .clone()
+        .unwrap_or_else(|| supported_default_amplitudes(&delta_r));
+    let klingel = equivalent_conicity(&delta_r, &amplitudes, Method::Klingel);
+    let regression = equivalent_conicity(&delta_r, &amplitudes, Method::Regression);
+    let at = equivalent_conicity(&delta_r, &[2.0, 3.0, 4.0], settings.method);
+    let tan_gamma_e = [0, 1, 2].map(|i| at.points[i].tan_gamma_e);
+    let [a2, a4] = NONLINEARITY_AMPLITUDES_MM;
+    let parameters = Parameters {
+        method: settings.method,
+        tan_gamma_e,
+        nonlinearity_per_mm: (tan_gamma_e[2] - tan_gamma_e[0]) / (a4 - a2),
+        equilibrium_mm: at.equilibrium_mm,
+        flange_contact_left_mm: flange_contact(sweep, Side::Left),
+        flange_contact_right_mm: flange_contact(sweep, Side::Right),
+        contact_point_jumps: sweep.jumps.len(),
+        delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
+        contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM]
+            .map(|y| interpolate(sweep, y, |p| gamma(p, Side::Left) - gamma(p, Side::Right))),
+    };
+    PairConicity {
+        delta_r,
+        klingel,
+        regression,
+        parameters,
+    }
+}
+
+fn gamma(p: &Position, side: Side) -> f64 {
+    match p.side(side) {
+        Some(c) if p.stop == Stop::Converged => c.gamma,
+        _ => f64::NAN,
+    }
+}
+
+/// `f` at shift `y`, linear between the neighbouring positions (the position itself when
+/// the sweep holds `y`); NaN outside the sweep.
+fn interpolate(sweep: &RigidSweep, y: f64, f: impl Fn(&Position) -> f64) -> f64 {
+    let p = &sweep.positions;
+    let i = p.partition_point(|q| q.y_ws < y);
+    if let Some(q) = p.get(i)
+        && (q.y_ws - y).abs() < 1e-9
+    {
+        return f(q);
+    }
+    if i == 0 || i == p.len() {
+        return f64::NAN;
+    }
+    let (a, b) = (&p[i - 1], &p[i]);
+    let t = (y - a.y_ws) / (b.y_ws - a.y_ws);
+    f(a) + t * (f(b) - f(a))
+}
+
+/// The shift where the contact angle of `side` first exceeds [`FLANGE_CONTACT_GAMMA_RAD`]
+/// moving that wheel towards its rail (left: increasing `y_ws > 0`; right: decreasing
+/// `y_ws < 0`): linear between the two positions around the crossing, or the middle of a
+/// contact-point jump between them. NaN when the sweep does not reach it.
+pub fn flange_contact(sweep: &RigidSweep, side: Side) -> f64 {
+    let outward: Vec<&Position> = match side {
+        Side::Left => sweep.positions.iter().filter(|p| p.y_ws >= 0.0).collect(),
+        Side::Right => sweep
+            .positions
+            .iter()
+            .rev()
+            .filter(|p| p.y_ws <= 0.0)
+            .collect(),
+    };
+    let on = |g: f64| g > FLANGE_CONTACT_GAMMA_RAD;
+    for w in outward.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let (ga, gb) = (gamma(a, side), gamma(b, side));
+        if !on(gb) {
+            continue;
+        }
+        if on(ga) {
+            // Already on the flange at the first position of the half sweep.
+            return a.y_ws;
+        }
+        let (lo, hi) = if a.y_ws < b.y_ws {
+            (a.y_ws, b.y_ws)
+        } else {
+            (b.y_ws, a.y_ws)
+        };
+        if let Some(j) = sweep
+            .jumps
+            .iter()
+            .find(|j| j.side == side && j.y_from >= lo && j.y_to <= hi)
+        {
+            return 0.5 * (j.y_from + j.y_to);
+        }
+        if ga.is_nan() {
+            return b.y_ws;
+        }
+        let t = (FLANGE_CONTACT_GAMMA_RAD - ga) / (gb - ga);
+        return a.y_ws + t * (b.y_ws - a.y_ws);
+    }
+    f64::NAN
+}
