@@ -69,10 +69,11 @@ pub enum Command {
     },
     /// Hertz contact ellipse for given curvatures and load; prints a CSV header and row.
     Hertz(crate::hertz::cli::HertzArgs),
-    /// Equivalent conicity (EN 15302) from a Δr table (columns `y_mm,delta_r_mm`, `#`
-    /// comments allowed); prints CSV (amplitude_mm, tan_gamma_e, centre_mm, status).
+    /// Equivalent conicity (EN 15302) from a Δr table; prints CSV (amplitude_mm,
+    /// tan_gamma_e, centre_mm, status).
     Conicity {
-        /// The Δr table (CSV: y_mm,delta_r_mm, y strictly increasing, at least 3 rows).
+        /// The Δr table: CSV with columns y_mm (or y_ws_mm, as in a report's rigid.csv) and
+        /// delta_r_mm, y strictly increasing, at least 3 rows, `#` comments allowed.
         delta_r: PathBuf,
         /// `klingel` (EN 15302 Annex B, default) or `regression` (Annex C).
         #[arg(long, default_value = "klingel")]

@@ -157,6 +157,9 @@ pub struct RawConicity {
 pub struct RawRigid {
     /// "default" or "paper".
     pub solver: Option<String>,
+    /// "solved" (default: the roll that puts both wheels on their rails) or "none" (each
+    /// wheel lowered onto its rail, the wheelset level: EN 15302 Annex E's Δr).
+    pub roll: Option<String>,
 }
 
 /// `[quasi_elastic]`.
@@ -622,6 +625,25 @@ impl Scene {
                     format!("unknown solver {name:?}; expected \"default\" or \"paper\""),
                 )
             })?,
+        };
+        let rigid_solver = match raw.rigid.roll.as_deref() {
+            None | Some("solved") => rigid_solver,
+            Some("none") if rigid_solver == crate::rigid::Solver::Default => {
+                crate::rigid::Solver::NoRoll
+            }
+            Some("none") => {
+                return Err(invalid(
+                    "rigid.roll",
+                    "\"none\" needs no roll iteration: it goes with solver = \"default\" only"
+                        .into(),
+                ));
+            }
+            Some(other) => {
+                return Err(invalid(
+                    "rigid.roll",
+                    format!("unknown roll {other:?}; expected \"solved\" or \"none\""),
+                ));
+            }
         };
         let qe = &raw.quasi_elastic;
         let quasi_elastic = crate::quasi_elastic::Settings {

@@ -444,6 +444,12 @@ fn invalid_figures_are_errors_not_panics() {
 fn html_page_escapes_everything_and_links_files() {
     let page = ReportPage {
         title: "Report <script>alert(1)</script>".into(),
+        key_results: vec![[
+            "tan_gamma_e_3mm".into(),
+            "0.1771".into(),
+            "1".into(),
+            "at amplitude 3 mm <Annex B> & more".into(),
+        ]],
         summary: vec!["Jump at y_ws > 6.5 mm & more".into()],
         parameters: vec![
             ("gauge_mm".into(), "1435".into()),
@@ -474,6 +480,11 @@ fn html_page_escapes_everything_and_links_files() {
     assert!(html.contains(r#"<a href="rigid.csv">rigid.csv</a>"#));
     assert!(html.contains("contact points &lt;per y_ws&gt;"));
     assert!(html.contains("3 points did not converge"));
+    // Key results come first, before the summary, escaped.
+    let key = html.find("id=\"key-results\"").expect("key results table");
+    assert!(key < html.find("Jump at y_ws").unwrap());
+    assert!(html.contains("<td class=\"v\">0.1771</td>"));
+    assert!(html.contains("at amplitude 3 mm &lt;Annex B&gt; &amp; more"));
     // Self-contained: no scripts, no external resources.
     assert!(!html.contains("<script") && !html.contains("http://") && !html.contains("https://"));
     assert!(html.starts_with("<!DOCTYPE html>") && html.ends_with("</html>\n"));

@@ -235,8 +235,9 @@ impl DeltaR {
         Ok(DeltaR { y, dr: delta_r })
     }
 
-    /// Parses a CSV table with columns `y_mm,delta_r_mm` (a header row, `#` comments, blank
-    /// lines allowed; further columns ignored).
+    /// Parses a CSV table holding the columns `y_mm` (or `y_ws_mm`, as in `rigid.csv`) and
+    /// `delta_r_mm`, found by their header names; `#` comments and blank lines are skipped,
+    /// other columns ignored.
     ///
     /// # Errors
     /// A message naming `origin` and the line.
@@ -244,7 +245,7 @@ impl DeltaR {
         let mut y = Vec::new();
         let mut dr = Vec::new();
         let mut lines = Vec::new();
-        let mut header_seen = false;
+        let mut columns: Option<(usize, usize)> = None;
         for (k, raw) in text.lines().enumerate() {
             let line_no = k + 1;
             let line = raw.trim();
@@ -252,45 +253,49 @@ impl DeltaR {
                 continue;
             }
             let cells: Vec<&str> = line.split(',').map(str::trim).collect();
-            if !header_seen {
-                header_seen = true;
-                if cells.len() < 2 || cells[0] != "y_mm" || cells[1] != "delta_r_mm" {
-                    return Err(format!(
-                        "{origin}:{line_no}: expected the header `y_mm,delta_r_mm`, found {line:?}"
-                    ));
+            let Some((cy, cd)) = columns else {
+                let find = |names: &[&str]| cells.iter().position(|c| names.contains(c));
+                match (find(&["y_mm", "y_ws_mm"]), find(&["delta_r_mm"])) {
+                    (Some(cy), Some(cd)) => columns = Some((cy, cd)),
+                    _ => {
+                        return Err(format!(
+                            "{origin}:{line_no}: expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, found {line:?}"
+                        ));
+                    }
                 }
                 continue;
-            }
-            if cells.len() < 2 {
-                return Err(format!(
-                    "{origin}:{line_no}: expected two values `y_mm,delta_r_mm`, found {line:?}"
-                ));
-            }
-            let parse = |cell: &str, column: &str| -> Result<f64, String> {
-                let v: f64 = cell.parse().map_err(|_| {
-                    format!("{origin}:{line_no}: {column} {cell:?} is not a number")
+            };
+            let cell = |i: usize, column: &str| -> Result<f64, String> {
+                let text = cells.get(i).ok_or_else(|| {
+                    format!("{origin}:{line_no}: no value in column {column} in {line:?}")
+                })?;
+                let v: f64 = text.parse().map_err(|_| {
+                    format!("{origin}:{line_no}: {column} {text:?} is not a number")
                 })?;
                 if v.is_finite() {
                     Ok(v)
                 } else {
-                    Err(format!("{origin}:{line_no}: {column} {cell} is not finite"))
+                    Err(format!(
+                        "{origin}:{line_no}: {column} {text} is not finite (leave out rows the rigid search did not converge at)"
+                    ))
                 }
             };
-            y.push(parse(cells[0], "y_mm")?);
-            dr.push(parse(cells[1], "delta_r_mm")?);
+            y.push(cell(cy, "y")?);
+            dr.push(cell(cd, "delta_r_mm")?);
             lines.push(line_no);
         }
-        if !header_seen {
+        if columns.is_none() {
             return Err(format!(
-                "{origin}: empty: expected the header `y_mm,delta_r_mm` and at least 3 rows"
+                "{origin}: empty: expected a header `y_mm,delta_r_mm` and at least 3 rows"
             ));
         }
-        DeltaR::new(y, dr).map_err(|e| match e {
+        DeltaR::new(y.clone(), dr).map_err(|e| match e {
             DeltaRError::NotIncreasing { index } => format!(
-                "{origin}:{}: y_mm {} does not increase (previous row: {})",
+                "{origin}:{}: y {} does not increase (previous row, line {}: {})",
                 lines[index],
-                y_text(text, lines[index]),
-                y_text(text, lines[index - 1])
+                y[index],
+                lines[index - 1],
+                y[index - 1]
             ),
             DeltaRError::NonFinite { index } => {
                 format!("{origin}:{}: value not finite", lines[index])
@@ -381,14 +386,6 @@ impl DeltaR {
         }
         Some((self.y[lo], self.y[hi]))
     }
-}
-
-/// The text of the first cell of line `line_no` (1-based), for messages.
-fn y_text(text: &str, line_no: usize) -> String {
-    text.lines()
-        .nth(line_no - 1)
-        .and_then(|l| l.split(',').next())
-        .map_or_else(String::new, |s| s.trim().to_string())
 }
 
 /// The equivalent conicity at one amplitude.

@@ -55,6 +55,12 @@ pub enum Solver {
     Default,
     /// The paper's semi-analytical iteration on tabulated profiles.
     Paper,
+    /// No roll: each wheel is shifted with the wheelset and lowered onto its own rail, the
+    /// wheelset held level (scene key `[rigid] roll = "none"`). This is how the Δr
+    /// functions of EN 15302 Annex E are computed (its case E3, cones of 1:40 and 1:5,
+    /// has Δr slopes of exactly 2 x 0.025 and 0.025 + 0.2 per mm); a real wheelset rolls,
+    /// which shifts its contact points by about `r0` times the roll.
+    NoRoll,
 }
 
 impl Solver {
@@ -63,6 +69,7 @@ impl Solver {
         match self {
             Solver::Default => "default",
             Solver::Paper => "paper",
+            Solver::NoRoll => "no_roll",
         }
     }
 
@@ -253,6 +260,7 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     let solve = |y: f64, theta0: f64, scratch: &mut Scratch| match solver {
         Solver::Default => solve_default(&sides, y, theta0, scratch),
         Solver::Paper => solve_paper(&sides, y),
+        Solver::NoRoll => solve_no_roll(&sides, y, scratch),
     };
     let centre = solve(0.0, 0.0, &mut scratch);
     let mut positions = Vec::with_capacity(sweep_mm.len());
@@ -617,6 +625,29 @@ fn solve_paper(sides: &[SideGap; 2], y_ws: f64) -> Position {
         }
         // Paper Eq. 3 with track-frame positions y_min,l = Y_l and y_min,r = -Y_r.
         theta += (right.1 - left.1) / (left.2 + right.2);
+    }
+}
+
+/// Each wheel at roll 0 on its own rail: the global minimum of each side's gap over a fresh
+/// scan of its basins. The axle height is the mean of the two wheels' own heights.
+fn solve_no_roll(sides: &[SideGap; 2], y_ws: f64, scratch: &mut Scratch) -> Position {
+    let p = [
+        SidePose::new(1.0, y_ws, 0.0),
+        SidePose::new(-1.0, y_ws, 0.0),
+    ];
+    for k in 0..2 {
+        sides[k].basins(&p[k], &mut scratch.basins[k]);
+        scratch.minima[k].clear();
+    }
+    let [b0, b1] = &mut scratch.basins;
+    let [m0, m1] = &mut scratch.minima;
+    let mins = [
+        side_minimum(&sides[0], &p[0], b0, m0),
+        side_minimum(&sides[1], &p[1], b1, m1),
+    ];
+    match mins {
+        [Some(left), Some(right)] => finish(sides, y_ws, 0.0, [left, right], 1, 0.0),
+        _ => no_contact(y_ws, 0.0, 1),
     }
 }
 
