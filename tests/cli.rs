@@ -410,3 +410,170 @@ fn profile_export_round_trips_and_rejects_unknown_names() {
         .unwrap();
     assert_clean_failure(&o, 2, &["s1003"]);
 }
+
+#[test]
+fn conicity_command_reads_a_delta_r_table_and_rejects_bad_ones() {
+    let dir = scratch("conicity");
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    // A cone of 0.15 with a comment and an extra column.
+    let mut text = String::from("# a cone\ny_mm,delta_r_mm,note\n");
+    for i in -60..=60 {
+        let y = f64::from(i) * 0.1;
+        text += &format!("{y},{},x\n", 0.3 * y);
+    }
+    let good = write("cone.csv", &text);
+    let o = bin()
+        .arg("conicity")
+        .arg(&good)
+        .args(["--amplitudes-mm", "1:7:2", "--method", "regression"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let rows: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
+    assert!(rows[0].starts_with("amplitude_mm,tan_gamma_e,") && rows[0].ends_with("status"));
+    assert_eq!(rows.len(), 5, "{out}");
+    for r in &rows[1..4] {
+        let t: f64 = r.split(',').nth(1).unwrap().parse().unwrap();
+        assert!((t - 0.15).abs() < 1e-10 && r.ends_with(",ok"), "{r}");
+    }
+    assert!(
+        rows[4].starts_with("7")
+            && rows[4].contains("NaN")
+            && rows[4].ends_with("beyond delta_r range")
+    );
+    // Default amplitudes: clipped to the table (0.5 to 6.0 mm).
+    let o = bin().arg("conicity").arg(&good).output().unwrap();
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(
+        out.lines().filter(|l| !l.starts_with('#')).count(),
+        1 + 56,
+        "{out}"
+    );
+
+    let cases = [
+        (
+            "nan.csv",
+            "y_mm,delta_r_mm\n-1,-0.2\n0,NaN\n1,0.2\n",
+            "nan.csv:3",
+        ),
+        (
+            "order.csv",
+            "y_mm,delta_r_mm\n-1,-0.2\n1,0.2\n0.5,0.1\n",
+            "order.csv:4",
+        ),
+        ("short.csv", "y_mm,delta_r_mm\n-1,-0.2\n1,0.2\n", "2 points"),
+        (
+            "sign.csv",
+            "y_mm,delta_r_mm\n-1,0.2\n0,0.3\n1,0.4\n",
+            "never changes sign",
+        ),
+        ("header.csv", "y,dr\n-1,-0.2\n0,0\n1,0.2\n", "header.csv:1"),
+        (
+            "text.csv",
+            "y_mm,delta_r_mm\n-1,-0.2\n0,abc\n1,0.2\n",
+            "text.csv:3",
+        ),
+    ];
+    for (name, text, expected) in cases {
+        let p = write(name, text);
+        let o = bin().arg("conicity").arg(&p).output().unwrap();
+        assert_clean_failure(&o, 2, &[name, expected]);
+        assert!(o.stdout.is_empty());
+    }
+    for bad in ["0:3:0.1", "1:3", "1:3:-1", "a:3:1"] {
+        let o = bin()
+            .arg("conicity")
+            .arg(&good)
+            .args(["--amplitudes-mm", bad])
+            .output()
+            .unwrap();
+        assert_clean_failure(&o, 2, &["--amplitudes-mm"]);
+    }
+    let o = bin()
+        .arg("conicity")
+        .arg(&good)
+        .args(["--method", "harmonic"])
+        .output()
+        .unwrap();
+    assert_clean_failure(&o, 2, &["--method", "klingel"]);
+}
+
+#[test]
+fn a_conicity_only_scene_runs_the_rigid_search_and_nothing_after_it() {
+    let dir = scratch("conicity_only");
+    let s = scene(
+        &dir,
+        "[outputs]\nfigures = [\"equivalent_conicity\"]\nformats = [\"svg\"]",
+    );
+    let o = bin()
+        .arg("report")
+        .arg(&s)
+        .arg("--timings")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    for stage in ["profiles", "rigid", "equivalent_conicity"] {
+        assert!(err.contains(stage), "{stage} did not run: {err}");
+    }
+    for stage in ["quasi_elastic", "epsilon_sensitivity", "hertz"] {
+        assert!(!err.contains(stage), "{stage} ran: {err}");
+    }
+    for file in [
+        "equivalent_conicity.svg",
+        "equivalent_conicity.csv",
+        "parameters.csv",
+    ] {
+        assert!(dir.join(file).exists(), "{file}");
+    }
+    assert!(!dir.join("quasi_elastic.csv").exists());
+}
+
+#[test]
+fn paper_conicity_agrees_with_the_cli_on_its_rigid_table() {
+    // The stage's tan γe (Δr with its jumps located to 1e-4 mm) against `wheelrail
+    // conicity` on the y_ws_mm and delta_r_mm columns of rigid.csv (0.1 mm grid, jumps
+    // smeared over a grid step): they differ by the table's resolution, at most 5e-3.
+    let out = scratch("paper_conicity");
+    let o = bin()
+        .args(["report", "reports/paper/scene.toml", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let params = std::fs::read_to_string(out.join("parameters.csv")).unwrap();
+    let value = |name: &str| -> f64 {
+        let row = params.lines().find(|l| l.starts_with(name)).unwrap();
+        row.split(',').nth(1).unwrap().parse().unwrap()
+    };
+    let o = bin()
+        .arg("conicity")
+        .arg(out.join("rigid.csv"))
+        .args(["--amplitudes-mm", "2:4:1"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let cli: Vec<f64> = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("amplitude"))
+        .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+        .collect();
+    for (i, name) in ["tan_gamma_e_2mm", "tan_gamma_e_3mm", "tan_gamma_e_4mm"]
+        .into_iter()
+        .enumerate()
+    {
+        let stage = value(name);
+        assert!(
+            (stage - cli[i]).abs() <= 5e-3,
+            "{name}: stage {stage}, cli on rigid.csv {}",
+            cli[i]
+        );
+        println!("{name}: stage {stage:.5}, cli on rigid.csv {:.5}", cli[i]);
+    }
+}
