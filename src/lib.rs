@@ -11,6 +11,8 @@
 //! 3. `rigid`: rigid contact search with the wheelset roll solved (paper Eqs. 2-5);
 //! 4. `quasi_elastic`: quasi-elastic contact search (paper Eqs. 6-8);
 //! 5. [`hertz`]: the Hertz contact ellipse (paper Eqs. 9-20);
+//! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
+//!    parameters of a wheel/rail pair;
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
