@@ -35,6 +35,18 @@ fn assert_clean_failure(o: &Output, code: i32, must_contain: &[&str]) {
     }
 }
 
+/// Runs `wheelrail report SCENE --timings` and returns its standard error (the stages run).
+fn report_timings(scene: &Path) -> String {
+    let o = bin()
+        .arg("report")
+        .arg(scene)
+        .arg("--timings")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    stderr(&o)
+}
+
 /// Writes a scene into `dir` with the given extra TOML (profile-only outputs by default).
 fn scene(dir: &Path, body: &str) -> PathBuf {
     let path = dir.join("scene.toml");
@@ -97,14 +109,7 @@ fn a_profile_only_scene_runs_no_contact_search() {
         &dir,
         "[outputs]\nfigures = [\"profiles\", \"conicity\"]\nformats = [\"svg\"]",
     );
-    let o = bin()
-        .arg("report")
-        .arg(&s)
-        .arg("--timings")
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", stderr(&o));
-    let err = stderr(&o);
+    let err = report_timings(&s);
     assert!(err.contains("profiles"), "{err}");
     for stage in ["rigid", "quasi_elastic", "hertz"] {
         assert!(
@@ -510,14 +515,7 @@ fn a_conicity_only_scene_runs_the_rigid_search_and_nothing_after_it() {
         &dir,
         "[outputs]\nfigures = [\"equivalent_conicity\"]\nformats = [\"svg\"]",
     );
-    let o = bin()
-        .arg("report")
-        .arg(&s)
-        .arg("--timings")
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", stderr(&o));
-    let err = stderr(&o);
+    let err = report_timings(&s);
     for stage in ["profiles", "rigid", "equivalent_conicity"] {
         assert!(err.contains(stage), "{stage} did not run: {err}");
     }

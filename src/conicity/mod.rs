@@ -371,21 +371,6 @@ impl DeltaR {
         }
         best
     }
-
-    /// The range of `y` around the equilibrium over which Δr is known (mm).
-    pub fn known_range(&self) -> Option<(f64, f64)> {
-        let (from, to) = self.equilibrium()?;
-        let n = self.y.len();
-        let mut lo = self.y.partition_point(|&v| v < from);
-        while lo > 0 && self.dr[lo - 1].is_finite() {
-            lo -= 1;
-        }
-        let mut hi = self.y.partition_point(|&v| v <= to).min(n) - 1;
-        while hi + 1 < n && self.dr[hi + 1].is_finite() {
-            hi += 1;
-        }
-        Some((self.y[lo], self.y[hi]))
-    }
 }
 
 /// The equivalent conicity at one amplitude.
