@@ -329,7 +329,7 @@ fn a_failed_run_leaves_the_previous_report_intact() {
         .filter(|e| {
             e.file_name()
                 .to_string_lossy()
-                .starts_with(".wheelrail-tmp")
+                .starts_with(".wheelrail-new")
         })
         .collect();
     assert!(leftovers.is_empty());

@@ -1,0 +1,342 @@
+//! The one layer that writes files. A report folder shows exactly one run: the new files are
+//! staged inside the folder, every obstacle is checked, and only then are they swapped in,
+//! with the replaced files kept aside until the swap is complete (and put back if it fails).
+//!
+//! A manifest (`.wheelrail-manifest`, one `group name` line per file) records what wheelrail
+//! wrote, per group (`report`, `tradeoff`, `golden`), so that a new run removes the files of
+//! its group's earlier run that it does not write again (figures a scene no longer asks for),
+//! leaves the other groups' files (a tradeoff study beside a report) and never touches a
+//! file it did not write (a user's notes, the scene file itself). A file with the name of one
+//! of the run's outputs is replaced whoever wrote it: that name is the report's.
+
+use crate::Error;
+use crate::outputs::OutputFile;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+/// The manifest's file name.
+pub const MANIFEST: &str = ".wheelrail-manifest";
+
+/// The command whose files a folder write replaces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Group {
+    /// `wheelrail report` (and `wheelrail` without arguments).
+    Report,
+    /// `wheelrail tradeoff`.
+    Tradeoff,
+    /// `wheelrail check --bless`.
+    Golden,
+}
+
+impl Group {
+    fn name(self) -> &'static str {
+        match self {
+            Group::Report => "report",
+            Group::Tradeoff => "tradeoff",
+            Group::Golden => "golden",
+        }
+    }
+}
+
+/// An error about the folder `dir` (not about the staging folder inside it).
+fn folder_error(dir: &Path, what: &str, source: &std::io::Error) -> Error {
+    Error::Other(format!("{}: cannot {what}: {source}", dir.display()))
+}
+
+/// A file name the manifest may name: one plain component, not hidden (so never the
+/// manifest, a staging folder, or anything outside the folder).
+fn plain_name(name: &str) -> bool {
+    !name.is_empty()
+        && !name.starts_with('.')
+        && !name.contains(['/', '\\'])
+        && Path::new(name).components().count() == 1
+}
+
+/// The manifest's entries, `(group, name)`; none when there is no manifest.
+fn read_manifest(dir: &Path) -> Result<BTreeSet<(String, String)>, Error> {
+    let path = dir.join(MANIFEST);
+    let text = match std::fs::read_to_string(&path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(BTreeSet::new()),
+        Err(e) => return Err(folder_error(&path, "read wheelrail's manifest", &e)),
+    };
+    Ok(text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .filter_map(|l| l.split_once(' '))
+        .filter(|(_, name)| plain_name(name))
+        .map(|(g, n)| (g.to_string(), n.to_string()))
+        .collect())
+}
+
+fn manifest_text(entries: &BTreeSet<(String, String)>) -> String {
+    let mut text = String::from(
+        "# Files written by wheelrail into this folder (group name); a new run of a group\n# replaces that group's files and removes those it no longer writes.\n",
+    );
+    for (g, n) in entries {
+        text.push_str(&format!("{g} {n}\n"));
+    }
+    text
+}
+
+/// Writes `files` into `dir` as the new output of `group`, all or nothing (see the module
+/// docs). `dir` is created if missing.
+///
+/// # Errors
+/// An [`Error`] naming `dir` or the file in the way: `dir` is a file; it cannot be created
+/// or written; an output's name is taken by a folder. Before the swap nothing in `dir` has
+/// changed; a failure during the swap puts the replaced files back.
+pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<(), Error> {
+    if dir.exists() && !dir.is_dir() {
+        return Err(Error::Other(format!(
+            "{}: is a file, not a folder (the output goes into a folder; choose another --out)",
+            dir.display()
+        )));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| folder_error(dir, "create the folder", &e))?;
+    let old = read_manifest(dir)?;
+    let names: BTreeSet<&str> = files.iter().map(|f| f.name.as_str()).collect();
+    // Obstacles: an output's name taken by a folder (or anything but a file).
+    for name in names.iter().copied().chain([MANIFEST]) {
+        let path = dir.join(name);
+        if let Ok(meta) = std::fs::symlink_metadata(&path)
+            && meta.is_dir()
+        {
+            return Err(Error::Other(format!(
+                "{}: is a folder, not a file; wheelrail writes a file of that name: move the folder away or choose another output folder",
+                path.display()
+            )));
+        }
+    }
+    // The group's earlier files that this run does not write again (only plain files).
+    let stale: Vec<&str> = old
+        .iter()
+        .filter(|(g, n)| g == group.name() && !names.contains(n.as_str()))
+        .map(|(_, n)| n.as_str())
+        .filter(|n| std::fs::symlink_metadata(dir.join(n)).is_ok_and(|m| m.is_file()))
+        .collect();
+    let mut manifest: BTreeSet<(String, String)> = old
+        .iter()
+        .filter(|(g, _)| g != group.name())
+        .cloned()
+        .collect();
+    manifest.extend(
+        names
+            .iter()
+            .map(|n| (group.name().to_string(), n.to_string())),
+    );
+
+    let staging = dir.join(format!(".wheelrail-new-{}", std::process::id()));
+    let backup = dir.join(format!(".wheelrail-old-{}", std::process::id()));
+    let result = (|| {
+        let write = |e: std::io::Error| folder_error(dir, "write into the folder", &e);
+        std::fs::create_dir(&staging).map_err(write)?;
+        for f in files {
+            std::fs::write(staging.join(&f.name), &f.bytes).map_err(write)?;
+        }
+        std::fs::write(staging.join(MANIFEST), manifest_text(&manifest)).map_err(write)?;
+        std::fs::create_dir(&backup).map_err(write)?;
+        swap(dir, &staging, &backup, &names, &stale)
+    })();
+    let _ = std::fs::remove_dir_all(&staging);
+    let _ = std::fs::remove_dir_all(&backup);
+    result
+}
+
+/// Moves the replaced and stale files from `dir` into `backup`, then the staged files (and
+/// manifest) into `dir`; on any failure undoes what was done, in reverse.
+fn swap(
+    dir: &Path,
+    staging: &Path,
+    backup: &Path,
+    names: &BTreeSet<&str>,
+    stale: &[&str],
+) -> Result<(), Error> {
+    let mut moved_aside: Vec<&str> = Vec::new();
+    let mut placed: Vec<&str> = Vec::new();
+    let outgoing = names
+        .iter()
+        .copied()
+        .chain([MANIFEST])
+        .chain(stale.iter().copied());
+    let incoming: Vec<&str> = names.iter().copied().chain([MANIFEST]).collect();
+    let attempt = (|| -> Result<(), (PathBuf, std::io::Error)> {
+        for name in outgoing {
+            let from = dir.join(name);
+            if std::fs::symlink_metadata(&from).is_ok() {
+                std::fs::rename(&from, backup.join(name)).map_err(|e| (from.clone(), e))?;
+                moved_aside.push(name);
+            }
+        }
+        for &name in &incoming {
+            let to = dir.join(name);
+            std::fs::rename(staging.join(name), &to).map_err(|e| (to.clone(), e))?;
+            placed.push(name);
+        }
+        Ok(())
+    })();
+    match attempt {
+        Ok(()) => Ok(()),
+        Err((path, source)) => {
+            for name in placed.iter().rev() {
+                let _ = std::fs::remove_file(dir.join(name));
+            }
+            for name in moved_aside.iter().rev() {
+                let _ = std::fs::rename(backup.join(name), dir.join(name));
+            }
+            Err(Error::Io { path, source })
+        }
+    }
+}
+
+/// Writes one file atomically (a temporary file beside it, then a rename): `path` either
+/// keeps its old contents or gets all of the new ones.
+///
+/// # Errors
+/// An [`Error`] naming `path` or its folder.
+pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    if path.is_dir() {
+        return Err(Error::Other(format!(
+            "{}: is a folder, not a file (give a file name)",
+            path.display()
+        )));
+    }
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .ok_or_else(|| Error::Other(format!("{}: not a file name", path.display())))?;
+    std::fs::create_dir_all(dir).map_err(|e| folder_error(dir, "create the folder", &e))?;
+    let tmp = dir.join(format!(
+        ".{}.wheelrail-{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    let result = std::fs::write(&tmp, bytes)
+        .map_err(|e| folder_error(dir, "write into the folder", &e))
+        .and_then(|()| {
+            std::fs::rename(&tmp, path).map_err(|source| Error::Io {
+                path: path.to_path_buf(),
+                source,
+            })
+        });
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("wheelrail-write-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    fn files(names: &[&str], tag: &str) -> Vec<OutputFile> {
+        names
+            .iter()
+            .map(|n| OutputFile {
+                name: (*n).to_string(),
+                bytes: format!("{n} {tag}").into_bytes(),
+            })
+            .collect()
+    }
+
+    fn listing(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn a_group_replaces_its_own_files_and_nothing_else() {
+        let dir = scratch("groups");
+        std::fs::write(dir.join("notes.txt"), "mine").unwrap();
+        write_folder(&dir, Group::Report, &files(&["a.csv", "b.svg"], "1")).unwrap();
+        write_folder(&dir, Group::Tradeoff, &files(&["t.csv"], "1")).unwrap();
+        write_folder(&dir, Group::Report, &files(&["a.csv", "c.svg"], "2")).unwrap();
+        assert_eq!(
+            listing(&dir),
+            [MANIFEST, "a.csv", "c.svg", "notes.txt", "t.csv"]
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("a.csv")).unwrap(),
+            "a.csv 2"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("t.csv")).unwrap(),
+            "t.csv 1"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("notes.txt")).unwrap(),
+            "mine"
+        );
+        let manifest = std::fs::read_to_string(dir.join(MANIFEST)).unwrap();
+        assert!(manifest.ends_with("report a.csv\nreport c.svg\ntradeoff t.csv\n"));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_folder_in_the_way_changes_nothing() {
+        let dir = scratch("obstacle");
+        write_folder(&dir, Group::Report, &files(&["a.csv", "b.svg"], "1")).unwrap();
+        std::fs::remove_file(dir.join("b.svg")).unwrap();
+        std::fs::create_dir(dir.join("b.svg")).unwrap();
+        let before = listing(&dir);
+        let a_before = std::fs::read(dir.join("a.csv")).unwrap();
+        let err = write_folder(&dir, Group::Report, &files(&["a.csv", "b.svg"], "2"))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("b.svg: is a folder, not a file"), "{err}");
+        assert_eq!(listing(&dir), before);
+        assert_eq!(std::fs::read(dir.join("a.csv")).unwrap(), a_before);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_manifest_never_reaches_outside_the_folder() {
+        let dir = scratch("hostile");
+        let outside = scratch("hostile-outside");
+        std::fs::write(outside.join("keep.txt"), "keep").unwrap();
+        std::fs::write(
+            dir.join(MANIFEST),
+            format!(
+                "report ../{}/keep.txt\nreport .hidden\nreport /etc/passwd\n",
+                outside.file_name().unwrap().to_string_lossy()
+            ),
+        )
+        .unwrap();
+        write_folder(&dir, Group::Report, &files(&["a.csv"], "1")).unwrap();
+        assert!(outside.join("keep.txt").exists());
+        assert_eq!(listing(&dir), [MANIFEST, "a.csv"]);
+        let _ = std::fs::remove_dir_all(&dir);
+        let _ = std::fs::remove_dir_all(&outside);
+    }
+
+    #[test]
+    fn a_file_given_as_the_folder_is_refused() {
+        let dir = scratch("file");
+        let file = dir.join("report.txt");
+        std::fs::write(&file, "x").unwrap();
+        let err = write_folder(&file, Group::Report, &files(&["a.csv"], "1"))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("is a file, not a folder"), "{err}");
+        assert_eq!(std::fs::read_to_string(&file).unwrap(), "x");
+        let err = write_file(&dir, b"x").unwrap_err().to_string();
+        assert!(err.contains("is a folder, not a file"), "{err}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
