@@ -409,8 +409,7 @@ fn hertz_accuracy() -> HertzAccuracy {
 /// # Errors
 /// [`crate::Error::Scene`] naming the profile key.
 pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
-    const WHEEL_KEYS: [&str; 2] = ["wheel.left_profile", "wheel.right_profile"];
-    const RAIL_KEYS: [&str; 2] = ["rail.left_profile", "rail.right_profile"];
+    let (wheel_keys, rail_keys) = (scene.wheel_profile_keys, scene.rail_profile_keys);
     let mut pairs: Vec<SidePair> = Vec::with_capacity(2);
     let placement_error =
         |key: &'static str, e: crate::track::PlacementError| crate::scene::SceneError::Profile {
@@ -424,18 +423,18 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
         let same_wheel = i == 1 && scene.wheel_profiles[1] == scene.wheel_profiles[0];
         let wheel = match pairs.first() {
             Some(left) if same_wheel => left.wheel.profile().clone(),
-            _ => scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, WHEEL_KEYS[i])?,
+            _ => scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, wheel_keys[i])?,
         };
         let wheel = PlacedWheel::place(wheel, scene.nominal_radius_mm[i], &scene.layout)
-            .map_err(|e| placement_error(WHEEL_KEYS[i], e))?;
+            .map_err(|e| placement_error(wheel_keys[i], e))?;
         let same_rail = i == 1 && scene.rail_profiles[1] == scene.rail_profiles[0];
         let rail = match pairs.first() {
             Some(left) if same_rail => left.rail.clone(),
             _ => {
                 let rail =
-                    scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, RAIL_KEYS[i])?;
+                    scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, rail_keys[i])?;
                 PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
-                    .map_err(|e| placement_error(RAIL_KEYS[i], e))?
+                    .map_err(|e| placement_error(rail_keys[i], e))?
             }
         };
         pairs.push(SidePair { wheel, rail });
@@ -449,7 +448,7 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     };
     // A wheel that lies nowhere above its rail with the wheelset centred cannot touch it in
     // any sweep of a few centimetres: a unit mistake or a wrong profile, not a result.
-    for (side, key) in [(Side::Left, WHEEL_KEYS[0]), (Side::Right, WHEEL_KEYS[1])] {
+    for (side, key) in [(Side::Left, wheel_keys[0]), (Side::Right, wheel_keys[1])] {
         let pair = placement.side(side);
         let (s_lo, s_hi) = pair.wheel.profile().domain();
         let (y_lo, y_hi) = pair.rail.y_range();

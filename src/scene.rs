@@ -4,6 +4,7 @@
 //! checks every value once and converts units, so nothing downstream re-checks. See the
 //! README for the format; `reports/paper/scene.toml` is the paper's scene.
 
+use crate::error::Number;
 use crate::profile::{Profile, ProfileKind, read};
 use crate::quasi_elastic::{self, Quadrature};
 use crate::track::{Inclination, TrackLayout};
@@ -335,6 +336,11 @@ pub struct Scene {
     pub nominal_radius_mm: [f64; 2],
     /// Left and right rail profiles.
     pub rail_profiles: [ProfileRef; 2],
+    /// The scene keys the wheel's left and right profiles came from, as the user wrote them
+    /// (`wheel.profile` when one key names both), for messages.
+    pub wheel_profile_keys: [&'static str; 2],
+    /// The same for the rails.
+    pub rail_profile_keys: [&'static str; 2],
     /// Inclination already in the rail profile data.
     pub rail_profile_inclination: Inclination,
     /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
@@ -408,7 +414,7 @@ impl Scene {
                 } else {
                     Err(invalid(
                         key,
-                        format!("{v} must be a positive finite number"),
+                        format!("{} must be a positive finite number", Number(v)),
                     ))
                 }
             };
@@ -437,6 +443,30 @@ impl Scene {
         let wheel_profiles = [
             profile_ref(raw.wheel.left_profile.as_deref().unwrap_or(wheel)),
             profile_ref(raw.wheel.right_profile.as_deref().unwrap_or(wheel)),
+        ];
+        // The key each profile came from, as written (or the shared key, default included).
+        let key_of = |side: &Option<String>, side_key: &'static str, shared: &'static str| {
+            if side.is_some() { side_key } else { shared }
+        };
+        let wheel_profile_keys = [
+            key_of(
+                &raw.wheel.left_profile,
+                "wheel.left_profile",
+                "wheel.profile",
+            ),
+            key_of(
+                &raw.wheel.right_profile,
+                "wheel.right_profile",
+                "wheel.profile",
+            ),
+        ];
+        let rail_profile_keys = [
+            key_of(&raw.rail.left_profile, "rail.left_profile", "rail.profile"),
+            key_of(
+                &raw.rail.right_profile,
+                "rail.right_profile",
+                "rail.profile",
+            ),
         ];
         let rail = raw.rail.profile.as_deref().unwrap_or("UIC60E1");
         let rail_profiles = [
@@ -531,18 +561,19 @@ impl Scene {
             flange_back_mm,
         };
 
-        let wheel_load_n = 1000.0 * positive("load.wheel_load_kN", raw.load.wheel_load_kN, 70.0)?;
-        // Checked after the conversion too: 1e306 kN is finite, 1e309 N is not.
-        if !(wheel_load_n.is_finite() && wheel_load_n <= MAX_WHEEL_LOAD_N) {
+        let wheel_load_kn = positive("load.wheel_load_kN", raw.load.wheel_load_kN, 70.0)?;
+        // Bounded in the unit the user wrote, so the message repeats their number.
+        if wheel_load_kn > MAX_WHEEL_LOAD_N / 1000.0 {
             return Err(invalid(
                 "load.wheel_load_kN",
                 format!(
                     "{} kN is not a wheel load (expected up to {} kN)",
-                    wheel_load_n / 1000.0,
+                    Number(wheel_load_kn),
                     MAX_WHEEL_LOAD_N / 1000.0
                 ),
             ));
         }
+        let wheel_load_n = 1000.0 * wheel_load_kn;
 
         let m = &raw.material;
         let young = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
@@ -734,6 +765,8 @@ impl Scene {
             name,
             title,
             wheel_profiles,
+            wheel_profile_keys,
+            rail_profile_keys,
             nominal_radius_mm,
             rail_profiles,
             rail_profile_inclination,
@@ -797,8 +830,17 @@ impl Scene {
                         read::StepBack::Refuse
                     },
                 };
-                let points = read::read_profile_with(path, kind, &options)
-                    .map_err(|e| err(e.to_string()))?;
+                let points = read::read_profile_with(path, kind, &options).map_err(|e| {
+                    // The fix for a measured file that folds back is a scene option: name it.
+                    let hint = match (&e, options.step_back) {
+                        (read::ReadError::NonMonotonic { .. }, read::StepBack::Refuse) => format!(
+                            " (measured profiles fold back at vertical faces: `drop_step_backs = true` under [{}] drops the points that step back)",
+                            if i == 0 { "wheel" } else { "rail" }
+                        ),
+                        _ => String::new(),
+                    };
+                    err(format!("{e}{hint}"))
+                })?;
                 let smoothing = self.smoothing_wavelength_mm[i];
                 Profile::from_points(points, smoothing)
                     .map_err(|e| err(format!("{}: {e}", path.display())))
@@ -814,7 +856,10 @@ fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)
         if v.is_finite() && v > 0.0 {
             Ok(v)
         } else {
-            Err((key, format!("{v} must be a positive finite number")))
+            Err((
+                key,
+                format!("{} must be a positive finite number", Number(v)),
+            ))
         }
     };
     match (qe.quadrature.as_deref(), qe.max_step_mm, qe.panel_widths) {

@@ -95,8 +95,22 @@ fn paper_report_writes_every_figure_in_both_formats() {
         let text = std::fs::read_to_string(out.join(table)).unwrap();
         assert!(text.starts_with('#'), "{table} has no frame/unit header");
     }
+    // Settings appear as the scene spells them, not as Rust names them.
+    let hertz = std::fs::read_to_string(out.join("hertz.csv")).unwrap();
+    for text in [&html, &hertz] {
+        assert!(
+            text.contains("quasi_elastic contact, normal load projected")
+                || text.contains("contact quasi_elastic, normal load projected"),
+            "scene values missing"
+        );
+        assert!(!text.contains("QuasiElastic") && !text.contains("Projected"));
+    }
     // Every stage ran, and --timings said so.
     let err = stderr(&o);
+    assert!(
+        err.contains(&format!("files to {} (open ", out.display())),
+        "{err}"
+    );
     for stage in ["profiles", "rigid", "quasi_elastic", "hertz"] {
         assert!(err.contains(stage), "{err}");
     }
@@ -205,11 +219,11 @@ fn bad_scenes_name_the_key_and_exit_2() {
         ("[load]\nwheel_load_kN = -70.0", &["load.wheel_load_kN"]),
         (
             "[wheel]\nprofile = \"no_such_file.prw\"",
-            &["wheel.left_profile", "no_such_file.prw"],
+            &["key `wheel.profile`", "no_such_file.prw"],
         ),
         (
             "[rail]\nprofile = \"S1002\"",
-            &["rail.left_profile", "wheel profile"],
+            &["key `rail.profile`", "wheel profile"],
         ),
         ("[rigid]\nsolver = \"fast\"", &["rigid.solver"]),
         ("[load]\nwheel_load_kN = 1e306", &["load.wheel_load_kN"]),

@@ -25,7 +25,12 @@ pub mod write;
 /// Without a command, regenerates the paper's report (reports/paper/scene.toml) into
 /// reports/paper/.
 #[derive(Debug, Parser)]
-#[command(version, about, long_about = None)]
+#[command(
+    version,
+    about,
+    long_about = None,
+    after_help = "Without a command, wheelrail regenerates the paper's report: it runs reports/paper/scene.toml and writes reports/paper/ (run it from the root of the wheelrail checkout)."
+)]
 pub struct Cli {
     /// What to do (default: the paper's report).
     #[command(subcommand)]
@@ -161,8 +166,11 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             amplitudes_mm,
         }) => conicity(&delta_r, &method, amplitudes_mm.as_deref()),
         Some(Command::Hertz(args)) => {
-            let text = crate::hertz::cli::run(&args).map_err(|e| Error::Other(e.to_string()))?;
-            print!("{text}");
+            let solved = crate::hertz::cli::run(&args).map_err(|e| Error::Other(e.to_string()))?;
+            print!("{}", solved.csv);
+            if let Some(note) = solved.note {
+                eprintln!("note: {note}");
+            }
             Ok(ExitCode::SUCCESS)
         }
     }

@@ -18,8 +18,9 @@
 //! non-converged paper solve is visible.
 //!
 //! A non-Hertzian case (`A + B <= 0`, `A <= 0` or `B <= 0`) is a result, not an error: the row
-//! carries `NaN` in the numeric columns, the method, `0` iterations and the reason in the
-//! `stop` column (`not_hertzian: ...`), and [`run`] returns `Ok` (exit code 0). This follows
+//! carries `NaN` in the numeric columns, the method, `0` iterations and `not_hertzian` in the
+//! `stop` column, [`run`] returns `Ok` with the reason in words as [`Solved::note`] (printed
+//! to standard error), and the exit code is 0. This follows
 //! the crate's CSV convention (a row that could not be computed carries NaN and a status; it
 //! is never dropped) and lets a script loop over cases without treating geometry as failure.
 //! Invalid input (non-positive load, Poisson's ratio out of range, a zero radius, ...) is an
@@ -45,37 +46,37 @@ use super::{
 ))]
 pub struct HertzArgs {
     /// Relative curvature A in the rolling direction, 1/mm.
-    #[arg(long = "A", value_name = "1/mm", allow_negative_numbers = true)]
+    #[arg(long = "A", value_name = "1/mm", allow_hyphen_values = true)]
     #[arg(required_unless_present = "radii")]
     pub a: Option<f64>,
     /// Relative curvature B in the lateral direction, 1/mm.
-    #[arg(long = "B", value_name = "1/mm", allow_negative_numbers = true)]
+    #[arg(long = "B", value_name = "1/mm", allow_hyphen_values = true)]
     #[arg(required_unless_present = "radii")]
     pub b: Option<f64>,
     /// Wheel principal radius, rolling direction, mm (convex positive, `inf` for flat).
-    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(long, value_name = "mm", allow_hyphen_values = true)]
     #[arg(required_unless_present = "curvatures")]
     pub r1x: Option<f64>,
     /// Wheel principal radius, lateral direction, mm (convex positive, `inf` for flat).
-    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(long, value_name = "mm", allow_hyphen_values = true)]
     #[arg(required_unless_present = "curvatures")]
     pub r1y: Option<f64>,
     /// Rail principal radius, rolling direction, mm (convex positive, `inf` for flat).
-    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(long, value_name = "mm", allow_hyphen_values = true)]
     #[arg(required_unless_present = "curvatures")]
     pub r2x: Option<f64>,
     /// Rail principal radius, lateral direction, mm (convex positive, `inf` for flat).
-    #[arg(long, value_name = "mm", allow_negative_numbers = true)]
+    #[arg(long, value_name = "mm", allow_hyphen_values = true)]
     #[arg(required_unless_present = "curvatures")]
     pub r2y: Option<f64>,
     /// Normal load, N.
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
     pub load: f64,
     /// Young's modulus of both bodies, GPa.
     #[arg(long, value_name = "GPa", default_value_t = 210.0)]
     pub young_gpa: f64,
     /// Poisson's ratio of both bodies.
-    #[arg(long, default_value_t = 0.3, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.3, allow_hyphen_values = true)]
     pub poisson: f64,
     /// Numerical method.
     #[arg(long, value_enum, default_value_t = Method::Exact)]
@@ -85,11 +86,20 @@ pub struct HertzArgs {
 /// The CSV header printed by [`run`].
 pub const HEADER: &str = "a_mm,b_mm,p0_MPa,approach_mm,e,method,iterations,stop";
 
+/// What [`run`] returns: the text to print and, for a non-Hertzian case, why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solved {
+    /// Header and one row, newline-terminated (standard output).
+    pub csv: String,
+    /// Why the row is NaN, in words (standard error), for a non-Hertzian case.
+    pub note: Option<String>,
+}
+
 /// MPa per GPa: the one unit conversion of this command.
 const MPA_PER_GPA: f64 = 1e3;
 
 /// Solves the case described by `args` and returns the text to print (header and one row,
-/// newline-terminated).
+/// newline-terminated) and, for a non-Hertzian case, the reason.
 ///
 /// # Units
 ///
@@ -112,12 +122,12 @@ const MPA_PER_GPA: f64 = 1e3;
 ///     hertz: HertzArgs,
 /// }
 /// let cli = Cli::parse_from(["hertz", "--A", "0.05", "--B", "0.05", "--load", "100"]);
-/// let out = run(&cli.hertz)?;
+/// let out = run(&cli.hertz)?.csv;
 /// assert!(out.starts_with("a_mm,b_mm,p0_MPa,approach_mm,e,method,iterations,stop\n"));
 /// assert!(out.lines().nth(1).unwrap().ends_with(",exact,0,converged"));
 /// # Ok::<(), wheelrail::hertz::HertzError>(())
 /// ```
-pub fn run(args: &HertzArgs) -> Result<String, HertzError> {
+pub fn run(args: &HertzArgs) -> Result<Solved, HertzError> {
     let material = Material::new(args.young_gpa * MPA_PER_GPA, args.poisson)?;
     let e_star = effective_modulus(&material, &material);
     let (a, b) = match (args.a, args.b) {
@@ -144,19 +154,34 @@ pub fn run(args: &HertzArgs) -> Result<String, HertzError> {
             relative_curvatures(&k, 0.0)
         }
     };
-    let row = match ellipse(a, b, args.load, e_star, args.method)? {
-        Contact::Hertzian(c) => format!(
-            "{:e},{:e},{:e},{:e},{:e},{},{},{}",
-            c.a_mm, c.b_mm, c.p0_mpa, c.approach_mm, c.eccentricity, c.method, c.iterations, c.stop
-        ),
-        Contact::NotHertzian(reason) => {
+    let (row, note) = match ellipse(a, b, args.load, e_star, args.method)? {
+        Contact::Hertzian(c) => (
             format!(
-                "NaN,NaN,NaN,NaN,NaN,{},0,not_hertzian: {reason}",
-                args.method
-            )
-        }
+                "{:e},{:e},{:e},{:e},{:e},{},{},{}",
+                c.a_mm,
+                c.b_mm,
+                c.p0_mpa,
+                c.approach_mm,
+                c.eccentricity,
+                c.method,
+                c.iterations,
+                c.stop
+            ),
+            None,
+        ),
+        Contact::NotHertzian(reason) => (
+            format!("NaN,NaN,NaN,NaN,NaN,{},0,not_hertzian", args.method),
+            Some(format!(
+                "no Hertz ellipse for A = {} 1/mm, B = {} 1/mm ({reason}): the row is NaN",
+                crate::error::Number(a),
+                crate::error::Number(b)
+            )),
+        ),
     };
-    Ok(format!("{HEADER}\n{row}\n"))
+    Ok(Solved {
+        csv: format!("{HEADER}\n{row}\n"),
+        note,
+    })
 }
 
 #[cfg(test)]
@@ -209,7 +234,10 @@ mod tests {
             "--r1x", "460", "--r1y", "inf", "--r2x", "inf", "--r2y", "300", "--load", "70000",
         ])
         .unwrap();
-        let (x, y) = (row(&run(&by_curv).unwrap()), row(&run(&by_radii).unwrap()));
+        let (x, y) = (
+            row(&run(&by_curv).unwrap().csv),
+            row(&run(&by_radii).unwrap().csv),
+        );
         for col in 0..5 {
             // 1e-15: the two inputs differ only in the rounding of 1/(2 R).
             assert!(
@@ -240,7 +268,7 @@ mod tests {
         ])
         .unwrap();
         assert_eq!(args.method, Method::Paper);
-        let r = row(&run(&args).unwrap());
+        let r = row(&run(&args).unwrap().csv);
         assert_eq!(r[5], "paper");
         // Exact p0 for these inputs from the library; the paper method is within 5 % at
         // A/B = 0.5 (see the accuracy table in the module docs).
@@ -257,9 +285,14 @@ mod tests {
             "--r1x", "460", "--r1y", "-12", "--r2x", "inf", "--r2y", "13", "--load", "5e4",
         ])
         .unwrap();
-        let r = row(&run(&args).unwrap());
+        let r = row(&run(&args).unwrap().csv);
         assert!(r[..5].iter().all(|v| v == "NaN"));
-        assert!(r[7].starts_with("not_hertzian"), "{}", r[7]);
+        assert_eq!(r[7], "not_hertzian");
+        let note = run(&args).unwrap().note.unwrap();
+        assert!(
+            note.contains("A + B <= 0") && note.contains("B = -0.0032"),
+            "{note}"
+        );
     }
 
     #[test]

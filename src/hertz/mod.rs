@@ -242,8 +242,8 @@ pub enum Method {
     /// precision.
     #[default]
     Exact,
-    /// The paper's truncated series and fixed-point iteration with its thresholds (see
-    /// [`paper`]); errors of per cent level.
+    /// The paper's truncated series and fixed-point iteration with its thresholds (module
+    /// `hertz::paper`); errors of per cent level.
     Paper,
 }
 

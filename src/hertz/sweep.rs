@@ -26,6 +26,16 @@ pub enum ContactSource {
     Rigid,
 }
 
+impl ContactSource {
+    /// The scene's name for it (`[hertz] contact`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ContactSource::QuasiElastic => "quasi_elastic",
+            ContactSource::Rigid => "rigid",
+        }
+    }
+}
+
 /// How the normal load follows from the vertical wheel load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum NormalLoad {
@@ -34,6 +44,16 @@ pub enum NormalLoad {
     Projected,
     /// `P = Q`.
     Vertical,
+}
+
+impl NormalLoad {
+    /// The scene's name for it (`[hertz] normal_load`).
+    pub fn name(self) -> &'static str {
+        match self {
+            NormalLoad::Projected => "projected",
+            NormalLoad::Vertical => "vertical",
+        }
+    }
 }
 
 /// Settings of the sweep.

@@ -207,8 +207,8 @@ pub fn caption(fig: Figure, scene: &Scene) -> String {
         Figure::QuasiElasticMap => "Paper Fig. 5: contact map with rigid and quasi-elastic contact points.".into(),
         Figure::EpsilonSensitivity => "Sensitivity of the quasi-elastic contact location to the regularisation parameter eps; as eps decreases it tends to the rigid solution.".into(),
         Figure::SemiAxes => format!(
-            "Paper Fig. 6: semi-axes of the Hertz contact ellipses ({} method, {:?} contact, normal load {:?}, vertical wheel load {} kN).",
-            scene.hertz.method, scene.hertz.source, scene.hertz.normal_load, scene.wheel_load_n / 1000.0
+            "Paper Fig. 6: semi-axes of the Hertz contact ellipses ({} method, {} contact, normal load {}, vertical wheel load {} kN).",
+            scene.hertz.method, scene.hertz.source.name(), scene.hertz.normal_load.name(), scene.wheel_load_n / 1000.0
         ),
         Figure::Pressure => "Maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
         Figure::EquivalentConicity => format!("Equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),
@@ -335,8 +335,10 @@ fn report_page(
             notes.push(format!("{flagged} wheel contacts carry a Hertz status other than ok (see the status columns of hertz.csv)."));
         }
         summary.push(format!(
-            "Hertz: {} method, {:?} contact, normal load {:?}.",
-            scene.hertz.method, scene.hertz.source, scene.hertz.normal_load
+            "Hertz: {} method, {} contact, normal load {}.",
+            scene.hertz.method,
+            scene.hertz.source.name(),
+            scene.hertz.normal_load.name()
         ));
     }
     let l = &scene.layout;

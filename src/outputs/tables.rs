@@ -364,8 +364,8 @@ pub fn hertz(
 ) -> Result<Table, TableError> {
     let mut t = Table::builder()
         .comment(format!(
-            "Hertz contact ellipses, method {}, contact {:?}, normal load {:?}",
-            settings.method, settings.source, settings.normal_load
+            "Hertz contact ellipses, method {}, contact {}, normal load {}",
+            settings.method, settings.source.name(), settings.normal_load.name()
         ))
         .comment("a_mm semi-axis along the rolling direction, b_mm lateral; p0_MPa maximum pressure; A, B relative curvatures (1/mm) in the rolling and lateral directions")
         .numeric("y_ws_mm", h.iter().map(|p| p.y_ws).collect::<Vec<_>>());

@@ -202,6 +202,14 @@ pub enum ReadError {
         /// What is wrong, in words.
         problem: String,
     },
+    /// A wheel profile whose flange lies on the field side (`s > 0`): the file describes the
+    /// other wheel, or its lateral axis points the other way.
+    Mirrored {
+        /// The path.
+        origin: String,
+        /// Lateral coordinate of the highest point (the flange tip), side frame, mm.
+        flange_tip_mm: f64,
+    },
     /// A SIMPACK file asks for a profile rotation, which this reader does not apply.
     UnsupportedRotation {
         /// The path.
@@ -239,6 +247,7 @@ impl ReadError {
             | ReadError::DuplicatePoint { origin, .. }
             | ReadError::NonMonotonic { origin, .. }
             | ReadError::ImplausibleExtent { origin, .. }
+            | ReadError::Mirrored { origin, .. }
             | ReadError::WrongKind { origin, .. }
             | ReadError::WrongUnits { origin, .. }
             | ReadError::MissingUnits { origin, .. }
@@ -269,7 +278,8 @@ impl ReadError {
             | ReadError::Empty { .. }
             | ReadError::NoPoints { .. }
             | ReadError::TooFewPoints { .. }
-            | ReadError::ImplausibleExtent { .. } => None,
+            | ReadError::ImplausibleExtent { .. }
+            | ReadError::Mirrored { .. } => None,
         }
     }
 }
@@ -327,9 +337,19 @@ impl fmt::Display for ReadError {
                 ..
             } => write!(
                 f,
-                "lateral coordinate {lateral_mm} mm does not increase after {previous_lateral_mm} \
-                 mm on line {previous_line}: the profile zig-zags, loops or has a vertical or \
-                 undercut face, and is not a function of its lateral coordinate"
+                "lateral coordinate {} mm does not increase after {} mm on line {previous_line}: \
+                 the profile zig-zags, loops or has a vertical or undercut face, and is not a \
+                 function of its lateral coordinate",
+                Micrometres(*lateral_mm),
+                Micrometres(*previous_lateral_mm)
+            ),
+            ReadError::Mirrored { flange_tip_mm, .. } => write!(
+                f,
+                "the profile looks mirrored: its flange tip is at s = {} mm, on the field side, \
+                 but wheel profiles have the flange at s < 0 (towards the track centre): \
+                 negate the lateral coordinate (SIMPACK: `mirror.y = 1`), or give this file \
+                 as the other wheel's profile",
+                Micrometres(*flange_tip_mm)
             ),
             ReadError::ImplausibleExtent {
                 axis,
@@ -389,6 +409,21 @@ impl std::error::Error for ReadError {
         match self {
             ReadError::Io { source, .. } => Some(source),
             _ => None,
+        }
+    }
+}
+
+/// A length in mm as the files give it: rounded to 1e-6 mm (below any file's resolution),
+/// so that a value moved by a conversion prints as `-54.105`, not `-54.105000000000004`.
+struct Micrometres(f64);
+
+impl fmt::Display for Micrometres {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let rounded = (self.0 * 1e6).round() / 1e6;
+        if rounded.is_finite() {
+            write!(f, "{rounded}")
+        } else {
+            write!(f, "{}", self.0)
         }
     }
 }

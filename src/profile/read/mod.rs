@@ -414,6 +414,9 @@ fn parse_with_hash(
     };
     let (points, dropped_step_backs) =
         validate::finish(raw, origin, trim_faces, options.step_back)?;
+    if kind == ProfileKind::Wheel {
+        validate::check_flange_side(&points, origin)?;
+    }
     Ok(PointProfile {
         kind,
         points,

@@ -116,6 +116,31 @@ pub(crate) fn finish(
     Ok((points.iter().map(|p| [p.lat, p.vert]).collect(), dropped))
 }
 
+/// Height of the highest point of a wheel profile above its field-side end beyond which
+/// that point is a flange (a tread rises by a few millimetres at most; a flange by about 28).
+pub const FLANGE_RISE_MM: f64 = 10.0;
+
+/// `Ok` unless a wheel profile in the side frame has its flange on the field side: the
+/// highest point at `s > 0`, more than [`FLANGE_RISE_MM`] above the profile's end at the
+/// smallest `s` (so a tread-only section on the field side passes).
+pub(super) fn check_flange_side(points: &[[f64; 2]], origin: &str) -> Result<(), ReadError> {
+    let Some(&[_, first_height]) = points.first() else {
+        return Ok(());
+    };
+    let top = points
+        .iter()
+        .copied()
+        .max_by(|a, b| a[1].total_cmp(&b[1]))
+        .unwrap_or([0.0, first_height]);
+    if top[0] > 0.0 && top[1] - first_height > FLANGE_RISE_MM {
+        return Err(ReadError::Mirrored {
+            origin: origin.to_owned(),
+            flange_tip_mm: top[0],
+        });
+    }
+    Ok(())
+}
+
 /// `Ok` unless the file declares a kind (`declared`: the kind and the line that says so,
 /// `None` for the extension) other than the `expected` one: a rail file read as a wheel.
 pub(super) fn check_kind(

@@ -1,0 +1,184 @@
+//! Errors a user can act on: each case names the key the user wrote, prints numbers as the
+//! input had them and names the fix where there is one; exit code 2 and no panic.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_wheelrail"));
+    c.current_dir(env!("CARGO_MANIFEST_DIR"));
+    c
+}
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = root().join("target/test-scratch").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Runs `wheelrail report` on a scene with `body`, into a fresh folder, and expects exit 2
+/// with every piece of `must` in the message (and none of `must_not`).
+fn refused(name: &str, body: &str, must: &[&str], must_not: &[&str]) {
+    let dir = scratch(name);
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, format!("name = \"t\"\n{body}\n")).unwrap();
+    let o = bin()
+        .arg("report")
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    for m in must {
+        assert!(err.contains(m), "expected {m:?} in: {err}");
+    }
+    for m in must_not {
+        assert!(!err.contains(m), "unexpected {m:?} in: {err}");
+    }
+    assert!(!dir.join("out").join("index.html").exists());
+}
+
+#[test]
+fn a_folding_miniprof_file_names_its_line_and_the_option_that_fixes_it() {
+    let file = root().join("tests/data/profiles/Car7216_0001r.whl");
+    refused(
+        "fold-back",
+        &format!("[wheel]\nprofile = \"{}\"", file.display()),
+        &[
+            "key `wheel.profile`",
+            "Car7216_0001r.whl:223",
+            "-54.105 mm on line 222",
+            "`drop_step_backs = true` under [wheel]",
+        ],
+        &["left_profile", "54.10500000"],
+    );
+}
+
+#[test]
+fn a_side_key_is_named_when_the_scene_used_it() {
+    refused(
+        "side-key",
+        "[rail]\nright_profile = \"missing.csv\"",
+        &["key `rail.right_profile`", "missing.csv"],
+        &[],
+    );
+}
+
+#[test]
+fn a_huge_load_is_printed_as_written() {
+    refused(
+        "huge-load",
+        "[load]\nwheel_load_kN = 1e308",
+        &["key `load.wheel_load_kN`", "1e308 kN is not a wheel load"],
+        &["inf", "00000000"],
+    );
+}
+
+#[test]
+fn a_mirrored_wheel_profile_says_so() {
+    // S1002 exported and mirrored: the flange on the field side.
+    let dir = scratch("mirrored");
+    let csv = dir.join("s1002.csv");
+    let o = bin()
+        .args(["profile", "s1002", "--step-mm", "0.5", "--out"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines: Vec<String> = Vec::new();
+    let mut rows: Vec<String> = Vec::new();
+    for line in text.lines() {
+        if line.starts_with('#') || line.starts_with("s_mm") {
+            lines.push(line.to_string());
+        } else {
+            let (s, rest) = line.split_once(',').unwrap();
+            rows.push(format!("{},{rest}", -s.parse::<f64>().unwrap()));
+        }
+    }
+    rows.reverse();
+    lines.extend(rows);
+    let mirrored = dir.join("mirrored.csv");
+    std::fs::write(&mirrored, lines.join("\n")).unwrap();
+    refused(
+        "mirrored-scene",
+        &format!("[wheel]\nprofile = \"{}\"", mirrored.display()),
+        &["key `wheel.profile`", "looks mirrored", "mirror.y"],
+        &[],
+    );
+}
+
+#[test]
+#[cfg(target_os = "linux")]
+fn an_unwritable_folder_is_named_not_a_temporary_one() {
+    // /proc/self exists and takes no new files, even for root.
+    let dir = scratch("unwritable");
+    let scene = dir.join("scene.toml");
+    std::fs::write(
+        &scene,
+        "name = \"t\"\n[outputs]\nfigures = [\"profiles\"]\nformats = [\"svg\"]\n",
+    )
+    .unwrap();
+    let o = bin()
+        .arg("report")
+        .arg(&scene)
+        .args(["--out", "/proc/self"])
+        .output()
+        .unwrap();
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("/proc/self: cannot write into the folder"),
+        "{err}"
+    );
+    assert!(!err.contains("wheelrail-new"), "{err}");
+}
+
+#[test]
+fn hertz_takes_negative_exponents_and_explains_a_non_hertzian_case() {
+    let o = bin()
+        .args(["hertz", "--A", "-1e-3", "--B", "2e-3", "--load", "1000"])
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        out.lines()
+            .nth(1)
+            .unwrap()
+            .ends_with(",exact,0,not_hertzian"),
+        "{out}"
+    );
+    assert!(
+        stderr(&o).contains("A = -0.001 1/mm") && stderr(&o).contains("A <= 0"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!out.contains("not Hertzian"), "{out}");
+}
+
+#[test]
+fn help_texts_read_as_text() {
+    let o = bin().args(["hertz", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success());
+    assert!(!help.contains("[`"), "raw doc link in: {help}");
+    let o = bin().arg("--help").output().unwrap();
+    let help = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(
+        help.contains("Without a command, wheelrail regenerates the paper's report"),
+        "{help}"
+    );
+}
