@@ -158,6 +158,45 @@ impl TolerancePolicy {
     }
 }
 
+impl TolerancePolicy {
+    /// The policy as a Markdown table (rule, absolute, relative), exact columns first, then
+    /// suffixes from the longest (the most specific), then the default: what the README
+    /// quotes, so that a test can hold the two together.
+    pub fn markdown(&self) -> String {
+        let number = |x: f64| {
+            if x == 0.0 {
+                "0".to_string()
+            } else {
+                format!("{x:e}")
+            }
+        };
+        let mut suffixes = self.suffixes.clone();
+        suffixes.sort_by(|a, b| b.0.len().cmp(&a.0.len()).then(a.0.cmp(&b.0)));
+        let rows = self
+            .columns
+            .iter()
+            .map(|(n, t)| (format!("column `{n}`"), *t))
+            .chain(
+                suffixes
+                    .iter()
+                    .map(|(s, t)| (format!("columns ending `{s}`"), *t)),
+            )
+            .chain(std::iter::once((
+                "any other column".to_string(),
+                self.default,
+            )));
+        let mut out = String::from("| columns | absolute | relative |\n|---|---|---|\n");
+        for (rule, t) in rows {
+            out.push_str(&format!(
+                "| {rule} | {} | {} |\n",
+                number(t.abs),
+                number(t.rel)
+            ));
+        }
+        out
+    }
+}
+
 impl Default for TolerancePolicy {
     /// Exact comparison of every column.
     fn default() -> Self {
