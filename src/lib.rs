@@ -44,10 +44,12 @@
 //!
 //! The full statement lives in `ARCHITECTURE.md`; every CSV header repeats it.
 
+#[cfg(feature = "cli")]
 pub mod app;
 pub mod conicity;
 pub mod error;
 pub mod hertz;
+#[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
 pub mod profile;
@@ -56,6 +58,7 @@ pub mod report;
 pub mod rigid;
 pub mod scene;
 pub mod track;
+#[cfg(feature = "cli")]
 pub mod tradeoff;
 
 pub use error::Error;

@@ -68,6 +68,7 @@
 //!   Numerical Algorithms 10, 13-26: `R_D`, for the cancellation-free ratio.
 
 pub mod accuracy;
+#[cfg(feature = "cli")]
 pub mod cli;
 mod elliptic;
 mod exact;
@@ -236,7 +237,8 @@ pub fn relative_curvatures(k: &PrincipalCurvatures, psi_rad: f64) -> (f64, f64) 
 }
 
 /// How [`ellipse`] evaluates the elliptic integrals and the shape.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, clap::ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum Method {
     /// AGM for `K`, `E`, cancellation-free shape equation, Newton in `ln(b/a)`: machine
     /// precision.

@@ -13,7 +13,7 @@
 //! # Examples
 //!
 //! ```
-//! use wheelrail::report::{Chart, Figure, Series, Table, render_svg};
+//! use wheelrail::report::Table;
 //!
 //! let y = vec![0.0, 1.0, 2.0];
 //! let dr = vec![0.0, 0.06, f64::NAN];
@@ -26,18 +26,24 @@
 //! let csv = table.to_csv();
 //! assert!(csv.contains("2,NaN,no contact"));
 //!
+//! # #[cfg(feature = "cli")] {
+//! // Charts come with the `cli` feature (plotters).
+//! use wheelrail::report::{Chart, Figure, Series, render_svg};
 //! let points = y.into_iter().zip(dr).collect();
 //! let chart = Chart::new("Δr", "y_ws (mm)", "Δr (mm)").series(Series::line("rigid", points));
 //! let svg = render_svg(&Figure::single(chart))?;
 //! assert!(svg.starts_with("<svg"));
+//! # }
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+#[cfg(feature = "cli")]
 pub mod chart;
 pub mod golden;
 pub mod html;
 pub mod table;
 
+#[cfg(feature = "cli")]
 pub use chart::{
     Chart, ChartError, Figure, LegendPosition, Series, SeriesStyle, VLine, render_png, render_svg,
 };
