@@ -83,7 +83,33 @@ pub struct TrackLayout {
     pub flange_back_mm: f64,
 }
 
+/// Standard gauge (mm): 1435.
+pub const STANDARD_GAUGE_MM: f64 = 1435.0;
+/// Depth below the top of rail at which the gauge is measured (mm, EN 13848-1): 14.
+pub const GAUGE_POINT_DEPTH_MM: f64 = 14.0;
+/// Distance between the inner faces of a standard wheelset's wheels (mm): 1360.
+pub const STANDARD_FLANGE_BACK_MM: f64 = 1360.0;
+
 impl TrackLayout {
+    /// Standard gauge (1435 mm, measured 14 mm below the top of rail) and a standard
+    /// wheelset (1360 mm between the wheels' inner faces), rails inclined by `inclination`.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::track::{Inclination, TrackLayout};
+    /// let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
+    /// assert_eq!(layout.gauge_mm, 1435.0);
+    /// assert_eq!(layout.taping_line_mm(), 750.0);
+    /// ```
+    pub fn standard(inclination: Inclination) -> TrackLayout {
+        TrackLayout {
+            gauge_mm: STANDARD_GAUGE_MM,
+            gauge_point_depth_mm: GAUGE_POINT_DEPTH_MM,
+            inclination,
+            flange_back_mm: STANDARD_FLANGE_BACK_MM,
+        }
+    }
+
     /// Lateral position of the taping lines from the wheelset centre, `Y` in the side frame.
     pub fn taping_line_mm(&self) -> f64 {
         0.5 * self.flange_back_mm + TAPING_LINE_FROM_INNER_FACE_MM
@@ -868,7 +894,67 @@ pub struct Placement {
     pub right: SidePair,
 }
 
+impl SidePair {
+    /// A wheel of `nominal_radius_mm` on a rail given upright or already inclined by
+    /// `rail_profile_inclination`, placed for `layout`.
+    ///
+    /// # Errors
+    /// [`PlacementError`] when a profile is of the wrong kind or the rail has no gauge point.
+    pub fn place(
+        wheel: Profile,
+        nominal_radius_mm: f64,
+        rail: Profile,
+        rail_profile_inclination: Inclination,
+        layout: &TrackLayout,
+    ) -> Result<SidePair, PlacementError> {
+        Ok(SidePair {
+            wheel: PlacedWheel::place(wheel, nominal_radius_mm, layout)?,
+            rail: PlacedRail::place(rail, rail_profile_inclination, layout)?,
+        })
+    }
+}
+
 impl Placement {
+    /// A wheelset whose two wheels have the same profile and radius on two rails of the same
+    /// profile (each side in its mirrored side frame): the usual case, placed once.
+    ///
+    /// `rail_profile_inclination` is the inclination the rail profile data already has
+    /// (upright: `Inclination(0.0)`); the layout's inclination is the track's.
+    ///
+    /// # Errors
+    /// [`PlacementError`] as [`SidePair::place`].
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::profile::Profile;
+    /// use wheelrail::track::{Inclination, Placement, TrackLayout};
+    /// let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
+    /// let placement = Placement::symmetric(
+    ///     Profile::s1002(), 460.0, Profile::uic60e1(), Inclination(0.0), layout,
+    /// ).unwrap();
+    /// assert_eq!(placement.left.wheel.nominal_radius_mm(), 460.0);
+    /// ```
+    pub fn symmetric(
+        wheel: Profile,
+        nominal_radius_mm: f64,
+        rail: Profile,
+        rail_profile_inclination: Inclination,
+        layout: TrackLayout,
+    ) -> Result<Placement, PlacementError> {
+        let left = SidePair::place(
+            wheel,
+            nominal_radius_mm,
+            rail,
+            rail_profile_inclination,
+            &layout,
+        )?;
+        Ok(Placement {
+            layout,
+            right: left.clone(),
+            left,
+        })
+    }
+
     /// The side pair of `side`.
     pub fn side(&self, side: Side) -> &SidePair {
         match side {

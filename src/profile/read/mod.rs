@@ -151,6 +151,8 @@ pub enum ProfileFormat {
     Simpack,
     /// MiniProf `.whl` (wheel) / `.ban` (rail).
     MiniProf,
+    /// Points given in memory ([`PointProfile::from_points`]), no file.
+    Points,
 }
 
 impl ProfileFormat {
@@ -176,12 +178,13 @@ impl ProfileFormat {
         }
     }
 
-    /// A short lower-case name: `csv`, `simpack`, `miniprof`.
+    /// A short lower-case name: `csv`, `simpack`, `miniprof`, `points`.
     pub fn name(self) -> &'static str {
         match self {
             ProfileFormat::Csv => "csv",
             ProfileFormat::Simpack => "simpack",
             ProfileFormat::MiniProf => "miniprof",
+            ProfileFormat::Points => "points",
         }
     }
 }
@@ -243,6 +246,69 @@ pub struct PointProfile {
 }
 
 impl PointProfile {
+    /// A profile from points in memory, `[lateral, vertical]` in mm in the side frame (`[s,
+    /// F]` for a wheel, `[y, z]` for a rail, see the [module docs](self)), checked as a file's
+    /// points are: finite, at least a few, strictly increasing lateral coordinate (either
+    /// order accepted), plausible extents in mm, a wheel's flange at `s < 0`. `name` stands
+    /// for the file in messages, whose "line" numbers count the points from 1.
+    ///
+    /// # Errors
+    /// The [`ReadError`] of the first failed check.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::profile::{Profile, ProfileKind, read::PointProfile};
+    /// // A 1:20 coned tread from s = -20 to 40 mm with a 30 mm flange below s = -20.
+    /// let points: Vec<[f64; 2]> = (0..=120)
+    ///     .map(|i| -50.0 + 0.75 * f64::from(i))
+    ///     .map(|s: f64| [s, if s < -20.0 { 1.0 + (-20.0 - s) } else { -s / 20.0 }])
+    ///     .collect();
+    /// let points = PointProfile::from_points(ProfileKind::Wheel, "cone", points)?;
+    /// let wheel = Profile::from_points(points, 0.0)?;
+    /// assert!((wheel.tan_gamma(10.0) - 0.05).abs() < 1e-9);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn from_points(
+        kind: ProfileKind,
+        name: &str,
+        points: Vec<[f64; 2]>,
+    ) -> Result<PointProfile, ReadError> {
+        use sha2::{Digest, Sha256};
+        let mut hasher = Sha256::new();
+        for p in &points {
+            hasher.update(p[0].to_le_bytes());
+            hasher.update(p[1].to_le_bytes());
+        }
+        let sha256 = hasher
+            .finalize()
+            .iter()
+            .map(|b| format!("{b:02x}"))
+            .collect::<String>();
+        let raw = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| fields::RawPoint {
+                lat: p[0],
+                vert: p[1],
+                line: i + 1,
+            })
+            .collect();
+        let (points, dropped_step_backs) = validate::finish(raw, name, false, StepBack::Refuse)?;
+        if kind == ProfileKind::Wheel {
+            validate::check_flange_side(&points, name)?;
+        }
+        Ok(PointProfile {
+            kind,
+            points,
+            source: ProfileSource {
+                path: name.to_owned(),
+                sha256,
+                format: ProfileFormat::Points,
+            },
+            dropped_step_backs,
+        })
+    }
+
     /// The lateral and vertical coordinates as two columns (mm), e.g. to fit a
     /// [`SmoothingSpline`](crate::profile::spline::SmoothingSpline).
     pub fn columns(&self) -> (Vec<f64>, Vec<f64>) {
@@ -411,6 +477,14 @@ fn parse_with_hash(
         ProfileFormat::Csv => (csv::parse(text, kind, origin)?, false),
         ProfileFormat::Simpack => (simpack::parse(text, kind, origin)?, false),
         ProfileFormat::MiniProf => (miniprof::parse(text, kind, origin)?, true),
+        ProfileFormat::Points => {
+            return Err(ReadError::Malformed {
+                origin: origin.to_owned(),
+                line: 1,
+                problem: "in-memory points are not a text format: use PointProfile::from_points"
+                    .to_owned(),
+            });
+        }
     };
     let (points, dropped_step_backs) =
         validate::finish(raw, origin, trim_faces, options.step_back)?;
