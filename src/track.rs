@@ -1,5 +1,6 @@
-//! Placing the wheels and rails of a wheelset on the track (standard-gauge layout of
-//! `conventions.md`).
+//! Placing the wheels and rails of a wheelset on the track (standard gauge: 1435 mm between
+//! the gauge points 14 mm below the top of rail, 1360 mm between the wheels' inner faces, the
+//! taping lines 70 mm outside them; the crate docs state the frames and signs).
 //!
 //! Each side is described in its *side frame*: `Y` = |y| in the track frame (mm, growing
 //! towards the field side) and `Z` = z (mm, up). The left side maps to the track frame as
@@ -1002,14 +1003,15 @@ mod tests {
         assert!((rail.gauge_point()[0] - 717.5).abs() < 1e-9);
         assert!((rail.gauge_point()[1] + 14.0).abs() < 1e-9);
         assert!(rail.top()[1].abs() < 1e-12);
-        // conventions.md: 43.03 mm (2 decimals), so 760.53 from the track centre.
+        // Reference value (the project's reference notes on the standard-gauge layout,
+        // outside this repository): 43.03 mm (2 decimals), so 760.53 from the track centre.
         let offset = rail.top()[0] - rail.gauge_point()[0];
         assert!((offset - 43.03).abs() < 0.005, "{offset}");
     }
 
     #[test]
     fn top_offsets_for_other_inclinations() {
-        // conventions.md: upright 35.98 mm, 1:20 46.5 mm (as many decimals as given).
+        // Same reference notes: upright 35.98 mm, 1:20 46.5 mm (as many decimals as given).
         for (incl, expected, tol) in [("vertical", 35.98, 0.005), ("1:20", 46.5, 0.05)] {
             let layout = TrackLayout {
                 inclination: Inclination::parse(incl).unwrap(),

@@ -58,7 +58,8 @@ fn exact_matches_mpmath_references() {
 }
 
 /// Classical Hertz coefficients m, n (a = m [3P/(4E*(A+B))]^(1/3), cos θ = (B-A)/(A+B)),
-/// exact values from /work/shared/reference/hertz.md, to 4 decimals (±5e-5: the table's
+/// the classical table's values (as restated in the project's reference notes, outside this
+/// repository), to 4 decimals (±5e-5: the table's
 /// rounding).
 #[test]
 fn classical_coefficients_m_n() {
@@ -316,7 +317,7 @@ proptest! {
 }
 
 /// The paper's series (Eqs. 15-18, terms down to 1e-3) against the exact K and E. Expected
-/// behaviour from the paper's own statement and /work/shared/reference/hertz.md: accurate to
+/// behaviour from the paper's own statement and the project's reference notes: accurate to
 /// the 1e-3 level for small e, per-cent errors in K as e -> 1 (the series cannot follow K's
 /// logarithmic singularity), E much better.
 #[test]

@@ -112,7 +112,8 @@ fn gauge_point(rail: &PointProfile, z_top: f64) -> f64 {
     y0 + (y1 - y0) * (depth - z0) / (z1 - z0)
 }
 
-/// conventions.md: the MBench UIC60 file (inclined 1:40) has its gauge point at y = -43.031;
+/// Reference value (the project's reference notes, outside this repository): the MBench
+/// UIC60 file (inclined 1:40) has its gauge point at y = -43.031;
 /// 0.002 mm allows the linear interpolation across the 0.03 mm point spacing on the face.
 const GAUGE_POINT_TOL_MM: f64 = 0.002;
 

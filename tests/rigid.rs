@@ -1,5 +1,6 @@
 //! Rigid contact search: invariants, an independent brute-force reference, and the known
-//! features of S1002 on UIC60 1:40 (`shared/reference/contact-search.md`).
+//! features of S1002 on UIC60 1:40 (from the project's reference notes on the contact search,
+//! outside this repository; each value is restated where it is checked).
 
 use proptest::prelude::*;
 use std::path::Path;

@@ -1,7 +1,7 @@
 //! Hertz contact over a lateral sweep: the contact ellipse of each wheel at each position,
 //! from the quasi-elastic (default) or the rigid contact.
 //!
-//! Curvatures at the contact point (`shared/reference/hertz.md`, psi = 0 on straight track):
+//! Curvatures at the contact point (psi = 0 on straight track):
 //! wheel rolling `cos(gamma) / r` (the normal meets the axle at `r / cos(gamma)`), wheel
 //! lateral and rail lateral from the contact search (convex positive), rail rolling 0; so
 //! `A = cos(gamma) / (2 r)` and `B = (k_wheel + k_rail) / 2`.

@@ -131,7 +131,7 @@ const MIN_ARC_ROOT: f64 = 1e-6;
 mod tests {
     use super::*;
 
-    /// The check values of EN 13715 / `shared/reference/profiles.md` are given to 6 decimals.
+    /// The check values of EN 13715 are given to 6 decimals.
     const CHECK_TOL_MM: f64 = 1e-6;
 
     #[test]

@@ -245,7 +245,7 @@ fn side_index(side: Side) -> usize {
 /// let sweep = rigid::search(&placement, &[0.0, 3.0], rigid::Solver::Default);
 /// // A symmetric wheelset at y_ws = 0 does not roll.
 /// assert!(sweep.positions[0].roll.abs() < 1e-12);
-/// // Shifted to the left it rolls to lift the left wheel (conventions.md).
+/// // Shifted to the left it rolls to lift the left wheel (positive roll, crate docs).
 /// assert!(sweep.positions[1].roll > 0.0);
 /// ```
 pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidSweep {
