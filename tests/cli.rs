@@ -1,30 +1,11 @@
 //! The `wheelrail` binary run as a user runs it: reports, golden checks, bad input, exit
 //! codes, and outputs that are written all or nothing.
 
+mod common;
+
+use common::{bin, root, scratch, stderr};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_wheelrail"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// A fresh, empty folder under the target directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = root().join("target/test-scratch").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use std::process::Output;
 
 fn assert_clean_failure(o: &Output, code: i32, must_contain: &[&str]) {
     let err = stderr(o);

@@ -1,29 +1,9 @@
 //! Errors a user can act on: each case names the key the user wrote, prints numbers as the
 //! input had them and names the fix where there is one; exit code 2 and no panic.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_wheelrail"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = root().join("target/test-scratch").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use common::{bin, root, scratch, stderr};
 
 /// Runs `wheelrail report` on a scene with `body`, into a fresh folder, and expects exit 2
 /// with every piece of `must` in the message (and none of `must_not`).

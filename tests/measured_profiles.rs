@@ -78,12 +78,7 @@ fn strict_by_default_and_dropping_on_request() {
 }
 
 fn layout() -> TrackLayout {
-    TrackLayout {
-        gauge_mm: 1435.0,
-        gauge_point_depth_mm: 14.0,
-        inclination: Inclination::parse("1:40").unwrap(),
-        flange_back_mm: 1360.0,
-    }
+    TrackLayout::standard(Inclination::parse("1:40").unwrap())
 }
 
 fn measured(name: &str, kind: ProfileKind) -> Profile {

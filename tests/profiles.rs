@@ -14,12 +14,7 @@ fn data(name: &str) -> std::path::PathBuf {
 }
 
 fn paper_layout() -> TrackLayout {
-    TrackLayout {
-        gauge_mm: 1435.0,
-        gauge_point_depth_mm: 14.0,
-        inclination: Inclination::parse("1:40").unwrap(),
-        flange_back_mm: 1360.0,
-    }
+    TrackLayout::standard(Inclination::parse("1:40").unwrap())
 }
 
 #[test]

@@ -304,12 +304,7 @@ fn noisy(points: &[[f64; 2]], std_um: f64, seed: u64) -> Vec<[f64; 2]> {
 }
 
 fn layout(inclination: &str) -> TrackLayout {
-    TrackLayout {
-        gauge_mm: 1435.0,
-        gauge_point_depth_mm: 14.0,
-        inclination: Inclination::parse(inclination).expect("known inclination"),
-        flange_back_mm: 1360.0,
-    }
+    TrackLayout::standard(Inclination::parse(inclination).expect("known inclination"))
 }
 
 /// Both sides placed: `[left, right]` wheels, rails and nominal radii.
