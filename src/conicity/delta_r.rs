@@ -1,0 +1,248 @@
+//! The rolling radius difference function Δr(y): a table, checked, with its jumps and its
+//! equilibrium.
+
+use std::fmt;
+
+/// Why a Δr function cannot be used.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DeltaRError {
+    /// Fewer than 3 points.
+    TooFewPoints {
+        /// Points given.
+        count: usize,
+    },
+    /// A value is NaN or infinite (index of the point).
+    NonFinite {
+        /// Index of the point.
+        index: usize,
+    },
+    /// `y` decreases (or repeats more than once) at this point.
+    NotIncreasing {
+        /// Index of the point.
+        index: usize,
+    },
+    /// Δr never changes sign from negative to positive: no equilibrium.
+    NoSignChange,
+    /// The `y` and Δr columns differ in length.
+    LengthMismatch,
+}
+
+impl fmt::Display for DeltaRError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DeltaRError::TooFewPoints { count } => {
+                write!(f, "{count} points; at least 3 are needed")
+            }
+            DeltaRError::NonFinite { index } => write!(f, "point {index} is not finite"),
+            DeltaRError::NotIncreasing { index } => {
+                write!(f, "y does not increase at point {index}")
+            }
+            DeltaRError::NoSignChange => write!(
+                f,
+                "delta_r never changes sign from negative to positive: no equilibrium position"
+            ),
+            DeltaRError::LengthMismatch => write!(f, "y and delta_r differ in length"),
+        }
+    }
+}
+
+impl std::error::Error for DeltaRError {}
+
+/// A rolling radius difference function: Δr (mm) linear between points `(y, Δr)`, `y`
+/// increasing. Two consecutive points at the same `y` are a jump of Δr there (a contact-point
+/// jump): the first holds the value from the left, the second the value from the right.
+/// A NaN value marks a point where Δr is unknown; the function ends there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeltaR {
+    pub(super) y: Vec<f64>,
+    pub(super) dr: Vec<f64>,
+}
+
+impl DeltaR {
+    /// A Δr function from a table with strictly increasing `y`, all values finite, at least
+    /// 3 points and a change of sign.
+    ///
+    /// # Errors
+    /// [`DeltaRError`] naming the offending point.
+    pub fn new(y: Vec<f64>, delta_r: Vec<f64>) -> Result<DeltaR, DeltaRError> {
+        if y.len() != delta_r.len() {
+            return Err(DeltaRError::LengthMismatch);
+        }
+        if y.len() < 3 {
+            return Err(DeltaRError::TooFewPoints { count: y.len() });
+        }
+        for (i, (a, b)) in y.iter().zip(&delta_r).enumerate() {
+            if !(a.is_finite() && b.is_finite()) {
+                return Err(DeltaRError::NonFinite { index: i });
+            }
+            if i > 0 && *a <= y[i - 1] {
+                return Err(DeltaRError::NotIncreasing { index: i });
+            }
+        }
+        let d = DeltaR { y, dr: delta_r };
+        if d.equilibrium().is_none() {
+            return Err(DeltaRError::NoSignChange);
+        }
+        Ok(d)
+    }
+
+    /// A Δr function with jumps (a `y` given twice: values from the left, then from the
+    /// right) and unknown values (NaN), as a rigid sweep gives it. `y` must not decrease and
+    /// no `y` may appear three times; no sign change is required (the conicity then says
+    /// [`Status::NoEquilibrium`](super::Status::NoEquilibrium)).
+    ///
+    /// # Errors
+    /// [`DeltaRError::NotIncreasing`], [`DeltaRError::NonFinite`] for a non-finite `y`.
+    pub fn with_jumps(y: Vec<f64>, delta_r: Vec<f64>) -> Result<DeltaR, DeltaRError> {
+        if y.len() != delta_r.len() {
+            return Err(DeltaRError::LengthMismatch);
+        }
+        for i in 0..y.len() {
+            if !y[i].is_finite() {
+                return Err(DeltaRError::NonFinite { index: i });
+            }
+            let repeats_twice = i >= 2 && y[i] <= y[i - 2];
+            if i > 0 && (y[i] < y[i - 1] || repeats_twice) {
+                return Err(DeltaRError::NotIncreasing { index: i });
+            }
+        }
+        Ok(DeltaR { y, dr: delta_r })
+    }
+
+    /// Parses a CSV table holding the columns `y_mm` (or `y_ws_mm`, as in `rigid.csv`) and
+    /// `delta_r_mm`, found by their header names; `#` comments and blank lines are skipped,
+    /// other columns ignored.
+    ///
+    /// # Errors
+    /// A message naming `origin` and the line.
+    pub fn parse_csv(text: &str, origin: &str) -> Result<DeltaR, String> {
+        let mut y = Vec::new();
+        let mut dr = Vec::new();
+        let mut lines = Vec::new();
+        let mut columns: Option<(usize, usize)> = None;
+        for (k, raw) in text.lines().enumerate() {
+            let line_no = k + 1;
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            let Some((cy, cd)) = columns else {
+                let find = |names: &[&str]| cells.iter().position(|c| names.contains(c));
+                match (find(&["y_mm", "y_ws_mm"]), find(&["delta_r_mm"])) {
+                    (Some(cy), Some(cd)) => columns = Some((cy, cd)),
+                    _ => {
+                        return Err(format!(
+                            "{origin}:{line_no}: expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, found {line:?}"
+                        ));
+                    }
+                }
+                continue;
+            };
+            let cell = |i: usize, column: &str| -> Result<f64, String> {
+                let text = cells.get(i).ok_or_else(|| {
+                    format!("{origin}:{line_no}: no value in column {column} in {line:?}")
+                })?;
+                let v: f64 = text.parse().map_err(|_| {
+                    format!("{origin}:{line_no}: {column} {text:?} is not a number")
+                })?;
+                if v.is_finite() {
+                    Ok(v)
+                } else {
+                    Err(format!(
+                        "{origin}:{line_no}: {column} {text} is not finite (leave out rows the rigid search did not converge at)"
+                    ))
+                }
+            };
+            y.push(cell(cy, "y")?);
+            dr.push(cell(cd, "delta_r_mm")?);
+            lines.push(line_no);
+        }
+        if columns.is_none() {
+            return Err(format!(
+                "{origin}: empty: expected a header `y_mm,delta_r_mm` and at least 3 rows"
+            ));
+        }
+        DeltaR::new(y.clone(), dr).map_err(|e| match e {
+            DeltaRError::NotIncreasing { index } => format!(
+                "{origin}:{}: y {} does not increase (previous row, line {}: {})",
+                lines[index],
+                y[index],
+                lines[index - 1],
+                y[index - 1]
+            ),
+            DeltaRError::NonFinite { index } => {
+                format!("{origin}:{}: value not finite", lines[index])
+            }
+            other => format!("{origin}: {other}"),
+        })
+    }
+
+    /// The points `(y, Δr)` (mm).
+    pub fn points(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        self.y.iter().copied().zip(self.dr.iter().copied())
+    }
+
+    /// Δr at `y` by linear interpolation (the value from the right at a jump); `None`
+    /// outside the points or where a neighbouring value is unknown.
+    pub fn at(&self, y: f64) -> Option<f64> {
+        let n = self.y.len();
+        if n == 0 || !(y >= self.y[0] && y <= self.y[n - 1]) {
+            return None;
+        }
+        // The last point with y_i <= y (at a jump, the one holding the right value).
+        let i = self.y.partition_point(|&v| v <= y).max(1) - 1;
+        if i + 1 == n {
+            return self.dr[i].is_finite().then_some(self.dr[i]);
+        }
+        let (y0, y1, d0, d1) = (self.y[i], self.y[i + 1], self.dr[i], self.dr[i + 1]);
+        let v = if y1 > y0 {
+            d0 + (d1 - d0) * (y - y0) / (y1 - y0)
+        } else {
+            d1
+        };
+        v.is_finite().then_some(v)
+    }
+
+    /// The equilibrium: the stable zero crossing of Δr (from negative to positive) nearest
+    /// to `y = 0`, as the band `[from, to]` where Δr = 0 (`from == to` for a crossing point).
+    /// `None` when Δr has no stable crossing.
+    pub fn equilibrium(&self) -> Option<(f64, f64)> {
+        let (y, d) = (&self.y, &self.dr);
+        let n = y.len();
+        let mut best: Option<(f64, f64)> = None;
+        let mut consider = |band: (f64, f64)| {
+            let mid = 0.5 * (band.0 + band.1);
+            if best.is_none_or(|b| mid.abs() < (0.5 * (b.0 + b.1)).abs()) {
+                best = Some(band);
+            }
+        };
+        let mut i = 0;
+        while i < n {
+            if d[i] == 0.0 {
+                // A run of zeros: stable when entered from below and left upwards.
+                let mut j = i;
+                while j + 1 < n && d[j + 1] == 0.0 {
+                    j += 1;
+                }
+                let below = i > 0 && d[i - 1] < 0.0;
+                let above = j + 1 < n && d[j + 1] > 0.0;
+                if below && above {
+                    consider((y[i], y[j]));
+                }
+                i = j + 1;
+                continue;
+            }
+            if i + 1 < n && d[i] < 0.0 && d[i + 1] > 0.0 {
+                let crossing = if y[i + 1] > y[i] {
+                    y[i] + (y[i + 1] - y[i]) * (-d[i] / (d[i + 1] - d[i]))
+                } else {
+                    y[i]
+                };
+                consider((crossing, crossing));
+            }
+            i += 1;
+        }
+        best
+    }
+}
