@@ -1,0 +1,110 @@
+//! A uniform table of a placed rail's heights, with block maxima for the coarse scans.
+
+use super::PlacedRail;
+
+/// Step of the uniform table of rail heights [`PlacedRail::heights`] (mm): linear
+/// interpolation errs by at most `Z'' h^2 / 8`, 4e-6 mm on the R13 gauge corner at the
+/// 70-degree contact angle of a flange (`Z'' = (1 + tan^2)^1.5 / R`); the coarse scans that
+/// read it allow [`crate::rigid::gap::COARSE_MARGIN_MM`].
+pub const HEIGHT_TABLE_STEP_MM: f64 = 0.02;
+
+/// A uniform table of a placed rail's heights `Z(Y)` in the side frame, interpolated
+/// linearly: the cheap, approximate rail of coarse scans (and the paper's tabulated rail).
+#[derive(Debug, Clone, Default)]
+pub struct HeightTable {
+    y0: f64,
+    inv_step: f64,
+    /// Largest table coordinate `t = (y - y0) / step` inside the table (`z.len() - 2`).
+    t_max: f64,
+    /// Heights at `y0 + i step`, the last one repeated so that interpolation at `t_max`
+    /// reads a valid neighbour.
+    z: Vec<f64>,
+    /// `block_max[k][j]`: the highest of `z[j B ..= (j + 2^k) B]`, `B` = [`HEIGHT_BLOCK`] (a
+    /// sparse table: the maximum over any run of blocks is the larger of two entries).
+    block_max: Vec<Vec<f64>>,
+}
+
+/// Entries of [`HeightTable`] per block of its block maxima.
+const HEIGHT_BLOCK: usize = 16;
+
+impl HeightTable {
+    /// Tabulates `rail` over its [`PlacedRail::y_range`] with a step of at most `step_mm`.
+    pub fn new(rail: &PlacedRail, step_mm: f64) -> HeightTable {
+        let (lo, hi) = rail.y_range();
+        let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
+        let step = (hi - lo) / n as f64;
+        let mut z: Vec<f64> = (0..=n)
+            .map(|i| {
+                rail.at((lo + i as f64 * step).min(hi))
+                    .map_or(f64::NAN, |p| p.z)
+            })
+            .collect();
+        z.push(z[n]);
+        // Every interpolated height between entries i and i + 1 lies below the maximum of
+        // block i / B, which includes the first entry of the next block.
+        let blocks = n / HEIGHT_BLOCK + 1;
+        let mut block_max = vec![
+            (0..blocks)
+                .map(|j| {
+                    let end = (j * HEIGHT_BLOCK + HEIGHT_BLOCK).min(n + 1);
+                    z[j * HEIGHT_BLOCK..=end]
+                        .iter()
+                        .fold(f64::NEG_INFINITY, |m, &v| m.max(v))
+                })
+                .collect::<Vec<f64>>(),
+        ];
+        let mut span = 1;
+        while 2 * span <= blocks {
+            let below = &block_max[block_max.len() - 1];
+            let level = (0..=blocks - 2 * span)
+                .map(|j| below[j].max(below[j + span]))
+                .collect();
+            block_max.push(level);
+            span *= 2;
+        }
+        HeightTable {
+            y0: lo,
+            inv_step: 1.0 / step,
+            t_max: n as f64,
+            z,
+            block_max,
+        }
+    }
+
+    /// An upper bound of the interpolated height over `[y_lo, y_hi]`, or `None` where that
+    /// interval misses the table. Exact to within the height variation of 16 entries.
+    #[inline]
+    pub fn max_over(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
+        let t_lo = (y_lo - self.y0) * self.inv_step;
+        let t_hi = (y_hi - self.y0) * self.inv_step;
+        // Also rejects NaN.
+        if !(t_hi >= 0.0 && t_lo <= self.t_max && t_lo <= t_hi) {
+            return None;
+        }
+        // An interpolated height at t lies below the maximum of block floor(t) / B. Through
+        // i32 as in `height`; both are inside [0, t_max] after the clamps.
+        let j_lo = (t_lo.max(0.0) as i32 as u32) / HEIGHT_BLOCK as u32;
+        let j_hi = (t_hi.min(self.t_max) as i32 as u32) / HEIGHT_BLOCK as u32;
+        let k = (u32::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
+        let level = &self.block_max[k];
+        let (a, b) = (level[j_lo as usize], level[(j_hi + 1 - (1 << k)) as usize]);
+        Some(if a > b { a } else { b })
+    }
+
+    /// The interpolated height at `y`, or `None` outside the table.
+    #[inline]
+    pub fn height(&self, y: f64) -> Option<f64> {
+        let t = (y - self.y0) * self.inv_step;
+        // Also rejects NaN.
+        if !(t >= 0.0 && t <= self.t_max) {
+            return None;
+        }
+        // Through i32 (the table is far shorter): one conversion each way, where usize
+        // would cost a dozen instructions for its saturation and sign handling.
+        let ti = t as i32;
+        let f = t - f64::from(ti);
+        let i = ti as usize;
+        let (a, b) = (self.z[i], self.z[i + 1]);
+        Some(a + f * (b - a))
+    }
+}
