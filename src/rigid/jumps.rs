@@ -1,0 +1,132 @@
+//! Contact-point jumps of a sweep, located to [`JUMP_REFINE_MM`](super::JUMP_REFINE_MM).
+
+use super::gap::{self, SideGap, SidePose};
+use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, side_index};
+use crate::track::Side;
+
+/// Finds the intervals of `y_ws` across which a contact point jumps, refined to
+/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, cold)` solves one position, `cold` at the first
+/// of a refinement.
+///
+/// A jump is where two local minima of the gap of one wheel, `A` (the contact before) and
+/// `B` (after), exchange the role of the lowest: `h = g_A - g_B`, both followed at the
+/// solved pose, changes sign there. While both can be followed at the ends of the interval,
+/// the next position is the secant root of `h` (once the interval is narrow, two positions
+/// straddling the root by less than half the refinement width: most jumps are located with
+/// three solves instead of ten). Otherwise, or when that stops making progress, the interval
+/// is bisected.
+pub(super) fn find_jumps(
+    sides: &[SideGap; 2],
+    positions: &[Position],
+    mut solve: impl FnMut(f64, f64, bool) -> Position,
+) -> Vec<Jump> {
+    let mut jumps = Vec::new();
+    for w in positions.windows(2) {
+        for side in [Side::Left, Side::Right] {
+            let (Some(a), Some(b)) = (w[0].side(side), w[1].side(side)) else {
+                continue;
+            };
+            if (a.s - b.s).abs() <= JUMP_SCREEN_MM {
+                continue;
+            }
+            let k = side_index(side);
+            let (mut pa, mut pb) = (w[0], w[1]);
+            let mut cold = true;
+            let contact_s = |p: &Position| p.side(side).map_or(f64::NAN, |c| c.s);
+            let motion = |pa: &Position, pb: &Position| (contact_s(pa) - contact_s(pb)).abs();
+            let mut secant_steps = 0;
+            // A jump keeps its size in the part of the interval that holds it; a contact
+            // point that only moves fast moves less across each part, and once it moves less
+            // than JUMP_CONFIRM_MM across the interval the candidate is dropped (most
+            // candidates near the flange are such, after about 3 halvings instead of 10).
+            while pb.y_ws - pa.y_ws > JUMP_REFINE_MM && motion(&pa, &pb) > JUMP_CONFIRM_MM {
+                let width = pb.y_ws - pa.y_ws;
+                let root = (secant_steps < MAX_SECANT_STEPS)
+                    .then(|| competing_root(&sides[k], &pa, &pb, contact_s(&pa), contact_s(&pb)))
+                    .flatten();
+                // Without two competing minima now, bisection to the end.
+                secant_steps = if root.is_some() {
+                    secant_steps + 1
+                } else {
+                    MAX_SECANT_STEPS
+                };
+                let ys: &[f64] = match root {
+                    Some(r) if width <= STRADDLE_WIDTHS * JUMP_REFINE_MM => {
+                        let half = 0.49 * JUMP_REFINE_MM;
+                        &[
+                            (r - half).max(pa.y_ws + 0.01 * width),
+                            (r + half).min(pb.y_ws - 0.01 * width),
+                        ]
+                    }
+                    // Kept off the ends, so that the interval shrinks.
+                    Some(r) => &[r.clamp(pa.y_ws + 0.01 * width, pb.y_ws - 0.01 * width)],
+                    None => &[0.5 * (pa.y_ws + pb.y_ws)],
+                };
+                let mut lost = false;
+                for &y in ys {
+                    // A second straddling position that the first already moved an end past
+                    // is not solved: the interval only shrinks.
+                    if !(y > pa.y_ws && y < pb.y_ws) {
+                        continue;
+                    }
+                    // From the roll of the lower end: the refinement follows the branch the
+                    // sweep came on (where two rolls balance the wheelset, as near a fold of
+                    // a measured flange, a start between the ends can land on the other).
+                    let mid = solve(y, pa.roll, cold);
+                    cold = false;
+                    let Some(m) = mid.side(side) else {
+                        lost = true;
+                        break;
+                    };
+                    if (m.s - contact_s(&pa)).abs() >= (m.s - contact_s(&pb)).abs() {
+                        pb = mid;
+                    } else {
+                        pa = mid;
+                    }
+                }
+                if lost {
+                    break;
+                }
+            }
+            if let (Some(ca), Some(cb)) = (pa.side(side), pb.side(side))
+                && (ca.s - cb.s).abs() > JUMP_CONFIRM_MM
+            {
+                jumps.push(Jump {
+                    side,
+                    y_from: pa.y_ws,
+                    y_to: pb.y_ws,
+                    s_from: ca.s,
+                    s_to: cb.s,
+                    delta_r_from: pa.delta_r(),
+                    delta_r_to: pb.delta_r(),
+                });
+            }
+        }
+    }
+    jumps
+}
+
+/// How far a competing minimum is followed from where it was (mm): across a jump interval
+/// of 0.1 mm the contact points move by a few tenths of a millimetre.
+const FOLLOW_REACH_MM: f64 = 1.0;
+/// Secant steps of one jump refinement before it falls back to bisection.
+const MAX_SECANT_STEPS: usize = 6;
+/// An interval narrower than this many refinement widths is finished by straddling the
+/// secant root.
+const STRADDLE_WIDTHS: f64 = 100.0;
+
+/// The secant root in `y_ws` of `h = g_A - g_B` between `pa` and `pb`, where `A` is the
+/// minimum of the gap at `s_a` (the contact at `pa`) and `B` the one at `s_b`, each followed
+/// at both poses; `None` when a minimum cannot be followed, `A` and `B` merge, or `h` does
+/// not change sign.
+fn competing_root(side: &SideGap, pa: &Position, pb: &Position, s_a: f64, s_b: f64) -> Option<f64> {
+    let h = |p: &Position| -> Option<f64> {
+        let pose = SidePose::new(side.sign, p.y_ws, p.roll);
+        let reach = FOLLOW_REACH_MM;
+        let a = side.minimum_within((s_a - reach, s_a + reach), s_a, &pose)?;
+        let b = side.minimum_within((s_b - reach, s_b + reach), s_b, &pose)?;
+        ((a.s - b.s).abs() > gap::SAME_BASIN_MM).then_some(a.g - b.g)
+    };
+    let (ha, hb) = (h(pa)?, h(pb)?);
+    (ha < 0.0 && hb > 0.0).then(|| pa.y_ws - ha * (pb.y_ws - pa.y_ws) / (hb - ha))
+}
