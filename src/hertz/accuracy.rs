@@ -69,3 +69,57 @@ pub fn paper_ratio_error(a_over_b_curv: f64) -> (f64, u32) {
     let g_exact = exact::shape(ratio, ratio.ln()).g;
     (g_paper / g_exact - 1.0, paper.iterations)
 }
+
+/// Errors of the paper's Hertz numerics on fixed grids (scene-independent).
+#[derive(Debug, Clone)]
+pub struct HertzAccuracy {
+    /// `(e, relative error of K, relative error of E)` of the paper's series.
+    pub series: Vec<(f64, f64, f64)>,
+    /// `(A/B, relative error of b/a, iterations)` of the paper's fixed-point iteration.
+    pub ratio: Vec<(f64, f64, u32)>,
+    /// `(A/B, relative error of b/a)` of the exact method against the mpmath references
+    /// of `tests/data/hertz_reference.csv` (50 digits, `scripts/hertz_reference.py`).
+    pub exact_ratio: Vec<(f64, f64)>,
+}
+
+/// The mpmath references, compiled in so that the accuracy figure needs no files.
+const HERTZ_REFERENCE: &str = include_str!("../../tests/data/hertz_reference.csv");
+
+/// The paper's Hertz numerics against the exact ones, on log-spaced grids (the stage
+/// `hertz_accuracy`: scene-independent, no files read).
+pub fn study() -> HertzAccuracy {
+    let series = (0..=200)
+        .map(|i| {
+            // e from 0.01 to 1 - 1e-6, denser near 1 (log-spaced in 1 - e).
+            let e = 1.0 - 10f64.powf(-0.0043648 - 5.9956352 * f64::from(i) / 200.0);
+            let (k, ee) = series_error(e);
+            (e, k, ee)
+        })
+        .collect();
+    let ratio = (0..=120)
+        .map(|i| {
+            let r = 10f64.powf(-6.0 + 6.0 * f64::from(i) / 120.0);
+            let (err, it) = paper_ratio_error(r);
+            (r, err, it)
+        })
+        .collect();
+    let exact_ratio = HERTZ_REFERENCE
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("A_per_mm"))
+        .filter_map(|l| {
+            let v: Vec<f64> = l.split(',').filter_map(|x| x.trim().parse().ok()).collect();
+            let [a, b, load, e_star, ra, rb, ..] = v[..] else {
+                return None;
+            };
+            let e = super::ellipse(a, b, load, e_star, super::Method::Exact).ok()?;
+            let e = e.ellipse()?;
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            Some((lo / hi, (e.b_mm / e.a_mm) / (rb / ra) - 1.0))
+        })
+        .collect();
+    HertzAccuracy {
+        series,
+        ratio,
+        exact_ratio,
+    }
+}

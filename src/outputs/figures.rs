@@ -5,7 +5,8 @@
 //! Jumps of a contact point are drawn as gaps (a NaN breaks the line), positions that did
 //! not converge are left out, never joined across.
 
-use crate::pipeline::{EpsilonSweeps, HertzAccuracy};
+use crate::hertz::accuracy::HertzAccuracy;
+use crate::pipeline::EpsilonSweeps;
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::report::{Chart, Figure, LegendPosition, Series};
 use crate::rigid::{Position, RigidSweep, SideContact, Stop};

@@ -1,7 +1,8 @@
 //! Stage results as CSV tables. Every table states its frame, signs and units in `#`
 //! comment lines above the header, and every column name carries its unit.
 
-use crate::pipeline::{EpsilonSweeps, HertzAccuracy};
+use crate::hertz::accuracy::HertzAccuracy;
+use crate::pipeline::EpsilonSweeps;
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::report::{Table, TableError};
 use crate::rigid::{RigidSweep, Stop};
