@@ -45,6 +45,12 @@ const MAX_SLIDES: usize = 40;
 const LOCAL_MAX_ITER: usize = 100;
 
 /// The pose of one side: shift and roll as seen in the side frame.
+///
+/// Plain numbers rather than a `nalgebra::Isometry2` (used for the rail's frame in
+/// `track::rail`): the gap is evaluated millions of times per sweep and only needs the
+/// lateral position and height of a wheel point, `delta + cos s - sin z` and its height,
+/// with the axle height solved separately; a general 2-D transform would carry what this
+/// loop does not use.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SidePose {
     /// `sign * y_ws` (mm).

@@ -4,6 +4,7 @@
 use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
 use crate::profile::{Profile, ProfileKind};
+use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
 
 /// Sampling step used to find the top and the gauge point before refining them (mm).
 /// Fine enough that no local extremum of a rail head (radii >= 5 mm) is stepped over.
@@ -35,10 +36,11 @@ impl RailPoint {
 #[derive(Debug, Clone)]
 pub struct PlacedRail {
     profile: Profile,
-    cos: f64,
-    sin: f64,
-    /// Translation added after the rotation: `(Y, Z) = R (u, v) + offset`.
-    offset: [f64; 2],
+    /// The rail's frame in the side frame: `(Y, Z) = frame (u, v)`, the rotation by the
+    /// inclination (counter-clockwise tilts the head towards the track centre) followed by
+    /// the translation that puts the top at `Z = 0` and the gauge point at `Y = gauge / 2`.
+    /// The hot loops (the inversion) read its rotation's cosine and sine directly.
+    frame: Isometry2<f64>,
     /// Profile coordinates `(u_lo, u_hi)` of the running-surface part (see [`MAX_RAIL_SLOPE`]).
     surface: (f64, f64),
     /// Side-frame `Y` of the ends of `surface`.
@@ -97,14 +99,12 @@ impl PlacedRail {
                 expected: ProfileKind::Rail,
             });
         }
-        // Counter-clockwise in (Y field-side, Z up) tilts the head towards the track centre.
-        let angle = layout.inclination.0 - profile_inclination.0;
-        let (sin, cos) = angle.sin_cos();
+        // Counter-clockwise in (Y field-side, Z up) tilts the head towards the track centre;
+        // the translation follows from the rotated head below.
+        let rotation = UnitComplex::new(layout.inclination.0 - profile_inclination.0);
         let mut rail = PlacedRail {
             profile,
-            cos,
-            sin,
-            offset: [0.0, 0.0],
+            frame: Isometry2::from_parts(Translation2::identity(), rotation),
             surface: (0.0, 0.0),
             y_range: (0.0, 0.0),
             gauge_point: [0.0, 0.0],
@@ -126,12 +126,9 @@ impl PlacedRail {
             .iter()
             .map(|&u| {
                 let [v, d1, _] = rail.profile.eval(u);
-                [
-                    rail.cos * u - rail.sin * v,
-                    rail.sin * u + rail.cos * v,
-                    rail.cos - rail.sin * d1,
-                    rail.sin + rail.cos * d1,
-                ]
+                let p = rotation * Point2::new(u, v);
+                let t = rotation * Vector2::new(1.0, d1);
+                [p.x, p.y, t.x, t.y]
             })
             .collect();
 
@@ -173,7 +170,7 @@ impl PlacedRail {
             )
         };
         let gp = rail.rotated(u_gp);
-        rail.offset = [0.5 * layout.gauge_mm - gp[0], -top[1]];
+        rail.frame.translation = Translation2::new(0.5 * layout.gauge_mm - gp[0], -top[1]);
         rail.gauge_point = rail.to_side(gp);
         rail.top = rail.to_side(top);
 
@@ -241,11 +238,11 @@ impl PlacedRail {
     /// own evaluation), whatever the slope (steep flanks included).
     pub fn surface_at(&self, u: f64) -> RailPoint {
         let [v, d1, d2] = self.profile.eval(u);
-        let ty = self.cos - self.sin * d1;
-        let tz = self.sin + self.cos * d1;
-        let p = self.to_side([self.cos * u - self.sin * v, self.sin * u + self.cos * v]);
+        let t = self.frame.rotation * Vector2::new(1.0, d1);
+        let (ty, tz) = (t.x, t.y);
+        let p = self.frame * Point2::new(u, v);
         RailPoint {
-            z: p[1],
+            z: p.y,
             slope: tz / ty,
             d2: d2 / (ty * ty * ty),
         }
@@ -386,13 +383,14 @@ impl PlacedRail {
     /// from `u`.
     #[inline]
     fn invert(&self, y: f64, u: f64) -> (f64, RailPoint) {
-        let target = y - self.offset[0];
+        let target = y - self.frame.translation.x;
+        let (cos, sin) = self.cos_sin();
         let (lo, hi) = self.surface;
         let mut u = u.clamp(lo, hi);
         let mut value = self.profile.eval(u);
         for _ in 0..MAX_NEWTON_STEPS {
-            let yu = self.cos * u - self.sin * value[0];
-            let dyu = self.cos - self.sin * value[1];
+            let yu = cos * u - sin * value[0];
+            let dyu = cos - sin * value[1];
             let step = (yu - target) / dyu;
             let next = u - step;
             if step.abs() < TAYLOR_FINISH_MM && (lo..=hi).contains(&next) {
@@ -411,13 +409,13 @@ impl PlacedRail {
             }
         }
         let [v, d1, d2] = value;
-        let ty = self.cos - self.sin * d1;
-        let tz = self.sin + self.cos * d1;
+        let ty = cos - sin * d1;
+        let tz = sin + cos * d1;
         // For the rotated curve (Y(u), Z(u)): Z'' = (Y'Z'' - Z'Y'')/Y'^3 = v''/Y'^3.
         (
             u,
             RailPoint {
-                z: self.sin * u + self.cos * v + self.offset[1],
+                z: sin * u + cos * v + self.frame.translation.y,
                 slope: tz / ty,
                 d2: d2 / (ty * ty * ty),
             },
@@ -432,13 +430,14 @@ impl PlacedRail {
         let h = (y_hi - y_lo) / n as f64;
         // Each entry starts from the tangent of the one before (from the linearised inverse
         // at the first).
-        let mut guess = (y_lo - self.offset[0]) / self.cos;
+        let (cos, sin) = self.cos_sin();
+        let mut guess = (y_lo - self.frame.translation.x) / cos;
         self.inverse = (0..=n)
             .map(|i| {
                 let y = if i == n { y_hi } else { y_lo + h * i as f64 };
                 let (u, _) = self.invert(y, guess);
                 let d1 = self.profile.eval(u)[1];
-                let du_dy = 1.0 / (self.cos - self.sin * d1);
+                let du_dy = 1.0 / (cos - sin * d1);
                 guess = u + h * du_dy;
                 [u, du_dy]
             })
@@ -447,21 +446,33 @@ impl PlacedRail {
         self.inverse_step = h;
     }
 
+    /// The cosine and sine of the inclination (the rotation's complex number, no trigonometry).
+    #[inline]
+    fn cos_sin(&self) -> (f64, f64) {
+        (self.frame.rotation.re, self.frame.rotation.im)
+    }
+
+    /// The profile point at `u`, rotated (not yet translated).
     #[inline]
     fn rotated(&self, u: f64) -> [f64; 2] {
         let v = self.profile.eval(u)[0];
-        [self.cos * u - self.sin * v, self.sin * u + self.cos * v]
+        let p = self.frame.rotation * Point2::new(u, v);
+        [p.x, p.y]
     }
 
+    /// The profile's tangent `(1, v')` at `u`, rotated.
     #[inline]
     fn rotated_tangent(&self, u: f64) -> [f64; 2] {
         let d1 = self.profile.eval(u)[1];
-        [self.cos - self.sin * d1, self.sin + self.cos * d1]
+        let t = self.frame.rotation * Vector2::new(1.0, d1);
+        [t.x, t.y]
     }
 
+    /// A rotated point translated into the side frame.
     #[inline]
     fn to_side(&self, p: [f64; 2]) -> [f64; 2] {
-        [p[0] + self.offset[0], p[1] + self.offset[1]]
+        let q = Point2::new(p[0], p[1]) + self.frame.translation.vector;
+        [q.x, q.y]
     }
 }
 
