@@ -9,10 +9,10 @@ pub mod tables;
 
 use crate::Error;
 use crate::pipeline::{Figure, Results};
+use crate::profile::read::sha256_hex;
 use crate::report::{self, FigureEntry, ReportPage, Table, TableEntry};
 use crate::scene::{ImageFormat, Scene};
 use crate::track::Side;
-use sha2::{Digest, Sha256};
 
 /// One output file: its name in the output folder and its bytes.
 #[derive(Debug, Clone)]
@@ -274,13 +274,6 @@ pub fn render(
         bytes: report::render_html(&page).into_bytes(),
     });
     Ok(files)
-}
-
-fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
 }
 
 fn report_page(

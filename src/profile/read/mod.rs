@@ -273,17 +273,12 @@ impl PointProfile {
         name: &str,
         points: Vec<[f64; 2]>,
     ) -> Result<PointProfile, ReadError> {
-        use sha2::{Digest, Sha256};
-        let mut hasher = Sha256::new();
-        for p in &points {
-            hasher.update(p[0].to_le_bytes());
-            hasher.update(p[1].to_le_bytes());
-        }
-        let sha256 = hasher
-            .finalize()
+        let bytes: Vec<u8> = points
             .iter()
-            .map(|b| format!("{b:02x}"))
-            .collect::<String>();
+            .flat_map(|p| [p[0].to_le_bytes(), p[1].to_le_bytes()])
+            .flatten()
+            .collect();
+        let sha256 = sha256_hex(&bytes);
         let raw = points
             .iter()
             .enumerate()
@@ -503,7 +498,8 @@ fn parse_with_hash(
     })
 }
 
-fn sha256_hex(bytes: &[u8]) -> String {
+/// SHA-256 of `bytes` as lower-case hex: the provenance hash of profile files and tables.
+pub(crate) fn sha256_hex(bytes: &[u8]) -> String {
     use sha2::{Digest, Sha256};
     use std::fmt::Write;
     Sha256::digest(bytes)
