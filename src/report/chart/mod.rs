@@ -459,7 +459,10 @@ pub fn render_png(figure: &Figure) -> Result<Vec<u8>, ChartError> {
         let mut encoder = png::Encoder::new(&mut bytes, w, h);
         encoder.set_color(png::ColorType::Rgb);
         encoder.set_depth(png::BitDepth::Eight);
-        encoder.set_compression(png::Compression::Best);
+        // Fast deflate (fdeflate) after the Paeth filter: the best zlib level spent 3/4 of the
+        // report's time here (perf) for files 1.8 times smaller; lossless either way.
+        encoder.set_compression(png::Compression::Fast);
+        encoder.set_filter(png::FilterType::Paeth);
         let png_error = |e: png::EncodingError| ChartError::Png(e.to_string());
         let mut writer = encoder.write_header().map_err(png_error)?;
         writer.write_image_data(&pixels).map_err(png_error)?;
