@@ -11,6 +11,7 @@ use crate::profile::Profile;
 use crate::report::{Table, Tolerance, TolerancePolicy, compare_files};
 use crate::scene::Scene;
 use clap::{Parser, Subcommand};
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use write::{Group, write_file, write_folder};
@@ -91,14 +92,15 @@ pub enum Command {
         #[arg(long, value_name = "FROM:TO:STEP")]
         amplitudes_mm: Option<String>,
     },
-    /// Run time against error of numerical settings: writes tradeoff.csv and its chart.
+    /// Run time against error of numerical settings: writes tradeoff.csv and its chart, prints the table
     Tradeoff {
         /// The scene file (default: the paper's scene).
         scene: Option<PathBuf>,
         /// Output folder (default: the scene file's folder).
         #[arg(long)]
         out: Option<PathBuf>,
-        /// Timed runs per setting (the median is reported).
+        /// Timed rounds; each runs every setting once, in a random order, after one untimed
+        /// warm-up round (the median and the fastest and slowest run are reported).
         #[arg(long, default_value_t = 5)]
         repeats: usize,
     },
@@ -306,25 +308,39 @@ fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<Exi
     }
     let scene = Scene::load(scene_path)?;
     let settings = crate::tradeoff::grid(&scene);
+    // Progress only for a person watching: a terminal, where the line is redrawn in place.
+    let progress_shown = std::io::stderr().is_terminal();
     let measured = crate::tradeoff::study(&scene, &settings, repeats, |done, total, label| {
-        eprint!("\r\x1b[2K[{done}/{total}] {label}");
+        if progress_shown {
+            eprint!("\r\x1b[2K[{done}/{total} runs] {label}");
+        }
     })?;
-    eprintln!();
+    if progress_shown {
+        eprint!("\r\x1b[2K");
+    }
     let (files, _) = outputs::tradeoff_files(&measured, &scene.formats)?;
     let dir = out.map_or_else(
         || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
         Path::to_path_buf,
     );
     write_folder(&dir, Group::Tradeoff, &files)?;
+    println!(
+        "{:<40} {:>9} {:>17}  {:>10}  {:>8}",
+        "setting", "median_ms", "min-max_ms", "contact_mm", "a,b_rel"
+    );
     for m in &measured {
-        eprintln!(
-            "{:<32} {:>9.2} ms  contact {:.1e} mm  a,b {:.1e}",
+        println!(
+            "{:<40} {:>9.2} {:>17}  {:>10.1e}  {:>8.1e}",
             m.setting.label,
             1e3 * m.median_s,
+            format!("{:.2}-{:.2}", 1e3 * m.range_s.0, 1e3 * m.range_s.1),
             m.errors.contact_mm,
             m.errors.a_rel.max(m.errors.b_rel)
         );
     }
+    println!(
+        "(single thread; {repeats} timed rounds after a warm-up round, settings in a random order in each)"
+    );
     eprintln!("wrote {}", dir.join("tradeoff.csv").display());
     Ok(ExitCode::SUCCESS)
 }

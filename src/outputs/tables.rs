@@ -479,6 +479,7 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError>
     Table::builder()
         .comment("run time against error: the scene's pipeline (placement, rigid, quasi-elastic, Hertz; no rendering) per setting, single-threaded")
         .comment("errors against the reference (analytic profiles, default solver, Gauss-Legendre panels of half a weight width, cut-off exp(-60), exact Hertz), max over the sweep and both wheels; contact_mm excludes positions within one step of a reference jump; qe_location_mm is weight-averaged over the patches")
+        .comment("median_ms, min_ms, max_ms over the timed rounds: after an untimed warm-up round, each round runs every setting once in its own random order")
         .comment("times are machine-dependent: compare settings as ratios within one run")
         .text("setting", m.iter().map(|x| x.setting.label.clone()))
         .numeric("profile_step_mm", col(&|x| x.setting.profile_step_mm.unwrap_or(f64::NAN)))
