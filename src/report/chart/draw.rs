@@ -5,7 +5,8 @@
 //! glyphs. The legend is our own so that its box can be placed where it hides no data: an
 //! occupancy grid of everything drawn in the plot (lines, markers, marker lines and their
 //! labels, off-chart marks) finds a free place nearest a corner, and when there is none the
-//! plot narrows and the legend goes right of it.
+//! plot gives up room for it, right of it or below the x-axis title, whichever takes the
+//! smaller share of the plot.
 
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{KeyPointHint, NoDefaultFormatting, ValueFormatter};
@@ -107,8 +108,9 @@ struct PanelPlan {
     y_ticks: Ticks,
     /// Width of the y tick label and title area left of the plot.
     y_area: i32,
-    /// Extra space right of the plot holding the legend when no place inside is free.
-    legend_margin: i32,
+    /// Extra space right of and below the plot (below the x-axis title) holding the legend
+    /// when no place inside is free.
+    legend_space: (i32, i32),
 }
 
 fn draw_panel<DB: DrawingBackend>(
@@ -159,10 +161,10 @@ fn draw_panel<DB: DrawingBackend>(
             .unwrap_or(0);
         TICK_GAP_PX + widest + AXIS_TITLE_GAP_PX + axis_h
     };
-    let plot_size = |y_area: i32, legend_margin: i32| {
+    let plot_size = |y_area: i32, (right, below): (i32, i32)| {
         (
-            (cw - MARGIN_LEFT - MARGIN_RIGHT - legend_margin - y_area).max(1) as u32,
-            (ch - title_band - MARGIN_TOP - MARGIN_BOTTOM - x_area).max(1) as u32,
+            (cw - MARGIN_LEFT - MARGIN_RIGHT - right - y_area).max(1) as u32,
+            (ch - title_band - MARGIN_TOP - MARGIN_BOTTOM - below - x_area).max(1) as u32,
         )
     };
     let make_ticks = |(lo, hi): (f64, f64), log: bool, px: u32, spacing: f64| {
@@ -175,44 +177,44 @@ fn draw_panel<DB: DrawingBackend>(
     };
     // The y tick labels set the width of the label area, which sets the plot size, which (with
     // equal aspect) sets the ranges: one refinement pass is enough since labels change little.
-    let plan_for = |legend_margin: i32| {
+    let plan_for = |legend_space: (i32, i32)| {
         let mut frame = data_frame;
         let guess = make_ticks(frame.y, ymap.log, ch as u32, Y_TICK_SPACING_PX);
         let mut y_area = y_area_for(&guess);
         if chart.equal_aspect && !xmap.log && !ymap.log {
-            equalize(&mut frame, plot_size(y_area, legend_margin));
+            equalize(&mut frame, plot_size(y_area, legend_space));
         }
         let y_ticks = make_ticks(
             frame.y,
             ymap.log,
-            plot_size(y_area, legend_margin).1,
+            plot_size(y_area, legend_space).1,
             Y_TICK_SPACING_PX,
         );
         y_area = y_area.max(y_area_for(&y_ticks));
-        let (plot_w, _) = plot_size(y_area, legend_margin);
+        let (plot_w, _) = plot_size(y_area, legend_space);
         let x_ticks = make_ticks(frame.x, xmap.log, plot_w, X_TICK_SPACING_PX);
         PanelPlan {
             frame,
             x_ticks,
             y_ticks,
             y_area,
-            legend_margin,
+            legend_space,
         }
     };
 
-    let mut plan = plan_for(0);
+    let mut plan = plan_for((0, 0));
     let off_chart = off_chart_runs(chart, xmap, ymap, &plan.frame);
     let legend = LegendBox::of(chart, xmap, ymap, &off_chart);
     let mut placed = None;
     for attempt in 0..2 {
         let plot_area = cell.margin(
             title_band + MARGIN_TOP,
-            MARGIN_BOTTOM + x_area,
+            MARGIN_BOTTOM + plan.legend_space.1 + x_area,
             MARGIN_LEFT + plan.y_area,
-            MARGIN_RIGHT + plan.legend_margin,
+            MARGIN_RIGHT + plan.legend_space.0,
         );
         let ctx = build_context(&plot_area, &plan)?;
-        let (w, h) = plot_size(plan.y_area, plan.legend_margin);
+        let (w, h) = plot_size(plan.y_area, plan.legend_space);
         let (left, top) = plot_area.get_base_pixel();
         let plot: PxRect = (left, top, left + w as i32, top + h as i32);
         let Some(size) = legend.size() else {
@@ -222,24 +224,39 @@ fn draw_panel<DB: DrawingBackend>(
         let spot = if attempt == 0 {
             let grid = Occupancy::of(chart, &ctx, xmap, ymap, &plan.frame, plot);
             grid.free_spot(plot, size, chart.legend)
-        } else {
+        } else if plan.legend_space.0 > 0 {
             // Outside, right of the plot, level with its top.
             Some((plot.2 + LEGEND_INSET_PX, plot.1))
+        } else {
+            // Outside, below the x-axis title, centred under the plot.
+            let left = ((plot.0 + plot.2 - size.0) / 2).max(cx + MARGIN_LEFT);
+            Some((left, plot.3 + x_area + LEGEND_INSET_PX / 2))
         };
         match spot {
             Some(at) => {
                 placed = Some((plot, Some((at.0, at.1, at.0 + size.0, at.1 + size.1))));
                 break;
             }
-            None => plan = plan_for(size.0 + LEGEND_INSET_PX),
+            None => {
+                // Outside where it costs the plot the smaller share of its width or height.
+                let (w, h) = (f64::from(w), f64::from(h));
+                let right = f64::from(size.0 + LEGEND_INSET_PX) / w;
+                let below = f64::from(size.1 + LEGEND_INSET_PX) / h;
+                let fits_below = size.0 <= cw - MARGIN_LEFT - MARGIN_RIGHT;
+                plan = if fits_below && below < right {
+                    plan_for((0, size.1 + LEGEND_INSET_PX))
+                } else {
+                    plan_for((size.0 + LEGEND_INSET_PX, 0))
+                };
+            }
         }
     }
     let (plot, legend_rect) = placed.expect("the second attempt always places the legend");
     let plot_area = cell.margin(
         title_band + MARGIN_TOP,
-        MARGIN_BOTTOM + x_area,
+        MARGIN_BOTTOM + plan.legend_space.1 + x_area,
         MARGIN_LEFT + plan.y_area,
-        MARGIN_RIGHT + plan.legend_margin,
+        MARGIN_RIGHT + plan.legend_space.0,
     );
     let mut ctx = build_context(&plot_area, &plan)?;
     let frame = plan.frame;
@@ -285,7 +302,7 @@ fn draw_panel<DB: DrawingBackend>(
     Ok(PanelLayout {
         plot: px_box(plot),
         legend: legend_rect.map(px_box),
-        legend_outside: plan.legend_margin > 0,
+        legend_outside: plan.legend_space != (0, 0),
         off_chart: off_chart.len(),
     })
 }

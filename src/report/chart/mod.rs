@@ -204,7 +204,8 @@ pub struct VLine {
 
 /// Where the legend goes. Whatever the choice, a legend never covers data, marker lines or
 /// labels: if the requested corner is not free the legend moves to the free place nearest a
-/// corner, and if no place inside the plot is free, right of the plot.
+/// corner, and if no place inside the plot is free, outside it (right of the plot or below
+/// the x-axis title, whichever takes less room from the plot).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum LegendPosition {
     /// The free inside corner, in the order upper right, upper left, lower right, lower left.
@@ -514,7 +515,8 @@ pub struct PanelLayout {
     pub plot: PxBox,
     /// The legend box, `None` when the panel has no legend.
     pub legend: Option<PxBox>,
-    /// The legend sits right of the plot because no place inside it was free.
+    /// The legend sits outside the plot (right of it, or below the x-axis title) because no
+    /// place inside it was free.
     pub legend_outside: bool,
     /// Number of places where a series leaves the chart above or below (each marked by a
     /// triangle at the frame and summed up in the legend).
