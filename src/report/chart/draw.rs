@@ -47,7 +47,9 @@ const LEGEND_INSET_PX: i32 = 8;
 /// Least distance in pixels between a legend and anything drawn in the plot.
 const LEGEND_CLEARANCE_PX: i32 = 4;
 /// Cell size in pixels of the occupancy grid that places legends.
-const OCCUPANCY_CELL_PX: i32 = 4;
+const OCCUPANCY_CELL_PX: i32 = 6;
+/// Spacing in pixels of the samples that mark a line in the occupancy grid.
+const SEGMENT_SAMPLE_PX: f64 = 3.0;
 /// Half width in pixels of the triangles that mark where data leaves the chart.
 const OFF_CHART_MARK_PX: i32 = 5;
 
@@ -710,13 +712,14 @@ impl Marks {
         }
     }
 
-    /// Marks a segment between two pixels, sampled every 2 px.
+    /// Marks a segment between two pixels, sampled every [`SEGMENT_SAMPLE_PX`] (less than
+    /// the clearance, so that the marked discs overlap).
     fn segment(&mut self, a: (f64, f64), b: (f64, f64), radius: f64) {
         let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
         if !len.is_finite() {
             return;
         }
-        let n = (len / 2.0).ceil().max(1.0) as usize;
+        let n = (len / SEGMENT_SAMPLE_PX).ceil().max(1.0) as usize;
         for k in 0..=n {
             let t = k as f64 / n as f64;
             self.mark((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)), radius);
@@ -737,7 +740,7 @@ struct Occupancy {
 
 impl Occupancy {
     /// Marks every cell within [`LEGEND_CLEARANCE_PX`] (plus the line width or marker size)
-    /// of a data point, of a line between points (sampled every 2 px), of a marker line and
+    /// of a data point, of a line between points (sampled every [`SEGMENT_SAMPLE_PX`]), of a marker line and
     /// its label, and of the off-chart marks.
     fn of<DB: DrawingBackend>(
         chart: &Chart,
@@ -865,10 +868,15 @@ impl Occupancy {
             (LegendPosition::LowerRight, (x1, y1)),
             (LegendPosition::LowerLeft, (x0, y1)),
         ];
-        if let Some(&(_, at)) = corners.iter().find(|(p, _)| *p == preference)
-            && self.is_free((at.0, at.1, at.0 + w, at.1 + h))
-        {
-            return Some(at);
+        // The requested corner, or for `Auto` the corners in order: most legends end there,
+        // without the scan below.
+        let first = corners
+            .iter()
+            .filter(|(p, _)| preference == LegendPosition::Auto || *p == preference)
+            .map(|&(_, at)| at)
+            .find(|at| self.is_free((at.0, at.1, at.0 + w, at.1 + h)));
+        if first.is_some() {
+            return first;
         }
         let step = OCCUPANCY_CELL_PX as usize;
         let mut best: Option<(i64, (i32, i32))> = None;
