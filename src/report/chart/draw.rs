@@ -341,9 +341,10 @@ fn build_context<'a, DB: DrawingBackend>(
 #[derive(Debug, Clone, Copy)]
 struct OffChart {
     series: usize,
-    /// x of the run's most extreme point (transformed units).
+    /// x where the run leaves the chart (or comes back, for a run that starts the series
+    /// or follows a gap), in transformed units.
     x: f64,
-    /// Its y value (transformed units).
+    /// The run's most extreme y value (transformed units).
     y: f64,
     above: bool,
 }
@@ -351,7 +352,11 @@ struct OffChart {
 fn off_chart_runs(chart: &Chart, xmap: AxisMap, ymap: AxisMap, frame: &Frame) -> Vec<OffChart> {
     let mut runs: Vec<OffChart> = Vec::new();
     for (i, s) in chart.series.iter().enumerate() {
-        let mut open = false;
+        // Whether the previous point is off the chart, and on the chart.
+        let (mut open, mut after_inside) = (false, false);
+        // The open run started right after a point on the chart: its mark stays where it
+        // left; otherwise the mark follows the run to where it comes back.
+        let mut exit_known = false;
         for &(x, y) in &s.points {
             let (x, y) = (xmap.forward(x), ymap.forward(y));
             let inside_x = x.is_finite() && x >= frame.x.0 && x <= frame.x.1;
@@ -367,18 +372,25 @@ fn off_chart_runs(chart: &Chart, xmap: AxisMap, ymap: AxisMap, frame: &Frame) ->
             match (side, runs.last_mut()) {
                 (Some(above), Some(last)) if open && last.above == above => {
                     if (above && y > last.y) || (!above && y < last.y) {
-                        (last.x, last.y) = (x, y);
+                        last.y = y;
+                    }
+                    if !exit_known {
+                        last.x = x;
                     }
                 }
-                (Some(above), _) => runs.push(OffChart {
-                    series: i,
-                    x,
-                    y,
-                    above,
-                }),
+                (Some(above), _) => {
+                    exit_known = after_inside;
+                    runs.push(OffChart {
+                        series: i,
+                        x,
+                        y,
+                        above,
+                    });
+                }
                 (None, _) => {}
             }
             open = side.is_some();
+            after_inside = inside_x && y.is_finite() && side.is_none();
         }
     }
     runs
