@@ -1,5 +1,5 @@
 //! Benchmarks of whole scenes: the paper scene without rendering, the rendering of its
-//! report (bytes only, no files), and a batch of independent scenes sequential against
+//! report (bytes only, no files; SVG and PNG, and SVG only), and a batch of independent scenes sequential against
 //! parallel (rayon). Run: `cargo bench --bench scene`.
 
 use std::path::Path;
@@ -36,9 +36,18 @@ fn paper_scene_all_stages_without_rendering(bencher: divan::Bencher) {
     bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
 }
 
-#[divan::bench(sample_count = 5)]
+#[divan::bench(sample_count = 10)]
 fn paper_report_rendering(bencher: divan::Bencher) {
     let scene = paper();
+    let results = pipeline::run(&scene).unwrap();
+    bencher.bench(|| outputs::render(divan::black_box(&scene), &results, &[]).unwrap());
+}
+
+/// The same report with SVG figures only: the ratio of the two is the cost of the PNGs.
+#[divan::bench(sample_count = 10)]
+fn paper_report_rendering_svg_only(bencher: divan::Bencher) {
+    let mut scene = paper();
+    scene.formats = vec![wheelrail::scene::ImageFormat::Svg];
     let results = pipeline::run(&scene).unwrap();
     bencher.bench(|| outputs::render(divan::black_box(&scene), &results, &[]).unwrap());
 }

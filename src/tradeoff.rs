@@ -41,9 +41,9 @@ pub struct Setting {
 pub struct Measurement {
     /// The setting.
     pub setting: Setting,
-    /// Median wall time of one run (s), single-threaded.
+    /// Median wall time of one run (s), single-threaded, over the timed rounds.
     pub median_s: f64,
-    /// Fastest and slowest of the repeated runs (s).
+    /// Fastest and slowest of the timed runs (s).
     pub range_s: (f64, f64),
     /// Errors against the reference (see the module docs).
     pub errors: Errors,
@@ -235,9 +235,15 @@ fn run_once(scene: &Scene, setting: &Setting, placement: &Placement) -> Run {
     }
 }
 
-/// Runs the study: the reference once, then each setting `repeats` times (the median of
-/// the timed runs; placement, which reads and fits profiles, is timed with the run).
-/// `progress(done, total, label)` is called before each setting.
+/// Runs the study: the reference once, then a warm-up round (each setting once, untimed:
+/// its results give the errors) and `repeats` timed rounds. Every round runs all settings
+/// in its own random order, so that no setting is favoured by running first or after a
+/// particular other one (cold caches, frequency changes, other load on the machine); each
+/// setting's median and spread (fastest, slowest) are over its timed runs. Placement, which
+/// reads and fits profiles, is timed with the run. `progress(done, total, label)` is called
+/// before each run and once at the end (`done == total`, label `done`).
+///
+/// The order comes from a fixed seed ([`ORDER_SEED`]): the same study runs the same order.
 ///
 /// # Errors
 /// [`crate::Error`] when a profile cannot be read or placed.
@@ -256,6 +262,9 @@ pub fn study(
     pool.install(|| study_on_this_thread(scene, settings, repeats, progress))
 }
 
+/// Seed of the random order of the settings in each round of [`study`].
+pub const ORDER_SEED: u64 = 0x5EED_F7AD;
+
 fn study_on_this_thread(
     scene: &Scene,
     settings: &[Setting],
@@ -268,32 +277,79 @@ fn study_on_this_thread(
         &reference_setting,
         &placement_for(scene, &reference_setting)?,
     );
-    let mut out = Vec::with_capacity(settings.len());
-    for (i, setting) in settings.iter().enumerate() {
-        progress(i, settings.len(), &setting.label);
-        let mut times = Vec::with_capacity(repeats.max(1));
-        let mut last = None;
-        // One untimed run first: the first run after another setting pays for cold caches
-        // (measured: the first setting of the grid 1.5 times slower than its twin).
-        run_once(scene, setting, &placement_for(scene, setting)?);
-        for _ in 0..repeats.max(1) {
+    let rounds = 1 + repeats.max(1);
+    let total = rounds * settings.len();
+    let mut rng = SplitMix64(ORDER_SEED);
+    let mut errors_of: Vec<Option<Errors>> = vec![None; settings.len()];
+    let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds - 1); settings.len()];
+    let mut done = 0;
+    for round in 0..rounds {
+        for i in rng.permutation(settings.len()) {
+            let setting = &settings[i];
+            progress(done, total, &setting.label);
+            done += 1;
             let start = Instant::now();
             let placement = placement_for(scene, setting)?;
             let run = run_once(scene, setting, &placement);
-            times.push(start.elapsed().as_secs_f64());
-            last = Some(run);
+            let elapsed = start.elapsed().as_secs_f64();
+            if round == 0 {
+                // The warm-up: the first run of a setting pays for its first use of code and
+                // data (measured: the first setting of the grid 1.5 times slower than its twin).
+                errors_of[i] = Some(errors(&reference, &run));
+            } else {
+                times[i].push(elapsed);
+            }
         }
-        times.sort_by(f64::total_cmp);
-        let run = last.expect("at least one repeat");
-        out.push(Measurement {
-            setting: setting.clone(),
-            median_s: times[times.len() / 2],
-            range_s: (times[0], times[times.len() - 1]),
-            errors: errors(&reference, &run),
-        });
     }
-    progress(settings.len(), settings.len(), "done");
-    Ok(out)
+    progress(total, total, "done");
+    Ok(settings
+        .iter()
+        .zip(times)
+        .zip(errors_of)
+        .map(|((setting, mut times), errors)| {
+            times.sort_by(f64::total_cmp);
+            Measurement {
+                setting: setting.clone(),
+                median_s: median(&times),
+                range_s: (times[0], times[times.len() - 1]),
+                errors: errors.expect("every setting ran in the warm-up round"),
+            }
+        })
+        .collect())
+}
+
+/// Median of sorted, non-empty `times` (the mean of the middle two for an even count).
+fn median(times: &[f64]) -> f64 {
+    let n = times.len();
+    if n % 2 == 1 {
+        times[n / 2]
+    } else {
+        0.5 * (times[n / 2 - 1] + times[n / 2])
+    }
+}
+
+/// The SplitMix64 generator (Steele, Lea, Flood 2014): enough to shuffle a few settings
+/// reproducibly without a dependency.
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A uniformly random permutation of `0..n` (Fisher-Yates).
+    fn permutation(&mut self, n: usize) -> Vec<usize> {
+        let mut order: Vec<usize> = (0..n).collect();
+        for i in (1..n).rev() {
+            let j = (self.next() % (i as u64 + 1)) as usize;
+            order.swap(i, j);
+        }
+        order
+    }
 }
 
 fn errors(reference: &Run, run: &Run) -> Errors {
@@ -371,4 +427,29 @@ pub fn pareto_front(m: &[Measurement], error: impl Fn(&Errors) -> f64) -> Vec<us
         }
     }
     front
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounds_are_permutations_in_changing_orders() {
+        let mut rng = SplitMix64(ORDER_SEED);
+        let orders: Vec<Vec<usize>> = (0..6).map(|_| rng.permutation(17)).collect();
+        for order in &orders {
+            let mut sorted = order.clone();
+            sorted.sort_unstable();
+            assert_eq!(sorted, (0..17).collect::<Vec<_>>());
+        }
+        // Which setting runs first changes from round to round.
+        let firsts: std::collections::HashSet<usize> = orders.iter().map(|o| o[0]).collect();
+        assert!(firsts.len() >= 3, "{orders:?}");
+    }
+
+    #[test]
+    fn median_of_even_and_odd_counts() {
+        assert_eq!(median(&[1.0, 2.0, 9.0]).to_bits(), 2.0f64.to_bits());
+        assert_eq!(median(&[1.0, 2.0, 4.0, 9.0]).to_bits(), 3.0f64.to_bits());
+    }
 }

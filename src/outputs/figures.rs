@@ -88,15 +88,26 @@ pub fn profiles(placement: &Placement) -> Figure {
     )
 }
 
-/// tan(gamma) of wheel and rail against the lateral position (paper Fig. 1, right).
+/// The stated y range of the conicity chart: contact angles from -45° to 74°, the contact
+/// angles a wheel and a rail can meet at (the S1002 flange reaches 70°, worn flanges a
+/// little more). The flange back's vertical face, the rail's gauge corner and field-side
+/// flank leave it; the chart marks where and says how far.
+pub const CONICITY_RANGE: (f64, f64) = (-1.0, 3.5);
+
+/// tan(gamma) of wheel and rail against the lateral position (paper Fig. 1, right), over
+/// [`CONICITY_RANGE`].
 pub fn conicity(placement: &Placement) -> Figure {
-    profile_property(
+    let mut figure = profile_property(
         placement,
         "Conicity: tan(gamma) of wheel and rail, left side",
         "tan(gamma) (-)",
         |p, u| p.tan_gamma(u),
         |r, y| r.at(y).map_or(f64::NAN, |q| q.slope),
-    )
+    );
+    for chart in &mut figure.panels {
+        chart.y_range = Some(CONICITY_RANGE);
+    }
+    figure
 }
 
 /// Lateral curvature of wheel and rail against the lateral position.

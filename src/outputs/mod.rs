@@ -195,7 +195,7 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
 pub fn caption(fig: Figure, scene: &Scene) -> String {
     match fig {
         Figure::Profiles => "Paper Fig. 1: wheel and rail of the left side in their placed positions (centred wheelset resting on the rail, no roll), track frame.".into(),
-        Figure::Conicity => "Paper Fig. 1: tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position; the wheel is broken at its section joints.".into(),
+        Figure::Conicity => "Paper Fig. 1: tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position; the wheel is broken at its section joints. The y axis runs over contact angles from -45° to 74° (tan γ from -1 to 3.5); triangles at the frame mark where the flange back's vertical face and the rail's flanks leave it.".into(),
         Figure::Curvature => "Lateral curvature of the profiles, convex positive. The S1002 curvature jumps at every section joint, as its definition does.".into(),
         Figure::ContactPoints => "Paper Fig. 2: rigid contact points on the wheel (profile coordinate) and on the rail (from the top of rail) against the lateral shift. Jumps of a contact point are gaps, not lines.".into(),
         Figure::RollingRadius => "Paper Fig. 2: rolling radius difference r_left - r_right of the rigid contact.".into(),

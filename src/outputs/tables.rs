@@ -14,24 +14,63 @@ pub const PROFILE_TABLE_STEP_MM: f64 = 0.1;
 const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
 const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
 
-/// The wheel profile: `s_mm, F_mm, tan_gamma, curvature_per_mm`.
+/// Steepest `|tan_gamma|` a profile table writes as a number. Steeper is a vertical tangent:
+/// the profiles evaluate it with a capped root (the S1002 flange back gives `1e6`, see
+/// `profile::s1002`), and a finite stand-in for an infinite slope would read as data. No
+/// profile face that is not vertical is this steep (89.9994°).
+pub const VERTICAL_TAN_GAMMA: f64 = 1e5;
+
+/// The wheel profile: `s_mm, F_mm, tan_gamma, curvature_per_mm, face`.
+///
+/// Where the profile's tangent is vertical (`|tan_gamma|` beyond [`VERTICAL_TAN_GAMMA`], the
+/// flange back of S1002) `tan_gamma` is `NaN` and `face` says `vertical`; elsewhere `face` is
+/// `regular`.
 ///
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn wheel_profile(wheel: &PlacedWheel) -> Result<Table, TableError> {
     let rows = wheel.profile().sample(PROFILE_TABLE_STEP_MM);
+    let (tan_gamma, face) = slope_and_face(&rows);
     Table::builder()
         .comment(format!("wheel profile {} ({})", wheel.profile().name(), wheel.profile().source()))
         .comment("frame: wheel side frame; s_mm from the taping line, positive towards the field side (flange at s < 0); F_mm radius increase over the nominal radius, positive towards the flange tip")
         .comment("tan_gamma = -dF/ds (positive on the coned tread); curvature_per_mm convex positive; section joints included as extra rows")
+        .comment(face_comment())
         .numeric("s_mm", col(&rows, 0))
         .numeric("F_mm", col(&rows, 1))
-        .numeric("tan_gamma", col(&rows, 2))
+        .numeric("tan_gamma", tan_gamma)
         .numeric("curvature_per_mm", col(&rows, 3))
+        .text("face", face)
         .build()
 }
 
-/// The placed rail in its side frame: `u_mm, y_mm, z_mm, tan_gamma, curvature_per_mm`.
+/// The `tan_gamma` and `face` columns of profile samples `[u, v, tan_gamma, curvature]`:
+/// `NaN` and `vertical` where the tangent is vertical (see [`VERTICAL_TAN_GAMMA`]), the slope
+/// and `regular` elsewhere.
+pub fn slope_and_face(rows: &[[f64; 4]]) -> (Vec<f64>, Vec<&'static str>) {
+    rows.iter()
+        .map(|r| {
+            if r[2].abs() > VERTICAL_TAN_GAMMA {
+                (f64::NAN, "vertical")
+            } else {
+                (r[2], "regular")
+            }
+        })
+        .unzip()
+}
+
+/// The `#` header line that explains the `face` column of [`slope_and_face`].
+pub fn face_comment() -> String {
+    format!(
+        "face: vertical where the tangent is vertical (|tan_gamma| > {VERTICAL_TAN_GAMMA:e}, \
+         infinite): tan_gamma NaN there; regular elsewhere"
+    )
+}
+
+/// The placed rail in its side frame: `u_mm, y_mm, z_mm, tan_gamma, curvature_per_mm, face`.
+///
+/// `face` is `running` on the running surface (the lateral range of the contact search's
+/// `Z(Y)` table) and `flank` beyond it, where `tan_gamma` and `curvature_per_mm` are `NaN`.
 ///
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
@@ -41,6 +80,7 @@ pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> 
     let mut z = Vec::with_capacity(rows.len());
     let mut slope = Vec::with_capacity(rows.len());
     let mut curvature = Vec::with_capacity(rows.len());
+    let mut face = Vec::with_capacity(rows.len());
     let (y_lo, y_hi) = rail.y_range();
     for r in &rows {
         let q = rail.surface_at(r[0]);
@@ -52,20 +92,24 @@ pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> 
         if (y_lo..=y_hi).contains(&y_side) {
             slope.push(q.slope);
             curvature.push(q.curvature());
+            face.push("running");
         } else {
             slope.push(f64::NAN);
             curvature.push(f64::NAN);
+            face.push("flank");
         }
     }
     Table::builder()
         .comment(format!("rail profile {} ({}), {} rail as placed", rail.profile().name(), rail.profile().source(), side.name()))
         .comment("frame: rail side frame = track frame mirrored per side; y_mm = |y| from the track centre (positive towards the field side), z_mm up from the top of rail; u_mm the profile's own lateral coordinate")
-        .comment("tan_gamma = dz/dy in the side frame (inclination included); curvature_per_mm convex positive; NaN where the surface is steeper than the running surface (flank)")
+        .comment("tan_gamma = dz/dy in the side frame (inclination included); curvature_per_mm convex positive; NaN where the surface is steeper than the running surface")
+        .comment("face: running on the running surface; flank beyond it (tan_gamma and curvature_per_mm NaN)")
         .numeric("u_mm", col(&rows, 0))
         .numeric("y_mm", y)
         .numeric("z_mm", z)
         .numeric("tan_gamma", slope)
         .numeric("curvature_per_mm", curvature)
+        .text("face", face)
         .build()
 }
 
@@ -435,6 +479,7 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError>
     Table::builder()
         .comment("run time against error: the scene's pipeline (placement, rigid, quasi-elastic, Hertz; no rendering) per setting, single-threaded")
         .comment("errors against the reference (analytic profiles, default solver, Gauss-Legendre panels of half a weight width, cut-off exp(-60), exact Hertz), max over the sweep and both wheels; contact_mm excludes positions within one step of a reference jump; qe_location_mm is weight-averaged over the patches")
+        .comment("median_ms, min_ms, max_ms over the timed rounds: after an untimed warm-up round, each round runs every setting once in its own random order")
         .comment("times are machine-dependent: compare settings as ratios within one run")
         .text("setting", m.iter().map(|x| x.setting.label.clone()))
         .numeric("profile_step_mm", col(&|x| x.setting.profile_step_mm.unwrap_or(f64::NAN)))

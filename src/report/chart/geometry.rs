@@ -6,6 +6,17 @@ use super::Chart;
 /// Fraction of the data span added on each side of an automatic range.
 const AUTO_RANGE_PAD: f64 = 0.04;
 
+/// Share of the finite values at each end of an automatic y range that is looked at as
+/// possible isolated extremes (at least one value once there are [`ROBUST_MIN_VALUES`]).
+const TRIM_FRACTION: f64 = 0.01;
+/// Values beyond the trimmed range by more than this fraction of its span are isolated
+/// extremes (a pole, a vertical face, one wild sample): the automatic range leaves them off
+/// the chart, where marks and a legend note show them. Nearer values are kept, so a smooth
+/// curve keeps its ends.
+const OUTLIER_REACH: f64 = 0.5;
+/// Fewer finite values than this are all kept.
+const ROBUST_MIN_VALUES: usize = 8;
+
 /// An axis after transformation: log axes work in log10 units throughout.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct AxisMap {
@@ -107,7 +118,41 @@ pub(super) fn polylines(points: &[Point], frame: &Frame) -> Vec<Vec<Point>> {
     out
 }
 
-/// Data bounds of the transformed finite points and vline positions.
+/// The span of `values` (finite, any order) without its isolated extremes: sorted, the
+/// [`TRIM_FRACTION`] at each end is set aside, and of it only the values within
+/// [`OUTLIER_REACH`] times the remaining span of the rest are kept, unless all of them are
+/// within that reach of the kept span (a peak that stands out little is shown whole).
+/// `None` without values.
+pub(super) fn robust_span(values: &mut [f64]) -> Option<Span> {
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    let (&first, &last) = (values.first()?, values.last()?);
+    if n < ROBUST_MIN_VALUES {
+        return Some((first, last));
+    }
+    let k = ((TRIM_FRACTION * n as f64) as usize).max(1);
+    let (q_lo, q_hi) = (values[k], values[n - 1 - k]);
+    let reach = OUTLIER_REACH * (q_hi - q_lo);
+    let lo = values[..=k]
+        .iter()
+        .copied()
+        .find(|&v| v >= q_lo - reach)
+        .unwrap_or(q_lo);
+    let hi = values[n - 1 - k..]
+        .iter()
+        .copied()
+        .rev()
+        .find(|&v| v <= q_hi + reach)
+        .unwrap_or(q_hi);
+    // Extremes that would widen the kept span by little are shown rather than cut.
+    let keep = OUTLIER_REACH * (hi - lo);
+    let lo = if lo - first <= keep { first } else { lo };
+    let hi = if last - hi <= keep { last } else { hi };
+    Some((lo, hi))
+}
+
+/// Data bounds of the transformed finite points and vline positions: x over all of them,
+/// y without isolated extremes ([`robust_span`]).
 pub(super) fn data_bounds(
     chart: &Chart,
     xmap: AxisMap,
@@ -121,20 +166,21 @@ pub(super) fn data_bounds(
             });
         }
     };
-    let (mut bx, mut by) = (None, None);
+    let mut bx = None;
+    let mut ys = Vec::new();
     for s in &chart.series {
         for &(x, y) in &s.points {
             let (tx, ty) = (xmap.forward(x), ymap.forward(y));
             if tx.is_finite() && ty.is_finite() {
                 grow(&mut bx, tx);
-                grow(&mut by, ty);
+                ys.push(ty);
             }
         }
     }
     for v in &chart.vlines {
         grow(&mut bx, xmap.forward(v.x));
     }
-    (bx, by)
+    (bx, robust_span(&mut ys))
 }
 
 /// The displayed range (transformed units) of one axis.
@@ -240,6 +286,29 @@ mod tests {
         let log = AxisMap { log: true };
         assert_eq!(axis_range(Some((1.0, 100.0)), None, log), (0.0, 2.0));
         assert!(log.forward(0.0).is_nan() && log.forward(-1.0).is_nan());
+    }
+
+    #[test]
+    fn robust_span_leaves_out_isolated_extremes_only() {
+        // A smooth ramp keeps both ends.
+        let mut ramp: Vec<f64> = (0..500).map(|i| f64::from(i) * 0.01).collect();
+        assert_eq!(robust_span(&mut ramp), Some((0.0, 4.99)));
+        // One vertical-face sample (the S1002 flange back evaluates to -1e6) is left out.
+        let mut face = ramp.clone();
+        face.push(-1e6);
+        assert_eq!(robust_span(&mut face), Some((0.0, 4.99)));
+        // A pole: values growing without bound over a few samples at one end.
+        let mut pole: Vec<f64> = (0..500).map(|i| f64::from(i % 50) * 0.1).collect();
+        pole.extend([10.0, 30.0, 100.0, 1e3, 1e4]);
+        assert_eq!(robust_span(&mut pole), Some((0.0, 4.9)));
+        // A peak standing out by less than half the span is shown whole.
+        let mut peak: Vec<f64> = (0..500).map(|i| f64::from(i % 50) * 0.1).collect();
+        peak.extend([5.5, 6.0, 6.5]);
+        assert_eq!(robust_span(&mut peak), Some((0.0, 6.5)));
+        // Too few values to tell an extreme from data: all kept.
+        let mut few = vec![0.0, 1.0, 1e6];
+        assert_eq!(robust_span(&mut few), Some((0.0, 1e6)));
+        assert_eq!(robust_span(&mut []), None);
     }
 
     #[test]

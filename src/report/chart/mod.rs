@@ -11,7 +11,13 @@
 //! * A non-finite point (`NaN`, `±inf`) breaks a line: jumps and points that could not be
 //!   computed show as gaps, never as joining lines. On a log axis, non-positive values are
 //!   skipped the same way.
-//! * Data outside a fixed range is clipped at the frame.
+//! * Automatic ranges come from the data that matters: isolated extremes (a pole, a vertical
+//!   profile face, one wild sample) are left out of the y range. Data outside the y range,
+//!   automatic or fixed, is clipped at the frame, where a triangle in the series' colour marks
+//!   each place it leaves, and the legend says how far it goes ("off the chart: ▼ down to
+//!   -1e6").
+//! * Legends never cover what is drawn (see [`LegendPosition`]); [`layout`] tells where they
+//!   went and [`render_rgb`] can leave them out to check it.
 //! * Colours come from the Okabe–Ito palette ([`PALETTE`]), readable with the common colour
 //!   vision deficiencies; each colour has its own marker shape ([`MarkerShape::for_color`]), and
 //!   lines can be dashed, so series stay distinguishable in grey-scale print.
@@ -196,10 +202,13 @@ pub struct VLine {
     pub label: String,
 }
 
-/// Where the legend goes.
+/// Where the legend goes. Whatever the choice, a legend never covers data, marker lines or
+/// labels: if the requested corner is not free the legend moves to the free place nearest a
+/// corner, and if no place inside the plot is free, outside it (right of the plot or below
+/// the x-axis title, whichever takes less room from the plot).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum LegendPosition {
-    /// The inside corner that covers the fewest data points.
+    /// The free inside corner, in the order upper right, upper left, lower right, lower left.
     #[default]
     Auto,
     /// Inside, upper left corner.
@@ -431,7 +440,7 @@ pub fn render_svg(figure: &Figure) -> Result<String, ChartError> {
     {
         let root =
             SVGBackend::with_string(&mut svg, (figure.width, figure.height)).into_drawing_area();
-        draw::draw_figure(&root, figure, TextMode::Whole)?;
+        draw::draw_figure(&root, figure, DrawOptions::svg())?;
         root.present().map_err(drawing_error)?;
     }
     Ok(svg)
@@ -444,26 +453,102 @@ pub fn render_svg(figure: &Figure) -> Result<String, ChartError> {
 ///
 /// As [`render_svg`], plus [`ChartError::Png`] if encoding fails.
 pub fn render_png(figure: &Figure) -> Result<Vec<u8>, ChartError> {
-    check_figure(figure)?;
+    let pixels = render_rgb(figure, true)?;
     let (w, h) = (figure.width, figure.height);
-    let mut pixels = vec![0u8; w as usize * h as usize * 3];
-    {
-        let root = BitMapBackend::with_buffer(&mut pixels, (w, h)).into_drawing_area();
-        draw::draw_figure(&root, figure, TextMode::PerGlyph)?;
-        root.present().map_err(drawing_error)?;
-    }
     let mut bytes = Vec::new();
     {
         let mut encoder = png::Encoder::new(&mut bytes, w, h);
         encoder.set_color(png::ColorType::Rgb);
         encoder.set_depth(png::BitDepth::Eight);
-        encoder.set_compression(png::Compression::Best);
+        // Fast deflate (fdeflate) after the Paeth filter: the best zlib level spent 3/4 of the
+        // report's time here (perf) for files 1.8 times smaller; lossless either way.
+        encoder.set_compression(png::Compression::Fast);
+        encoder.set_filter(png::FilterType::Paeth);
         let png_error = |e: png::EncodingError| ChartError::Png(e.to_string());
         let mut writer = encoder.write_header().map_err(png_error)?;
         writer.write_image_data(&pixels).map_err(png_error)?;
         writer.finish().map_err(png_error)?;
     }
     Ok(bytes)
+}
+
+/// The pixels of [`render_png`]: 8-bit RGB, row by row from the top, `width × height × 3`
+/// bytes. With `legends` false the legends are laid out (the plot keeps its size and the
+/// data its place) but not drawn, so that one can see what they would cover.
+///
+/// # Errors
+///
+/// As [`render_svg`].
+pub fn render_rgb(figure: &Figure, legends: bool) -> Result<Vec<u8>, ChartError> {
+    check_figure(figure)?;
+    let (w, h) = (figure.width, figure.height);
+    let mut pixels = vec![0u8; w as usize * h as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut pixels, (w, h)).into_drawing_area();
+        let options = DrawOptions {
+            mode: TextMode::PerGlyph,
+            legends,
+        };
+        draw::draw_figure(&root, figure, options)?;
+        root.present().map_err(drawing_error)?;
+    }
+    Ok(pixels)
+}
+
+/// A rectangle of pixels of the rendered image, edges included, `(0, 0)` at the top left.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PxBox {
+    /// Leftmost column.
+    pub left: i32,
+    /// Top row.
+    pub top: i32,
+    /// Rightmost column.
+    pub right: i32,
+    /// Bottom row.
+    pub bottom: i32,
+}
+
+/// Where the parts of one panel landed on the image (the same in SVG and PNG).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PanelLayout {
+    /// The plot area (the frame around the data).
+    pub plot: PxBox,
+    /// The legend box, `None` when the panel has no legend.
+    pub legend: Option<PxBox>,
+    /// The legend sits outside the plot (right of it, or below the x-axis title) because no
+    /// place inside it was free.
+    pub legend_outside: bool,
+    /// Number of places where a series leaves the chart above or below (each marked by a
+    /// triangle at the frame and summed up in the legend).
+    pub off_chart: usize,
+}
+
+/// The layout of every panel of `figure`, in panel order.
+///
+/// # Errors
+///
+/// As [`render_svg`].
+pub fn layout(figure: &Figure) -> Result<Vec<PanelLayout>, ChartError> {
+    check_figure(figure)?;
+    let mut svg = String::new();
+    let root = SVGBackend::with_string(&mut svg, (figure.width, figure.height)).into_drawing_area();
+    draw::draw_figure(&root, figure, DrawOptions::svg())
+}
+
+/// How [`draw::draw_figure`] draws.
+#[derive(Debug, Clone, Copy)]
+struct DrawOptions {
+    mode: TextMode,
+    legends: bool,
+}
+
+impl DrawOptions {
+    fn svg() -> Self {
+        DrawOptions {
+            mode: TextMode::Whole,
+            legends: true,
+        }
+    }
 }
 
 fn check_figure(figure: &Figure) -> Result<(), ChartError> {

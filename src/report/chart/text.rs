@@ -62,12 +62,15 @@ impl TextSpec {
         FontDesc::new(FontFamily::Name(FONT_FAMILY), self.px, FontStyle::Normal)
     }
 
-    /// Advance width and line height in pixels.
+    /// Advance width and line height in pixels (memoised: charts measure the same labels
+    /// many times, and the layout engine is the costliest part of drawing text).
     pub(super) fn size(&self, text: &str) -> (i32, i32) {
-        self.font()
-            .box_size(text)
-            .map(|(w, h)| (w as i32, h as i32))
-            .unwrap_or((0, 0))
+        memo(&SIZES, text, self.px, || {
+            self.font()
+                .box_size(text)
+                .map(|(w, h)| (w as i32, h as i32))
+                .unwrap_or((0, 0))
+        })
     }
 }
 
@@ -146,30 +149,73 @@ pub(super) fn draw_text<DB: DrawingBackend>(
                 .map_err(drawing_error)
         }
         TextMode::PerGlyph => {
-            let font = spec.font();
             // plotters puts the bitmap baseline at half the size below the top; SVG puts it at
             // about 0.61 of the size. Shift bitmaps down so both outputs agree.
             let baseline = (0.11 * spec.px).round() as i32;
-            let mut glyph = [0u8; 4];
-            for (i, c) in text.char_indices() {
-                let c: &str = c.encode_utf8(&mut glyph);
-                let pen = spec.size(&text[..i]).0;
-                let advance = spec.size(c).0;
-                let Some(ink) = ink_width(&font, c) else {
-                    continue; // blank glyph such as a space
-                };
-                let offset = pen + (advance - ink).max(0) / 2;
+            for (glyph, offset) in glyph_offsets(text, spec) {
                 let at = if place.upwards {
                     (x0 + baseline, y0 - offset)
                 } else {
                     (x0 + offset, y0 + baseline)
                 };
-                root.draw(&Text::new(c.to_owned(), at, style.clone()))
+                root.draw(&Text::new(glyph, at, style.clone()))
                     .map_err(drawing_error)?;
             }
             Ok(())
         }
     }
+}
+
+/// The glyphs of `text` that draw ink, each with its offset in pixels from the start of the
+/// line: the pen position from the font's advances (kerning included) plus half the space
+/// the glyph's advance leaves around its ink. Memoised like [`TextSpec::size`].
+fn glyph_offsets(text: &str, spec: TextSpec) -> Vec<(String, i32)> {
+    memo(&GLYPHS, text, spec.px, || {
+        let font = spec.font();
+        let mut glyph = [0u8; 4];
+        let mut out = Vec::new();
+        for (i, c) in text.char_indices() {
+            let c: &str = c.encode_utf8(&mut glyph);
+            let pen = spec.size(&text[..i]).0;
+            let advance = spec.size(c).0;
+            let Some(ink) = ink_width(&font, c) else {
+                continue; // blank glyph such as a space
+            };
+            out.push((c.to_owned(), pen + (advance - ink).max(0) / 2));
+        }
+        out
+    })
+}
+
+type Memo<T> = std::cell::RefCell<std::collections::HashMap<(String, u64), T>>;
+
+thread_local! {
+    static SIZES: Memo<(i32, i32)> = Memo::default();
+    static GLYPHS: Memo<Vec<(String, i32)>> = Memo::default();
+}
+
+/// Entries a memo holds before it starts afresh (a few figures' worth of labels).
+const MEMO_CAPACITY: usize = 4096;
+
+fn memo<T: Clone>(
+    table: &'static std::thread::LocalKey<Memo<T>>,
+    text: &str,
+    px: f64,
+    compute: impl FnOnce() -> T,
+) -> T {
+    let key = (text.to_owned(), px.to_bits());
+    if let Some(hit) = table.with(|m| m.borrow().get(&key).cloned()) {
+        return hit;
+    }
+    let value = compute();
+    table.with(|m| {
+        let mut m = m.borrow_mut();
+        if m.len() >= MEMO_CAPACITY {
+            m.clear();
+        }
+        m.insert(key, value.clone());
+    });
+    value
 }
 
 /// Width in pixels of the glyph's rasterised ink, `None` if it draws nothing.

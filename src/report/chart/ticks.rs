@@ -1,6 +1,7 @@
 //! Tick positions and labels: "nice" steps on linear axes, decades on log axes.
 
 /// "Nice" tick positions and their labels for one axis.
+#[derive(Debug, Clone)]
 pub(super) struct Ticks {
     pub(super) major: Vec<f64>,
     pub(super) minor: Vec<f64>,

@@ -1,0 +1,164 @@
+//! Chart layout against the pixels actually drawn: every figure of every committed report
+//! scene (`reports/*/scene.toml`) is rendered once without its legends (laid out but not
+//! drawn) and each legend box must then hold only background: white or the grey of the grid.
+//! Whatever a legend would cover (a curve, a marker, a marker line, a label, an off-chart
+//! mark) shows in those pixels, whichever code decided the placement.
+
+use std::path::{Path, PathBuf};
+
+use wheelrail::report::chart::{Chart, Figure, LegendPosition, PxBox, Series, layout, render_rgb};
+use wheelrail::{outputs, pipeline, scene::Scene};
+
+/// The lightest ink the charts draw that is not background: the grid is 0xD0 (major) and
+/// 0xEE (minor) grey on white, anything else (data colours, black text and frame, the 0x44
+/// annotations, their anti-aliased edges darker than the grid) differs from grey or is darker.
+const GRID_GREY: u8 = 0xD0;
+
+fn is_background(px: &[u8]) -> bool {
+    px[0] == px[1] && px[1] == px[2] && px[0] >= GRID_GREY
+}
+
+/// Pixels inside `b` (its one-pixel border excluded: anti-aliased edges of the box's
+/// neighbours may touch it) that are not background.
+fn ink_inside(pixels: &[u8], width: u32, b: PxBox) -> Vec<(i32, i32)> {
+    let mut ink = Vec::new();
+    for y in b.top + 1..b.bottom {
+        for x in b.left + 1..b.right {
+            let i = (y as usize * width as usize + x as usize) * 3;
+            if !is_background(&pixels[i..i + 3]) {
+                ink.push((x, y));
+            }
+        }
+    }
+    ink
+}
+
+/// Legends of `figure` that cover ink, as readable messages.
+fn covered_legends(figure: &Figure) -> Vec<String> {
+    let bare = render_rgb(figure, false).unwrap();
+    let mut problems = Vec::new();
+    for (i, panel) in layout(figure).unwrap().iter().enumerate() {
+        if let Some(b) = panel.legend {
+            assert!(b.left >= 0 && b.top >= 0, "{b:?}");
+            assert!(
+                b.right < figure.width as i32 && b.bottom < figure.height as i32,
+                "{b:?}"
+            );
+            let ink = ink_inside(&bare, figure.width, b);
+            if !ink.is_empty() {
+                problems.push(format!(
+                    "panel {i} legend {b:?} covers {} drawn pixels, first {:?}",
+                    ink.len(),
+                    ink[0]
+                ));
+            }
+        }
+    }
+    problems
+}
+
+fn report_scenes() -> Vec<PathBuf> {
+    let reports = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports");
+    let mut scenes: Vec<PathBuf> = std::fs::read_dir(&reports)
+        .unwrap()
+        .map(|e| e.unwrap().path().join("scene.toml"))
+        .filter(|p| p.is_file())
+        .collect();
+    scenes.sort();
+    scenes
+}
+
+#[test]
+fn no_legend_of_a_committed_report_covers_data_or_labels() {
+    let scenes = report_scenes();
+    assert!(scenes.len() >= 7, "{scenes:?}");
+    let mut checked = 0;
+    let mut problems = Vec::new();
+    for path in &scenes {
+        let scene = Scene::load(path).unwrap();
+        let results = pipeline::run(&scene).unwrap();
+        for &fig in &scene.figures {
+            let figure = outputs::figure(fig, &results).unwrap();
+            checked += layout(&figure)
+                .unwrap()
+                .iter()
+                .filter(|p| p.legend.is_some())
+                .count();
+            for p in covered_legends(&figure) {
+                problems.push(format!("{} {}: {p}", path.display(), fig.name()));
+            }
+        }
+    }
+    assert!(checked >= 50, "only {checked} legends checked");
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// The check sees ink: drawn with its legends, a figure's legend boxes are not blank.
+#[test]
+fn the_pixel_check_sees_a_drawn_legend() {
+    let chart = Chart::new("t", "x (mm)", "y (mm)")
+        .series(Series::line("a curve", vec![(0.0, 0.0), (1.0, 1.0)]));
+    let figure = Figure::single(chart);
+    let drawn = render_rgb(&figure, true).unwrap();
+    let b = layout(&figure).unwrap()[0].legend.unwrap();
+    assert!(ink_inside(&drawn, figure.width, b).len() > 100);
+}
+
+/// Data in every part of the plot leaves no free place inside: the legend goes outside the
+/// plot, and still covers nothing. A grid of markers 40 px apart: no legend fits between them.
+#[test]
+fn a_full_plot_puts_the_legend_outside() {
+    let points: Vec<(f64, f64)> = (0..=25)
+        .flat_map(|i| (0..=16).map(move |j| (f64::from(i), f64::from(j))))
+        .collect();
+    for position in [LegendPosition::Auto, LegendPosition::LowerLeft] {
+        let chart = Chart::new("full", "x (mm)", "y (mm)")
+            .series(Series::markers("everywhere", points.clone()))
+            .legend(position);
+        let figure = Figure::single(chart);
+        let panel = &layout(&figure).unwrap()[0];
+        assert!(panel.legend_outside, "{panel:?}");
+        let (b, plot) = (panel.legend.unwrap(), panel.plot);
+        assert!(b.left > plot.right || b.top > plot.bottom, "{panel:?}");
+        assert_eq!(covered_legends(&figure), Vec::<String>::new());
+    }
+}
+
+/// A preferred corner that holds data is not used: the legend moves to a free place.
+#[test]
+fn a_requested_corner_with_data_is_left_free() {
+    let line: Vec<(f64, f64)> = (0..=100).map(|i| (f64::from(i), f64::from(i))).collect();
+    let chart = Chart::new("diagonal", "x (mm)", "y (mm)")
+        .series(Series::line("y = x", line))
+        .legend(LegendPosition::UpperRight);
+    let figure = Figure::single(chart);
+    let panel = &layout(&figure).unwrap()[0];
+    let b = panel.legend.unwrap();
+    assert!(!panel.legend_outside);
+    // The diagonal runs through the upper right corner: the legend sits elsewhere.
+    assert!(
+        b.right < panel.plot.right - 20 || b.top > panel.plot.top + 20,
+        "{panel:?}"
+    );
+    assert_eq!(covered_legends(&figure), Vec::<String>::new());
+}
+
+/// One extreme sample does not set the range: it is left off the chart and counted.
+#[test]
+fn one_extreme_sample_does_not_set_the_range() {
+    let mut points: Vec<(f64, f64)> = (0..200).map(|i| (f64::from(i), f64::from(i % 7))).collect();
+    points[0].1 = -1e6;
+    let figure =
+        Figure::single(Chart::new("t", "x (mm)", "y (mm)").series(Series::line("s", points)));
+    let svg = wheelrail::report::render_svg(&figure).unwrap();
+    let panel = &layout(&figure).unwrap()[0];
+    assert_eq!(panel.off_chart, 1, "{panel:?}");
+    assert!(
+        svg.contains("off the chart: ▼ down to -1e6"),
+        "the legend says how far"
+    );
+    assert!(
+        !svg.contains("-1e6<") && !svg.contains(">-1e6"),
+        "no tick label at -1e6"
+    );
+}
