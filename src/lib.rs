@@ -46,6 +46,7 @@
 
 pub mod app;
 pub mod conicity;
+pub mod cost;
 pub mod error;
 pub mod hertz;
 pub mod outputs;

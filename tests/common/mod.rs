@@ -1,0 +1,155 @@
+//! Helpers shared by `tests/robustness.rs` and `tests/adversarial.rs`: the check that every
+//! non-finite number of a CSV output is flagged.
+
+#![allow(dead_code)] // each test file uses a part
+
+use std::path::Path;
+
+/// Parts of a status that say a row was computed normally: a non-finite number next to
+/// only these is unflagged.
+const SUCCESS: [&str; 5] = [
+    "ok",
+    "converged",
+    "two patches",
+    "two-point contact left",
+    "two-point contact right",
+];
+
+/// Whether a status cell says why its row is not a normal result: some `;`-separated part
+/// of it is not a plain success word.
+fn flags(status: &str) -> bool {
+    status
+        .split(';')
+        .map(str::trim)
+        .any(|part| !part.is_empty() && !SUCCESS.contains(&part))
+}
+
+/// Splits one CSV line on commas outside double quotes (the tables quote text with commas).
+fn cells(line: &str) -> Vec<String> {
+    let mut out = vec![String::new()];
+    let mut quoted = false;
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(String::new()),
+            _ => out.last_mut().unwrap().push(c),
+        }
+    }
+    out
+}
+
+/// The non-finite numbers of `csv` (the text of `file`) that no status explains, as
+/// `file: column, row n (status "...")` lines.
+///
+/// A non-finite cell is flagged when
+/// * its column is documented to hold NaN for "none" (`second_*` columns: "NaN if none" in
+///   the table's header), or
+/// * a status column of its row flags the row: the side's own `left_status`/`right_status`
+///   for `left_*`/`right_*` columns where the table has one, else any column whose name
+///   contains `status` or `flag` (so a flag column added to a table later counts too).
+///
+/// Exempt, each for its stated reason:
+/// * `wheel_profile.csv`, `rail_profile.csv` without a status/flag column: the profile
+///   tables' vertical-face values are being made honest and flagged elsewhere (a separate
+///   change); once they carry a flag column they are checked like every other table.
+/// * `parameters.csv`: one row per parameter, NaN where the parameter is undefined, as its
+///   header and definitions say; it has no status column (adding one changes the golden
+///   table).
+pub fn unflagged_non_finite(file: &str, csv: &str) -> Vec<String> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let Some(header) = lines.next() else {
+        return Vec::new();
+    };
+    let header = cells(header);
+    let status_columns: Vec<usize> = header
+        .iter()
+        .enumerate()
+        .filter(|(_, h)| h.contains("status") || h.contains("flag"))
+        .map(|(i, _)| i)
+        .collect();
+    let name = Path::new(file)
+        .file_name()
+        .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
+    if name == "parameters.csv"
+        || (status_columns.is_empty()
+            && (name == "wheel_profile.csv" || name == "rail_profile.csv"))
+    {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for (n, line) in lines.enumerate() {
+        let row = cells(line);
+        for (i, cell) in row.iter().enumerate() {
+            let Ok(v) = cell.trim().parse::<f64>() else {
+                continue;
+            };
+            if v.is_finite() {
+                continue;
+            }
+            let column = header.get(i).map_or("?", String::as_str);
+            if column.contains("second") {
+                continue;
+            }
+            let side_status: Vec<usize> = ["left_", "right_"]
+                .iter()
+                .filter(|p| column.starts_with(*p))
+                .filter_map(|p| header.iter().position(|h| *h == format!("{p}status")))
+                .collect();
+            let relevant = if side_status.is_empty() {
+                &status_columns
+            } else {
+                &side_status
+            };
+            let statuses: Vec<&str> = relevant
+                .iter()
+                .filter_map(|&j| row.get(j).map(String::as_str))
+                .collect();
+            if !statuses.iter().any(|s| flags(s)) {
+                out.push(format!(
+                    "{file}: {column} = {cell}, data row {} (status {statuses:?})",
+                    n + 1
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// [`unflagged_non_finite`] over every CSV file of a folder.
+pub fn unflagged_in_folder(dir: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return out;
+    };
+    let mut files: Vec<_> = entries.flatten().map(|e| e.path()).collect();
+    files.sort();
+    for f in files {
+        if f.extension().is_some_and(|e| e == "csv") {
+            let text = std::fs::read_to_string(&f).unwrap_or_default();
+            out.extend(unflagged_non_finite(&f.display().to_string(), &text));
+        }
+    }
+    out
+}
+
+/// The `y_ws_mm` column of a CSV text, if it has one.
+pub fn y_ws_column(csv: &str) -> Option<Vec<f64>> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let header = cells(lines.next()?);
+    let i = header.iter().position(|h| h == "y_ws_mm")?;
+    Some(
+        lines
+            .map(|l| {
+                cells(l)
+                    .get(i)
+                    .and_then(|c| c.trim().parse().ok())
+                    .unwrap_or(f64::NAN)
+            })
+            .collect(),
+    )
+}
+
+/// Whether `v` increases strictly (NaN fails).
+pub fn strictly_increasing(v: &[f64]) -> bool {
+    v.windows(2).all(|w| w[0] < w[1])
+}
