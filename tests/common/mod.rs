@@ -49,13 +49,26 @@ fn cells(line: &str) -> Vec<String> {
 ///   contains `status` or `flag` (so a flag column added to a table later counts too).
 ///
 /// Exempt, each for its stated reason:
-/// * `wheel_profile.csv`, `rail_profile.csv` without a status/flag column: the profile
+/// * the profile tables (`wheel_profile.csv`, `rail_profile.csv` and their `left_`/`right_`
+///   forms) without a status/flag column: the profile
 ///   tables' vertical-face values are being made honest and flagged elsewhere (a separate
 ///   change); once they carry a flag column they are checked like every other table.
 /// * `parameters.csv`: one row per parameter, NaN where the parameter is undefined, as its
 ///   header and definitions say; it has no status column (adding one changes the golden
 ///   table).
 pub fn unflagged_non_finite(file: &str, csv: &str) -> Vec<String> {
+    unflagged_with_positions(file, csv, &[])
+}
+
+/// [`unflagged_non_finite`], where a table without a status column takes the status of its
+/// position (`y_ws_mm`) from `positions`: `(y_ws_mm as written, status)` of `rigid.csv`, the
+/// table that says why a position could not be computed (`qe_epsilon.csv` has no status
+/// column of its own; adding one would change a golden table).
+pub fn unflagged_with_positions(
+    file: &str,
+    csv: &str,
+    positions: &[(String, String)],
+) -> Vec<String> {
     let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
     let Some(header) = lines.next() else {
         return Vec::new();
@@ -72,13 +85,22 @@ pub fn unflagged_non_finite(file: &str, csv: &str) -> Vec<String> {
         .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
     if name == "parameters.csv"
         || (status_columns.is_empty()
-            && (name == "wheel_profile.csv" || name == "rail_profile.csv"))
+            && (name.ends_with("wheel_profile.csv") || name.ends_with("rail_profile.csv")))
     {
         return Vec::new();
     }
+    let y_column = header.iter().position(|h| h == "y_ws_mm");
     let mut out = Vec::new();
     for (n, line) in lines.enumerate() {
         let row = cells(line);
+        let position_status: Vec<&str> = match (status_columns.is_empty(), y_column) {
+            (true, Some(i)) => positions
+                .iter()
+                .filter(|(y, _)| Some(y) == row.get(i))
+                .map(|(_, s)| s.as_str())
+                .collect(),
+            _ => Vec::new(),
+        };
         for (i, cell) in row.iter().enumerate() {
             let Ok(v) = cell.trim().parse::<f64>() else {
                 continue;
@@ -100,10 +122,11 @@ pub fn unflagged_non_finite(file: &str, csv: &str) -> Vec<String> {
             } else {
                 &side_status
             };
-            let statuses: Vec<&str> = relevant
+            let mut statuses: Vec<&str> = relevant
                 .iter()
                 .filter_map(|&j| row.get(j).map(String::as_str))
                 .collect();
+            statuses.extend(&position_status);
             if !statuses.iter().any(|s| flags(s)) {
                 out.push(format!(
                     "{file}: {column} = {cell}, data row {} (status {statuses:?})",
@@ -123,13 +146,43 @@ pub fn unflagged_in_folder(dir: &Path) -> Vec<String> {
     };
     let mut files: Vec<_> = entries.flatten().map(|e| e.path()).collect();
     files.sort();
+    let positions = std::fs::read_to_string(dir.join("rigid.csv"))
+        .map(|t| position_statuses(&t))
+        .unwrap_or_default();
     for f in files {
         if f.extension().is_some_and(|e| e == "csv") {
             let text = std::fs::read_to_string(&f).unwrap_or_default();
-            out.extend(unflagged_non_finite(&f.display().to_string(), &text));
+            out.extend(unflagged_with_positions(
+                &f.display().to_string(),
+                &text,
+                &positions,
+            ));
         }
     }
     out
+}
+
+/// `(y_ws_mm, status)` of every row of a table with both columns (`rigid.csv`).
+pub fn position_statuses(csv: &str) -> Vec<(String, String)> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let Some(header) = lines.next().map(cells) else {
+        return Vec::new();
+    };
+    let (Some(y), Some(s)) = (
+        header.iter().position(|h| h == "y_ws_mm"),
+        header.iter().position(|h| h == "status"),
+    ) else {
+        return Vec::new();
+    };
+    lines
+        .map(|l| {
+            let c = cells(l);
+            (
+                c.get(y).cloned().unwrap_or_default(),
+                c.get(s).cloned().unwrap_or_default(),
+            )
+        })
+        .collect()
 }
 
 /// The `y_ws_mm` column of a CSV text, if it has one.
