@@ -13,7 +13,7 @@
 //!
 //! # Budget
 //!
-//! `WHEELRAIL_ADVERSARIAL_CASES` scenes (default 40, about 30 s in `cargo test --release
+//! `WHEELRAIL_ADVERSARIAL_CASES` scenes (default 150, about 15 s in `cargo test --release
 //! --test adversarial` on 2 cores). CI fixes `PROPTEST_RNG_SEED`. For a long run by hand,
 //! with one line per scene (exit code, seconds, estimated work) appended to a log:
 //!
@@ -34,7 +34,7 @@ fn cases() -> u32 {
     std::env::var("WHEELRAIL_ADVERSARIAL_CASES")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(40)
+        .unwrap_or(150)
 }
 
 fn root() -> &'static Path {
@@ -191,10 +191,10 @@ fn profile(kind: &[&str], x: u32) -> BoxedStrategy<Option<String>> {
     .boxed()
 }
 
-/// Names of good wheel profiles (built-in, `.prw`, `.whl`, EN 15302 `S-*`, `s1002.csv`).
-const WHEELS: [&str; 6] = ["S1002", ".prw", ".whl", "S-UIC", "s1002.csv", "s1002"];
-/// Names of good rail profiles.
-const RAILS: [&str; 6] = ["UIC60E1", ".prr", ".ban", ".BAN", "R-UIC", "uic60e1.csv"];
+/// Names of good wheel profiles (built-in, `.prw`, `.whl`, EN 15302 `R-*` (Rad), `s1002.csv`).
+const WHEELS: [&str; 6] = ["S1002", ".prw", ".whl", "R-UIC", "s1002.csv", "s1002"];
+/// Names of good rail profiles (EN 15302 `S-*`: Schiene).
+const RAILS: [&str; 6] = ["UIC60E1", ".prr", ".ban", ".BAN", "S-UIC", "uic60e1.csv"];
 
 fn inclination(x: u32) -> BoxedStrategy<Option<String>> {
     if x == 0 {
