@@ -13,7 +13,7 @@
 //!
 //! # Budget
 //!
-//! `WHEELRAIL_ADVERSARIAL_CASES` scenes (default 150, about 15 s in `cargo test --release
+//! `WHEELRAIL_ADVERSARIAL_CASES` scenes (default 150, 4 to 11 s in `cargo test --release
 //! --test adversarial` on 2 cores). CI fixes `PROPTEST_RNG_SEED`. For a long run by hand,
 //! with one line per scene (exit code, seconds, estimated work) appended to a log:
 //!
