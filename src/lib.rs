@@ -47,6 +47,7 @@
 #[cfg(feature = "cli")]
 pub mod app;
 pub mod conicity;
+pub mod cost;
 pub mod error;
 pub mod hertz;
 #[cfg(feature = "cli")]

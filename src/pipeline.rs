@@ -194,6 +194,9 @@ impl Figure {
 pub struct RunRecord {
     /// The stages run, in order, with their duration in seconds.
     pub stages: Vec<(Stage, f64)>,
+    /// Whether each stage's start and end are printed to stderr as it runs (a long run's
+    /// progress, `wheelrail report --allow-long`).
+    pub progress: bool,
 }
 
 impl RunRecord {
@@ -203,9 +206,16 @@ impl RunRecord {
     }
 
     fn time<T>(&mut self, stage: Stage, f: impl FnOnce() -> T) -> T {
+        if self.progress {
+            eprintln!("{}: running", stage.name());
+        }
         let start = Instant::now();
         let out = f();
-        self.stages.push((stage, start.elapsed().as_secs_f64()));
+        let seconds = start.elapsed().as_secs_f64();
+        if self.progress {
+            eprintln!("{}: done in {seconds:.1} s", stage.name());
+        }
+        self.stages.push((stage, seconds));
         out
     }
 }
@@ -264,8 +274,19 @@ pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
 /// # Errors
 /// [`crate::Error`] when a profile cannot be read or placed.
 pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
+    run_with_progress(scene, false)
+}
+
+/// [`run`], printing each stage's start and end to stderr when `progress` is set.
+///
+/// # Errors
+/// As [`run`].
+pub fn run_with_progress(scene: &Scene, progress: bool) -> Result<Results, crate::Error> {
     let stages = needed_stages(scene);
-    let mut record = RunRecord::default();
+    let mut record = RunRecord {
+        stages: Vec::new(),
+        progress,
+    };
     let placement = record.time(Stage::Profiles, || place(scene))?;
     let mut results = Results {
         placement,

@@ -128,6 +128,25 @@ pub struct Patch {
     pub gap_above_min: f64,
 }
 
+impl Patch {
+    /// Whether every number of the patch is finite.
+    pub fn is_finite(&self) -> bool {
+        [
+            self.s,
+            self.y,
+            self.z,
+            self.r,
+            self.gamma,
+            self.rail_tan_gamma,
+            self.wheel_curvature,
+            self.rail_curvature,
+            self.weight_share,
+        ]
+        .iter()
+        .all(|v| v.is_finite())
+    }
+}
+
 /// Quasi-elastic contact of one wheel at one position: its patches, heaviest first.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct SideResult {
@@ -302,7 +321,7 @@ fn side_average(
     };
     // Gaps are measured from the rigid minimum of this wheel: one reference for every
     // region and patch, so that their weights compare.
-    let d_min = at_rigid.g + axle_height;
+    let mut d_min = at_rigid.g + axle_height;
     // The distance over which the gap rises by eps: sqrt(eps / d'') at a smooth minimum,
     // eps / |d'| at a minimum on an end of the surfaces (the rail's running surface ends
     // where it turns steep), where the gap rises linearly and the weight decays within
@@ -322,55 +341,74 @@ fn side_average(
     include_rigid_point(&mut work.regions, s_rigid, domain);
     let mut patches: Vec<Average<FIELDS>> = Vec::new();
     let regions = std::mem::take(&mut work.regions);
-    for &(lo, hi) in &regions {
-        match settings.quadrature {
-            Quadrature::GaussLegendre { panel_widths } => {
-                gauss_region(
-                    side,
-                    &pose,
-                    axle_height,
-                    d_min,
-                    width,
-                    settings,
-                    panel_widths,
-                    (lo, hi),
-                    work,
-                    &mut patches,
-                );
-            }
-            Quadrature::Trapezoid { max_step_mm } => {
-                // The step is the largest step halved until it resolves the width, and the
-                // nodes are its multiples: a fixed grid, the same on both sides of a
-                // symmetric wheelset.
-                let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
-                let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
-                let step = max_step_mm / halvings.exp2();
-                work.nodes.clear();
-                work.gaps.clear();
-                work.fields.clear();
-                let k_lo = (lo / step).floor() as i64;
-                let k_hi = (hi / step).ceil() as i64;
-                for k in k_lo..=k_hi {
-                    let s = k as f64 * step;
-                    // The grid is rounded outwards; beyond its domain the profile is clamped
-                    // and a node there would be a phantom point of the wheel.
-                    if !(domain.0..=domain.1).contains(&s) {
-                        continue;
-                    }
-                    let Some(p) = side.at(s, &pose) else { continue };
-                    work.nodes.push(s);
-                    work.gaps.push(p.g + axle_height - d_min);
-                    work.fields.push(fields_of(side, &p));
+    // A rigid point that is not the minimum (the paper's solver stops at residuals of
+    // microns) leaves nodes below the reference; with a small eps their weights
+    // exp(-gap/eps) overflow. Then the pass is repeated from the lowest node (the regions,
+    // found from the rigid reference, hold every node below the cut-off of the lower one).
+    for _reference in 0..2 {
+        patches.clear();
+        for &(lo, hi) in &regions {
+            match settings.quadrature {
+                Quadrature::GaussLegendre { panel_widths } => {
+                    gauss_region(
+                        side,
+                        &pose,
+                        axle_height,
+                        d_min,
+                        width,
+                        settings,
+                        panel_widths,
+                        (lo, hi),
+                        work,
+                        &mut patches,
+                    );
                 }
-                patches.extend(average(
-                    &work.nodes,
-                    &work.gaps,
-                    &work.fields,
-                    eps,
-                    settings.cutoff,
-                ));
+                Quadrature::Trapezoid { max_step_mm } => {
+                    // The step is the largest step halved until it resolves the width, and the
+                    // nodes are its multiples: a fixed grid, the same on both sides of a
+                    // symmetric wheelset.
+                    let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
+                    let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
+                    let step = max_step_mm / halvings.exp2();
+                    // Above about 5e307 mm the halvings overflow 2^1023 and the step would be 0
+                    // (an endless grid); the scene refuses such steps, library callers get the
+                    // wanted step itself.
+                    let step = if step.is_normal() { step } else { wanted };
+                    work.nodes.clear();
+                    work.gaps.clear();
+                    work.fields.clear();
+                    let k_lo = (lo / step).floor() as i64;
+                    let k_hi = (hi / step).ceil() as i64;
+                    for k in k_lo..=k_hi {
+                        let s = k as f64 * step;
+                        // The grid is rounded outwards; beyond its domain the profile is clamped
+                        // and a node there would be a phantom point of the wheel.
+                        if !(domain.0..=domain.1).contains(&s) {
+                            continue;
+                        }
+                        let Some(p) = side.at(s, &pose) else { continue };
+                        work.nodes.push(s);
+                        work.gaps.push(p.g + axle_height - d_min);
+                        work.fields.push(fields_of(side, &p));
+                    }
+                    patches.extend(average(
+                        &work.nodes,
+                        &work.gaps,
+                        &work.fields,
+                        eps,
+                        settings.cutoff,
+                    ));
+                }
             }
         }
+        let lowest = patches
+            .iter()
+            .map(|a| a.min_gap)
+            .fold(f64::INFINITY, f64::min);
+        if patches.iter().all(Average::is_finite) || lowest >= 0.0 {
+            break;
+        }
+        d_min += lowest;
     }
     work.regions = regions;
     if patches.iter().all(|a| a.weight <= 0.0) {
@@ -671,6 +709,14 @@ pub struct Average<const N: usize> {
     pub weight: f64,
     /// Smallest gap of the patch (same reference as the gaps given).
     pub min_gap: f64,
+}
+
+impl<const N: usize> Average<N> {
+    /// Whether the weight and every mean are finite (weights overflow when gaps lie far
+    /// below the reference they are measured from).
+    pub fn is_finite(&self) -> bool {
+        self.weight.is_finite() && self.mean.iter().all(|v| v.is_finite())
+    }
 }
 
 /// Weighted averages of `fields` over `nodes` (increasing, possibly uneven) with weights

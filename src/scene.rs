@@ -18,6 +18,42 @@ pub const MAX_SWEEP_POSITIONS: usize = 100_001;
 
 /// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
 pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
+/// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
+/// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
+pub const MIN_WHEEL_LOAD_N: f64 = 1.0;
+/// The nominal wheel radii accepted (mm): from small trolley wheels to the largest
+/// locomotive wheels, with margin.
+pub const NOMINAL_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
+/// The gauges accepted (mm): every gauge in use, from 381 mm minimum-gauge railways to
+/// 1676 mm broad gauge, with margin. The wheelset is placed from it; 1e300 mm is not a track.
+pub const GAUGE_RANGE_MM: (f64, f64) = (300.0, 2000.0);
+/// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
+/// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
+pub const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
+/// Poisson's ratios accepted, `[0, 0.5)`: the mathematical range is `(-1, 0.5)`, but no
+/// wheel or rail material has a negative ratio (steels 0.27 to 0.30, polymers up to 0.45;
+/// negative ratios belong to auxetic foams), and near -1 the combined modulus `E/(1-ν²)`
+/// grows without bound. 0.5 (incompressible) is excluded by Hertz's formula itself.
+pub const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
+/// The longest filter wavelength of the profile spline (mm): longer than a wheel's tread
+/// and flange together, the filter flattens the profile itself.
+pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
+/// The smallest sweep step (mm): positions are rounded to 1e-9 mm (clean printed values),
+/// so a step must be far above that rounding for positions to stay distinct and evenly
+/// spaced; 1e-6 mm (a nanometre) is a thousand roundings and far below any physical use.
+pub const MIN_SWEEP_STEP_MM: f64 = 1e-6;
+/// The cut-off of the quasi-elastic weight, in units of eps: at least 1 (the weight is
+/// cut within one width: the average would no longer be the paper's) and at most 700
+/// (`exp(-700)` is near the smallest double; a larger cut-off cuts nothing and only widens
+/// the regions integrated).
+pub const CUTOFF_RANGE: (f64, f64) = (1.0, 700.0);
+/// The largest starting step of the trapezoid quadrature (mm): the step is halved until it
+/// resolves the weight, so a longer start only adds halvings (and above about 5e307 mm the
+/// number of halvings overflows). 10 mm is wider than any low region of a contact.
+pub const MAX_TRAPEZOID_STEP_MM: f64 = 10.0;
+/// The largest number of values of eps in the sensitivity figure: each is a quasi-elastic
+/// pass over the whole sweep.
+pub const MAX_EPSILON_SENSITIVITY: usize = 16;
 /// The smallest step of the trapezoid quadrature (mm): its nodes cover the low regions
 /// (millimetres wide), so 1e-6 mm would take half a minute per position.
 pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
@@ -474,29 +510,25 @@ impl Scene {
             profile_ref(raw.rail.right_profile.as_deref().unwrap_or(rail)),
         ];
 
-        let r0 = raw.wheel.nominal_radius_mm;
-        let nominal_radius_mm = [
-            positive(
-                "wheel.left_nominal_radius_mm",
-                raw.wheel.left_nominal_radius_mm.or(r0),
-                460.0,
-            )?,
-            positive(
-                "wheel.right_nominal_radius_mm",
-                raw.wheel.right_nominal_radius_mm.or(r0),
-                460.0,
-            )?,
-        ];
-        for (key, r) in [
-            ("wheel.nominal_radius_mm", nominal_radius_mm[0]),
-            ("wheel.nominal_radius_mm", nominal_radius_mm[1]),
-        ] {
-            if !(100.0..=1000.0).contains(&r) {
-                return Err(invalid(
-                    key,
-                    format!("{r} mm is not a railway wheel radius (expected 100 to 1000 mm)"),
-                ));
-            }
+        // Errors name the key the user wrote: the per-side key, else the shared one.
+        let w = &raw.wheel;
+        let mut nominal_radius_mm = [0.0; 2];
+        for (r, own_key, own) in nominal_radius_mm
+            .iter_mut()
+            .zip([
+                ("wheel.left_nominal_radius_mm", w.left_nominal_radius_mm),
+                ("wheel.right_nominal_radius_mm", w.right_nominal_radius_mm),
+            ])
+            .map(|(r, (k, v))| (r, k, v))
+        {
+            let (key, v) = written(own_key, own, "wheel.nominal_radius_mm", w.nominal_radius_mm);
+            *r = within(
+                v.unwrap_or(460.0),
+                NOMINAL_RADIUS_RANGE_MM,
+                "mm",
+                "not a railway wheel radius",
+            )
+            .map_err(|m| invalid(key, m))?;
         }
 
         let inclination = Inclination::parse(raw.rail.inclination.as_deref().unwrap_or("1:40"))
@@ -510,11 +542,13 @@ impl Scene {
         .map_err(|m| invalid("rail.profile_inclination", m))?;
         let smoothing = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
             let v = v.unwrap_or(DEFAULT_SMOOTHING_WAVELENGTH_MM);
-            if v.is_finite() && v >= 0.0 {
-                Ok(v)
-            } else {
-                Err(invalid(key, format!("{v} must be a finite number >= 0")))
-            }
+            within(
+                v,
+                (0.0, MAX_SMOOTHING_WAVELENGTH_MM),
+                "mm",
+                "not a filter wavelength for a profile (longer ones flatten the profile itself)",
+            )
+            .map_err(|m| invalid(key, m))
         };
         let smoothing_wavelength_mm = [
             smoothing(
@@ -527,7 +561,13 @@ impl Scene {
             )?,
         ];
 
-        let gauge_mm = positive("track.gauge_mm", raw.track.gauge_mm, 1435.0)?;
+        let gauge_mm = within(
+            raw.track.gauge_mm.unwrap_or(1435.0),
+            GAUGE_RANGE_MM,
+            "mm",
+            "not a railway gauge",
+        )
+        .map_err(|m| invalid("track.gauge_mm", m))?;
         let gauge_point_depth_mm = positive(
             "track.gauge_point_depth_mm",
             raw.track.gauge_point_depth_mm,
@@ -561,30 +601,41 @@ impl Scene {
             flange_back_mm,
         };
 
-        let wheel_load_kn = positive("load.wheel_load_kN", raw.load.wheel_load_kN, 70.0)?;
-        // Bounded in the unit the user wrote, so the message repeats their number.
-        if wheel_load_kn > MAX_WHEEL_LOAD_N / 1000.0 {
-            return Err(invalid(
-                "load.wheel_load_kN",
-                format!(
-                    "{} kN is not a wheel load (expected up to {} kN)",
-                    Number(wheel_load_kn),
-                    MAX_WHEEL_LOAD_N / 1000.0
-                ),
-            ));
-        }
-        let wheel_load_n = 1000.0 * wheel_load_kn;
+        let wheel_load_n = 1000.0
+            * within(
+                raw.load.wheel_load_kN.unwrap_or(70.0),
+                (MIN_WHEEL_LOAD_N / 1000.0, MAX_WHEEL_LOAD_N / 1000.0),
+                "kN",
+                "not a wheel load",
+            )
+            .map_err(|m| invalid("load.wheel_load_kN", m))?;
 
         let m = &raw.material;
-        let young = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
-            Ok(1000.0 * positive(key, v.or(m.young_GPa), 210.0)?)
+        // Per-body keys override the shared ones; errors name the key that was written.
+        let young = |own_key: &'static str, own: Option<f64>| -> Result<f64, SceneError> {
+            let (key, v) = written(own_key, own, "material.young_GPa", m.young_GPa);
+            let e = within(
+                v.unwrap_or(210.0),
+                YOUNG_RANGE_GPA,
+                "GPa",
+                "not the Young's modulus of a wheel or rail material",
+            )
+            .map_err(|msg| invalid(key, msg))?;
+            Ok(1000.0 * e)
         };
-        let poisson = |key: &'static str, v: Option<f64>| -> Result<f64, SceneError> {
-            let nu = v.or(m.poisson).unwrap_or(0.3);
-            if nu.is_finite() && nu > -1.0 && nu < 0.5 {
+        let poisson = |own_key: &'static str, own: Option<f64>| -> Result<f64, SceneError> {
+            let (key, v) = written(own_key, own, "material.poisson", m.poisson);
+            let nu = v.unwrap_or(0.3);
+            if nu.is_finite() && nu >= POISSON_RANGE.0 && nu < POISSON_RANGE.1 {
                 Ok(nu)
             } else {
-                Err(invalid(key, format!("{nu} must lie in (-1, 0.5)")))
+                Err(invalid(
+                    key,
+                    format!(
+                        "{nu} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
+                        POISSON_RANGE.0, POISSON_RANGE.1
+                    ),
+                ))
             }
         };
         let material = |young_key: &'static str, nu_key: &'static str, e: f64, nu: f64| {
@@ -683,11 +734,13 @@ impl Scene {
                 qe.epsilon_mm,
                 crate::quasi_elastic::DEFAULT_EPSILON_MM,
             )?,
-            cutoff: positive(
-                "quasi_elastic.cutoff",
-                qe.cutoff,
-                crate::quasi_elastic::DEFAULT_CUTOFF,
-            )?,
+            cutoff: within(
+                qe.cutoff.unwrap_or(crate::quasi_elastic::DEFAULT_CUTOFF),
+                CUTOFF_RANGE,
+                "eps",
+                "not a useful cut-off of the weight exp(-gap/eps) (exp(-700) is near the smallest double)",
+            )
+            .map_err(|m| invalid("quasi_elastic.cutoff", m))?,
             quadrature: quadrature(qe).map_err(|(key, message)| invalid(key, message))?,
         };
         if quasi_elastic.epsilon_mm < MIN_EPSILON_MM {
@@ -712,15 +765,30 @@ impl Scene {
             .sensitivity_epsilon_mm
             .clone()
             .unwrap_or_else(|| DEFAULT_EPSILON_SENSITIVITY_MM.to_vec());
+        let key = "quasi_elastic.sensitivity_epsilon_mm";
         if epsilon_sensitivity_mm.is_empty()
+            || epsilon_sensitivity_mm.len() > MAX_EPSILON_SENSITIVITY
             || epsilon_sensitivity_mm
                 .iter()
                 .any(|e| !(e.is_finite() && *e >= MIN_EPSILON_MM && *e <= 1.0))
         {
             return Err(invalid(
-                "quasi_elastic.sensitivity_epsilon_mm",
-                format!("expected a non-empty list of values from {MIN_EPSILON_MM} to 1 mm"),
+                key,
+                format!(
+                    "expected 1 to {MAX_EPSILON_SENSITIVITY} values from {MIN_EPSILON_MM} to 1 mm"
+                ),
             ));
+        }
+        for (i, e) in epsilon_sensitivity_mm.iter().enumerate() {
+            if epsilon_sensitivity_mm[..i]
+                .iter()
+                .any(|f| f.to_bits() == e.to_bits())
+            {
+                return Err(invalid(
+                    key,
+                    format!("{e} mm is listed twice: each value is one curve of the figure"),
+                ));
+            }
         }
         let h = &raw.hertz;
         let hertz = crate::hertz::sweep::Settings {
@@ -899,6 +967,15 @@ fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)
                     ),
                 ));
             }
+            if max_step_mm > MAX_TRAPEZOID_STEP_MM {
+                return Err((
+                    key,
+                    format!(
+                        "{} mm is above {MAX_TRAPEZOID_STEP_MM} mm: the step is halved until it resolves the weight, a longer start only adds halvings",
+                        Number(max_step_mm)
+                    ),
+                ));
+            }
             Ok(Quadrature::Trapezoid { max_step_mm })
         }
         (Some(other), _, _) => Err((
@@ -961,6 +1038,34 @@ fn conicity_settings(
     })
 }
 
+/// The key a value was written under: `own` (a per-side or per-body key) when given, else
+/// the shared key when given; the value, if any.
+fn written(
+    own_key: &'static str,
+    own: Option<f64>,
+    shared_key: &'static str,
+    shared: Option<f64>,
+) -> (&'static str, Option<f64>) {
+    match (own, shared) {
+        (Some(v), _) => (own_key, Some(v)),
+        (None, Some(v)) => (shared_key, Some(v)),
+        (None, None) => (own_key, None),
+    }
+}
+
+/// `v` if it is finite and within `[lo, hi]`, else a message saying what it is not
+/// (`what`) and the accepted range in `unit`.
+fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, String> {
+    if v.is_finite() && v >= lo && v <= hi {
+        Ok(v)
+    } else {
+        Err(format!(
+            "{} {unit} is {what}; expected {lo} to {hi} {unit}",
+            Number(v)
+        ))
+    }
+}
+
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
 fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
     let from = raw.from_mm.unwrap_or(-15.0);
@@ -975,8 +1080,14 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
             return Err((key, format!("{v} must be a finite number")));
         }
     }
-    if step <= 0.0 {
-        return Err(("sweep.step_mm", format!("{step} must be positive")));
+    if step < MIN_SWEEP_STEP_MM {
+        return Err((
+            "sweep.step_mm",
+            format!(
+                "{} mm is below {MIN_SWEEP_STEP_MM:e} mm: positions are rounded to 1e-9 mm and would repeat or be unevenly spaced",
+                Number(step)
+            ),
+        ));
     }
     if to < from {
         return Err((
@@ -1006,9 +1117,19 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
     let n = n as usize;
     // Positions computed as from + i * step (not accumulated) so that 0.0 is hit exactly
     // when it lies on the grid, and rounded to 1e-9 mm so printed values stay clean.
-    Ok((0..=n)
+    let positions: Vec<f64> = (0..=n)
         .map(|i| ((from + i as f64 * step) * 1e9).round() / 1e9)
-        .collect())
+        .collect();
+    // MIN_SWEEP_STEP_MM guarantees this; checked because every stage relies on it.
+    if positions.windows(2).any(|p| p[1] <= p[0]) {
+        return Err((
+            "sweep.step_mm",
+            format!(
+                "{step} mm gives positions that are not strictly increasing after rounding to 1e-9 mm"
+            ),
+        ));
+    }
+    Ok(positions)
 }
 
 #[cfg(test)]
@@ -1032,7 +1153,7 @@ mod tests {
     fn errors_name_the_key() {
         let cases = [
             ("[track]\ngauge_mm = -1435.0", "track.gauge_mm"),
-            ("[material]\npoisson = 0.5", "material.wheel_poisson"),
+            ("[material]\npoisson = 0.5", "material.poisson"),
             ("[sweep]\nstep_mm = 0.0", "sweep.step_mm"),
             ("[sweep]\nfrom_mm = 5.0\nto_mm = 1.0", "sweep.to_mm"),
             (
@@ -1057,6 +1178,42 @@ mod tests {
             (
                 "[quasi_elastic]\nmax_step_mm = 0.05",
                 "quasi_elastic.max_step_mm",
+            ),
+            // Bounds of issue 16, each naming the key as written.
+            ("[material]\npoisson = -0.967", "material.poisson"),
+            ("[material]\nrail_poisson = -0.1", "material.rail_poisson"),
+            ("[material]\nyoung_GPa = 1e300", "material.young_GPa"),
+            (
+                "[material]\nwheel_young_GPa = 1e-300",
+                "material.wheel_young_GPa",
+            ),
+            (
+                "[wheel]\nnominal_radius_mm = 1e300",
+                "wheel.nominal_radius_mm",
+            ),
+            (
+                "[wheel]\nright_nominal_radius_mm = 50.0",
+                "wheel.right_nominal_radius_mm",
+            ),
+            ("[track]\ngauge_mm = 1e300", "track.gauge_mm"),
+            ("[load]\nwheel_load_kN = 5e-324", "load.wheel_load_kN"),
+            (
+                "[wheel]\nsmoothing_wavelength_mm = 1e300",
+                "wheel.smoothing_wavelength_mm",
+            ),
+            ("[quasi_elastic]\ncutoff = 1.2e57", "quasi_elastic.cutoff"),
+            ("[quasi_elastic]\ncutoff = 0.5", "quasi_elastic.cutoff"),
+            (
+                "[quasi_elastic]\nquadrature = \"trapezoid\"\nmax_step_mm = 1.7976931348623157e308",
+                "quasi_elastic.max_step_mm",
+            ),
+            (
+                "[quasi_elastic]\nsensitivity_epsilon_mm = [0.01, 0.01]",
+                "quasi_elastic.sensitivity_epsilon_mm",
+            ),
+            (
+                "[sweep]\nfrom_mm = 0.0\nto_mm = 1e-9\nstep_mm = 1e-10",
+                "sweep.step_mm",
             ),
         ];
         for (text, key) in cases {

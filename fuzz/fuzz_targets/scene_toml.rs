@@ -3,7 +3,11 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use wheelrail::scene::Scene;
+use wheelrail::quasi_elastic::Quadrature;
+use wheelrail::scene::{
+    CUTOFF_RANGE, MAX_PANEL_WIDTHS, MAX_TRAPEZOID_STEP_MM, MIN_PANEL_WIDTHS, MIN_TRAPEZOID_STEP_MM,
+    Scene,
+};
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
@@ -25,10 +29,24 @@ fuzz_target!(|data: &[u8]| {
             .all(|r| (100.0..=1000.0).contains(r))
     );
     assert!(scene.wheel_load_n.is_finite() && scene.wheel_load_n > 0.0);
+    // The sensitivity values are distinct (each is a column of qe_epsilon.csv).
+    let eps = &scene.epsilon_sensitivity_mm;
+    assert!(
+        eps.iter()
+            .enumerate()
+            .all(|(i, e)| eps[..i].iter().all(|f| f.to_bits() != e.to_bits()))
+    );
     let qe = scene.quasi_elastic;
     assert!(qe.epsilon_mm > 0.0 && qe.epsilon_mm <= 1.0);
-    assert!(qe.cutoff.is_finite() && qe.cutoff > 0.0);
-    assert!(qe.max_step_mm.is_finite() && qe.max_step_mm > 0.0);
+    assert!((CUTOFF_RANGE.0..=CUTOFF_RANGE.1).contains(&qe.cutoff));
+    match qe.quadrature {
+        Quadrature::GaussLegendre { panel_widths } => {
+            assert!((MIN_PANEL_WIDTHS..=MAX_PANEL_WIDTHS).contains(&panel_widths));
+        }
+        Quadrature::Trapezoid { max_step_mm } => {
+            assert!((MIN_TRAPEZOID_STEP_MM..=MAX_TRAPEZOID_STEP_MM).contains(&max_step_mm));
+        }
+    }
     let layout = &scene.layout;
     assert!(layout.gauge_mm.is_finite() && layout.flange_back_mm < layout.gauge_mm);
     assert!((0.0..=0.2).contains(&layout.inclination.0));

@@ -53,6 +53,10 @@ pub enum Command {
         /// Print the stages run and their times to stderr.
         #[arg(long)]
         timings: bool,
+        /// Run scenes whose estimated work exceeds the budget (`cost::WORK_BUDGET`),
+        /// printing each stage as it runs.
+        #[arg(long)]
+        allow_long: bool,
     },
     /// Compare a scene's tables with golden files (exit 0 within tolerance, 1 otherwise).
     Check {
@@ -131,22 +135,23 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
                     "{PAPER_SCENE} not found: run `wheelrail` from the root of the wheelrail checkout, or `wheelrail report SCENE`"
                 )));
             }
-            report(scene, None, false)
+            report(scene, None, false, false)
         }
         Some(Command::Report {
             scenes,
             out,
             timings,
+            allow_long,
         }) => {
             if scenes.len() == 1 {
-                return report(&scenes[0], out.as_deref(), timings);
+                return report(&scenes[0], out.as_deref(), timings, allow_long);
             }
             if out.is_some() {
                 return Err(Error::Other(
                     "--out takes one scene; several scenes write into their own folders".into(),
                 ));
             }
-            report_batch(&scenes, timings)
+            report_batch(&scenes, timings, allow_long)
         }
         Some(Command::Check {
             scene,
@@ -181,7 +186,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
 /// Runs independent scenes in parallel (rayon, one per core). A single sweep stays
 /// sequential: each position starts from the previous one's solution (continuation).
 /// Every scene is reported; the first error is returned after all have run.
-fn report_batch(scenes: &[PathBuf], timings: bool) -> Result<ExitCode, Error> {
+fn report_batch(scenes: &[PathBuf], timings: bool, allow_long: bool) -> Result<ExitCode, Error> {
     use rayon::prelude::*;
     // Each scene writes its own folder: two scenes of one folder would overwrite each other.
     let folder = |s: &PathBuf| s.parent().map(Path::to_path_buf).unwrap_or_default();
@@ -196,7 +201,7 @@ fn report_batch(scenes: &[PathBuf], timings: bool) -> Result<ExitCode, Error> {
     }
     let results: Vec<Result<ExitCode, Error>> = scenes
         .par_iter()
-        .map(|s| report(s, None, timings))
+        .map(|s| report(s, None, timings, allow_long))
         .collect();
     let mut first_error = None;
     for (scene, r) in scenes.iter().zip(results) {
@@ -211,9 +216,15 @@ fn report_batch(scenes: &[PathBuf], timings: bool) -> Result<ExitCode, Error> {
     }
 }
 
-fn report(scene_path: &Path, out: Option<&Path>, timings: bool) -> Result<ExitCode, Error> {
+fn report(
+    scene_path: &Path,
+    out: Option<&Path>,
+    timings: bool,
+    allow_long: bool,
+) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
-    let results = pipeline::run(&scene)?;
+    let progress = within_budget(&scene, allow_long)?;
+    let results = pipeline::run_with_progress(&scene, progress)?;
     if timings {
         for (stage, seconds) in &results.record.stages {
             eprintln!("{:<20} {:>10.3} ms", stage.name(), 1e3 * seconds);
@@ -345,8 +356,31 @@ fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<Exi
     Ok(ExitCode::SUCCESS)
 }
 
+/// Refuses a scene whose estimated work exceeds [`crate::cost::WORK_BUDGET`] unless
+/// `allow_long`; returns whether to show progress (a long run that was allowed).
+fn within_budget(scene: &Scene, allow_long: bool) -> Result<bool, Error> {
+    let estimate = crate::cost::estimate(scene)?;
+    if estimate.within_budget() {
+        return Ok(false);
+    }
+    if !allow_long {
+        return Err(Error::Other(format!(
+            "{}: {}: refused; coarsen those keys, or run with --allow-long",
+            scene.path,
+            estimate.describe()
+        )));
+    }
+    eprintln!(
+        "{}: {}: running (--allow-long)",
+        scene.path,
+        estimate.describe()
+    );
+    Ok(true)
+}
+
 fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
+    within_budget(&scene, false)?;
     let results = pipeline::run(&scene)?;
     let produced: Vec<(String, String)> = outputs::tables(&scene, &results)?
         .into_iter()

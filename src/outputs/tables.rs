@@ -117,6 +117,9 @@ fn col(rows: &[[f64; 4]], k: usize) -> Vec<f64> {
     rows.iter().map(|r| r[k]).collect()
 }
 
+/// The status of a converged position of a sweep whose centred wheelset has no contact.
+const NO_CENTRED_CONTACT: &str = "; no contact at y_ws = 0: z_ws, epsilon, sigma undefined";
+
 /// Rigid contact over the sweep (`rigid.csv`).
 ///
 /// Wickens' parameters (Fundamentals of Rail Vehicle Dynamics, 2003), with `l0` half the
@@ -130,6 +133,9 @@ fn col(rows: &[[f64; 4]], k: usize) -> Vec<f64> {
 pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
     let n = sweep.positions.len();
     let l0 = sweep.l0_mm();
+    // Without a contact on both wheels of the centred wheelset (very unequal radii, say)
+    // z_ws and l0 have no reference: their columns are NaN and the status says so.
+    let centred_reference = l0.is_finite() && sweep.centre.axle_height.is_finite();
     let mut t = Table::builder()
         .comment(format!("rigid contact, solver {}", sweep.solver.name()))
         .comment(TRACK_FRAME)
@@ -248,6 +254,8 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
                 }
                 if at_centre(p) {
                     s.push_str("; y_ws = 0: lambda, epsilon, sigma undefined");
+                } else if p.stop == Stop::Converged && !centred_reference {
+                    s.push_str(NO_CENTRED_CONTACT);
                 }
                 s
             }),
@@ -357,8 +365,18 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
     .text(
         "status",
         q.positions.iter().map(|p| {
+            let missing: Vec<&str> = [Side::Left, Side::Right]
+                .into_iter()
+                .filter(|&side| p.side(side).main().is_none_or(|c| !c.is_finite()))
+                .map(Side::name)
+                .collect();
             if p.rigid_stop != Stop::Converged {
                 format!("rigid search: {}", p.rigid_stop.name())
+            } else if !missing.is_empty() {
+                format!(
+                    "no patch: {} (wheel not above its rail)",
+                    missing.join(", ")
+                )
             } else if p.sides.iter().any(|s| s.patches.len() > 1) {
                 "ok; two patches".to_string()
             } else {

@@ -1,5 +1,7 @@
-//! Fixtures shared by the integration tests that run the `wheelrail` binary. Each test file
-//! uses some of them (`mod common;`), hence the `dead_code` allowance.
+//! Fixtures shared by the integration tests: the `wheelrail` binary and scratch folders, and
+//! the check that every non-finite number of a CSV output is flagged (`tests/robustness.rs`,
+//! `tests/adversarial.rs`). Each test file uses some of them (`mod common;`), hence the
+//! `dead_code` allowance.
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
@@ -28,4 +30,203 @@ pub fn scratch(name: &str) -> PathBuf {
 /// A run's standard error as text.
 pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Parts of a status that say a row was computed normally: a non-finite number next to
+/// only these is unflagged.
+const SUCCESS: [&str; 7] = [
+    "ok",
+    "converged",
+    "two patches",
+    "two-point contact left",
+    "two-point contact right",
+    // The profile tables' `face` column: an ordinary face of the profile.
+    "regular",
+    "running",
+];
+
+/// Whether a status cell says why its row is not a normal result: some `;`-separated part
+/// of it is not a plain success word.
+fn flags(status: &str) -> bool {
+    status
+        .split(';')
+        .map(str::trim)
+        .any(|part| !part.is_empty() && !SUCCESS.contains(&part))
+}
+
+/// Splits one CSV line on commas outside double quotes (the tables quote text with commas).
+fn cells(line: &str) -> Vec<String> {
+    let mut out = vec![String::new()];
+    let mut quoted = false;
+    for c in line.chars() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(String::new()),
+            _ => out.last_mut().unwrap().push(c),
+        }
+    }
+    out
+}
+
+/// The non-finite numbers of `csv` (the text of `file`) that no status explains, as
+/// `file: column, row n (status "...")` lines.
+///
+/// A non-finite cell is flagged when
+/// * its column is documented to hold NaN for "none" (`second_*` columns: "NaN if none" in
+///   the table's header), or
+/// * a status column of its row flags the row: the side's own `left_status`/`right_status`
+///   for `left_*`/`right_*` columns where the table has one, else any column whose name
+///   contains `status` or `flag`, or the profile tables' `face` column (`vertical`,
+///   `flank`).
+///
+/// Exempt, for its stated reason:
+/// * `parameters.csv`: one row per parameter, NaN where the parameter is undefined, as its
+///   header and definitions say; it has no status column (adding one changes the golden
+///   table).
+pub fn unflagged_non_finite(file: &str, csv: &str) -> Vec<String> {
+    unflagged_with_positions(file, csv, &[])
+}
+
+/// [`unflagged_non_finite`], where a table without a status column takes the status of its
+/// position (`y_ws_mm`) from `positions`: `(y_ws_mm as written, status)` of `rigid.csv`, the
+/// table that says why a position could not be computed (`qe_epsilon.csv` has no status
+/// column of its own; adding one would change a golden table).
+pub fn unflagged_with_positions(
+    file: &str,
+    csv: &str,
+    positions: &[(String, String)],
+) -> Vec<String> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let Some(header) = lines.next() else {
+        return Vec::new();
+    };
+    let header = cells(header);
+    let status_columns: Vec<usize> = header
+        .iter()
+        .enumerate()
+        .filter(|(_, h)| h.contains("status") || h.contains("flag") || *h == "face")
+        .map(|(i, _)| i)
+        .collect();
+    let name = Path::new(file)
+        .file_name()
+        .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
+    if name == "parameters.csv" {
+        return Vec::new();
+    }
+    let y_column = header.iter().position(|h| h == "y_ws_mm");
+    let mut out = Vec::new();
+    for (n, line) in lines.enumerate() {
+        let row = cells(line);
+        let position_status: Vec<&str> = match (status_columns.is_empty(), y_column) {
+            (true, Some(i)) => positions
+                .iter()
+                .filter(|(y, _)| Some(y) == row.get(i))
+                .map(|(_, s)| s.as_str())
+                .collect(),
+            _ => Vec::new(),
+        };
+        for (i, cell) in row.iter().enumerate() {
+            let Ok(v) = cell.trim().parse::<f64>() else {
+                continue;
+            };
+            if v.is_finite() {
+                continue;
+            }
+            let column = header.get(i).map_or("?", String::as_str);
+            if column.contains("second") {
+                continue;
+            }
+            let side_status: Vec<usize> = ["left_", "right_"]
+                .iter()
+                .filter(|p| column.starts_with(*p))
+                .filter_map(|p| header.iter().position(|h| *h == format!("{p}status")))
+                .collect();
+            let relevant = if side_status.is_empty() {
+                &status_columns
+            } else {
+                &side_status
+            };
+            let mut statuses: Vec<&str> = relevant
+                .iter()
+                .filter_map(|&j| row.get(j).map(String::as_str))
+                .collect();
+            statuses.extend(&position_status);
+            if !statuses.iter().any(|s| flags(s)) {
+                out.push(format!(
+                    "{file}: {column} = {cell}, data row {} (status {statuses:?})",
+                    n + 1
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// [`unflagged_non_finite`] over every CSV file of a folder.
+pub fn unflagged_in_folder(dir: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return out;
+    };
+    let mut files: Vec<_> = entries.flatten().map(|e| e.path()).collect();
+    files.sort();
+    let positions = std::fs::read_to_string(dir.join("rigid.csv"))
+        .map(|t| position_statuses(&t))
+        .unwrap_or_default();
+    for f in files {
+        if f.extension().is_some_and(|e| e == "csv") {
+            let text = std::fs::read_to_string(&f).unwrap_or_default();
+            out.extend(unflagged_with_positions(
+                &f.display().to_string(),
+                &text,
+                &positions,
+            ));
+        }
+    }
+    out
+}
+
+/// `(y_ws_mm, status)` of every row of a table with both columns (`rigid.csv`).
+pub fn position_statuses(csv: &str) -> Vec<(String, String)> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let Some(header) = lines.next().map(cells) else {
+        return Vec::new();
+    };
+    let (Some(y), Some(s)) = (
+        header.iter().position(|h| h == "y_ws_mm"),
+        header.iter().position(|h| h == "status"),
+    ) else {
+        return Vec::new();
+    };
+    lines
+        .map(|l| {
+            let c = cells(l);
+            (
+                c.get(y).cloned().unwrap_or_default(),
+                c.get(s).cloned().unwrap_or_default(),
+            )
+        })
+        .collect()
+}
+
+/// The `y_ws_mm` column of a CSV text, if it has one.
+pub fn y_ws_column(csv: &str) -> Option<Vec<f64>> {
+    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
+    let header = cells(lines.next()?);
+    let i = header.iter().position(|h| h == "y_ws_mm")?;
+    Some(
+        lines
+            .map(|l| {
+                cells(l)
+                    .get(i)
+                    .and_then(|c| c.trim().parse().ok())
+                    .unwrap_or(f64::NAN)
+            })
+            .collect(),
+    )
+}
+
+/// Whether `v` increases strictly (NaN fails).
+pub fn strictly_increasing(v: &[f64]) -> bool {
+    v.windows(2).all(|w| w[0] < w[1])
 }
