@@ -73,6 +73,19 @@ pub struct ParameterRow {
     pub unit: &'static str,
     /// Definition in words, with its source.
     pub definition: String,
+    /// Why the value can be NaN (the `status` of a NaN row of `parameters.csv`).
+    pub undefined: &'static str,
+}
+
+impl ParameterRow {
+    /// `ok` for a finite value, else `undefined: ` and the reason.
+    pub fn status(&self) -> String {
+        if self.value.is_finite() {
+            "ok".to_string()
+        } else {
+            format!("undefined: {}", self.undefined)
+        }
+    }
 }
 
 impl Parameters {
@@ -87,6 +100,7 @@ impl Parameters {
             value: self.tan_gamma_e[i],
             unit: "1",
             definition: format!("equivalent conicity at amplitude {a} mm ({m})"),
+            undefined: "the motion of this amplitude leaves the swept delta_r or has no period (see the status in equivalent_conicity.csv)",
         };
         vec![
             tan(0, "2"),
@@ -97,54 +111,63 @@ impl Parameters {
                 value: self.nonlinearity_per_mm,
                 unit: "1/mm",
                 definition: "Polach's nonlinearity parameter NP = (tan_gamma_e(4 mm) - tan_gamma_e(2 mm)) / (4 mm - 2 mm), the slope of the equivalent conicity function (O. Polach, Vehicle System Dynamics 48 (2010) Suppl., 19-36); < 0 for a function falling with amplitude, typical of worn, conformal pairs".into(),
+                undefined: "tan_gamma_e at 2 or 4 mm is undefined",
             },
             ParameterRow {
                 name: "equilibrium_y_mm",
                 value: self.equilibrium_mm,
                 unit: "mm",
                 definition: "wheelset shift where delta_r = 0 (stable crossing nearest 0; the middle of a band of delta_r = 0); the kinematic motion oscillates about it".into(),
+                undefined: "delta_r has no stable zero crossing within the sweep",
             },
             ParameterRow {
                 name: "flange_contact_left_y_mm",
                 value: self.flange_contact_left_mm,
                 unit: "mm",
                 definition: format!("smallest shift y_ws > 0 at which the left wheel's contact angle exceeds {FLANGE_CONTACT_GAMMA_RAD} rad (linear between sweep positions; at a contact-point jump, its middle); NaN if not within the sweep"),
+                undefined: "no flange contact of the left wheel within the sweep",
             },
             ParameterRow {
                 name: "flange_contact_right_y_mm",
                 value: self.flange_contact_right_mm,
                 unit: "mm",
                 definition: format!("the same for the right wheel, y_ws < 0 (contact angle above {FLANGE_CONTACT_GAMMA_RAD} rad)"),
+                undefined: "no flange contact of the right wheel within the sweep",
             },
             ParameterRow {
                 name: "contact_point_jumps",
                 value: self.contact_point_jumps as f64,
                 unit: "count",
                 definition: "contact-point jumps of either wheel over the sweep (listed in rigid_jumps.csv, located to 1e-4 mm)".into(),
+                undefined: "never (a count)",
             },
             ParameterRow {
                 name: "delta_r_at_plus_3mm_mm",
                 value: self.delta_r_mm[0],
                 unit: "mm",
                 definition: "rolling radius difference r_left - r_right at y_ws = +3 mm".into(),
+                undefined: "y_ws = +3 mm is outside the sweep or did not converge",
             },
             ParameterRow {
                 name: "delta_r_at_minus_3mm_mm",
                 value: self.delta_r_mm[1],
                 unit: "mm",
                 definition: "rolling radius difference r_left - r_right at y_ws = -3 mm".into(),
+                undefined: "y_ws = -3 mm is outside the sweep or did not converge",
             },
             ParameterRow {
                 name: "contact_angle_difference_at_plus_3mm_rad",
                 value: self.contact_angle_difference_rad[0],
                 unit: "rad",
                 definition: "gamma_left - gamma_right at y_ws = +3 mm (track frame, roll included, mirrored per side)".into(),
+                undefined: "y_ws = +3 mm is outside the sweep or did not converge",
             },
             ParameterRow {
                 name: "contact_angle_difference_at_minus_3mm_rad",
                 value: self.contact_angle_difference_rad[1],
                 unit: "rad",
                 definition: "gamma_left - gamma_right at y_ws = -3 mm".into(),
+                undefined: "y_ws = -3 mm is outside the sweep or did not converge",
             },
         ]
     }

@@ -1,6 +1,7 @@
 //! Stage results as CSV tables. Every table states its frame, signs and units in `#`
 //! comment lines above the header, and every column name carries its unit.
 
+use crate::conicity::pair::ParameterRow;
 use crate::hertz::accuracy::HertzAccuracy;
 use crate::pipeline::EpsilonSweeps;
 use crate::quasi_elastic::QuasiElasticSweep;
@@ -393,7 +394,7 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Table, TableError> {
     let mut t = Table::builder()
-        .comment("quasi-elastic contact location (heaviest patch) against eps; rigid for reference")
+        .comment("quasi-elastic contact location (heaviest patch) against eps; rigid for reference; status: ok, the rigid search's stop where it did not converge, or the sides and eps without a patch (NaN there)")
         .comment(PER_WHEEL)
         .numeric(
             "y_ws_mm",
@@ -414,7 +415,32 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
             );
         }
     }
-    t.build()
+    let status = rigid.positions.iter().enumerate().map(|(i, p)| {
+        if p.stop != Stop::Converged {
+            return format!("rigid search: {}", p.stop.name());
+        }
+        let missing: Vec<String> = e
+            .runs
+            .iter()
+            .flat_map(|(eps, q)| {
+                [Side::Left, Side::Right]
+                    .into_iter()
+                    .enumerate()
+                    .filter(move |&(k, _)| {
+                        q.positions[i].sides[k]
+                            .main()
+                            .is_none_or(|c| !c.s.is_finite())
+                    })
+                    .map(move |(_, side)| format!("{} at eps {eps} mm", side.name()))
+            })
+            .collect();
+        if missing.is_empty() {
+            "ok".to_string()
+        } else {
+            format!("no patch: {}", missing.join(", "))
+        }
+    });
+    t.text("status", status).build()
 }
 
 /// Hertz ellipses over the sweep (`hertz.csv`).
@@ -514,6 +540,13 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError>
         .numeric("a_rel_error", col(&|x| x.errors.a_rel))
         .numeric("b_rel_error", col(&|x| x.errors.b_rel))
         .numeric("p0_rel_error", col(&|x| x.errors.p0_rel))
+        .text(
+            "status",
+            m.iter().map(|x| match x.setting.profile_step_mm {
+                Some(_) => "ok",
+                None => "analytic profiles: no profile_step_mm (NaN)",
+            }),
+        )
         .build()
 }
 
@@ -592,11 +625,12 @@ pub fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Result<Table, T
 pub fn parameters(p: &crate::conicity::Parameters) -> Result<Table, TableError> {
     let rows = p.rows();
     Table::builder()
-        .comment("parameters of the wheel/rail pair from its rigid sweep; NaN where undefined (e.g. flange contact beyond the sweep)")
+        .comment("parameters of the wheel/rail pair from its rigid sweep; NaN where undefined (e.g. flange contact beyond the sweep), with the reason in status")
         .comment(CONICITY_FRAME)
         .text("parameter", rows.iter().map(|r| r.name))
         .numeric("value", rows.iter().map(|r| r.value).collect::<Vec<_>>())
         .text("unit", rows.iter().map(|r| r.unit))
         .text("definition", rows.iter().map(|r| r.definition.clone()))
+        .text("status", rows.iter().map(ParameterRow::status))
         .build()
 }

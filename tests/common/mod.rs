@@ -78,24 +78,7 @@ fn cells(line: &str) -> Vec<String> {
 ///   for `left_*`/`right_*` columns where the table has one, else any column whose name
 ///   contains `status` or `flag`, or the profile tables' `face` column (`vertical`,
 ///   `flank`).
-///
-/// Exempt, for its stated reason:
-/// * `parameters.csv`: one row per parameter, NaN where the parameter is undefined, as its
-///   header and definitions say; it has no status column (adding one changes the golden
-///   table).
 pub fn unflagged_non_finite(file: &str, csv: &str) -> Vec<String> {
-    unflagged_with_positions(file, csv, &[])
-}
-
-/// [`unflagged_non_finite`], where a table without a status column takes the status of its
-/// position (`y_ws_mm`) from `positions`: `(y_ws_mm as written, status)` of `rigid.csv`, the
-/// table that says why a position could not be computed (`qe_epsilon.csv` has no status
-/// column of its own; adding one would change a golden table).
-pub fn unflagged_with_positions(
-    file: &str,
-    csv: &str,
-    positions: &[(String, String)],
-) -> Vec<String> {
     let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
     let Some(header) = lines.next() else {
         return Vec::new();
@@ -107,24 +90,9 @@ pub fn unflagged_with_positions(
         .filter(|(_, h)| h.contains("status") || h.contains("flag") || *h == "face")
         .map(|(i, _)| i)
         .collect();
-    let name = Path::new(file)
-        .file_name()
-        .map_or(file.to_string(), |n| n.to_string_lossy().into_owned());
-    if name == "parameters.csv" {
-        return Vec::new();
-    }
-    let y_column = header.iter().position(|h| h == "y_ws_mm");
     let mut out = Vec::new();
     for (n, line) in lines.enumerate() {
         let row = cells(line);
-        let position_status: Vec<&str> = match (status_columns.is_empty(), y_column) {
-            (true, Some(i)) => positions
-                .iter()
-                .filter(|(y, _)| Some(y) == row.get(i))
-                .map(|(_, s)| s.as_str())
-                .collect(),
-            _ => Vec::new(),
-        };
         for (i, cell) in row.iter().enumerate() {
             let Ok(v) = cell.trim().parse::<f64>() else {
                 continue;
@@ -146,11 +114,10 @@ pub fn unflagged_with_positions(
             } else {
                 &side_status
             };
-            let mut statuses: Vec<&str> = relevant
+            let statuses: Vec<&str> = relevant
                 .iter()
                 .filter_map(|&j| row.get(j).map(String::as_str))
                 .collect();
-            statuses.extend(&position_status);
             if !statuses.iter().any(|s| flags(s)) {
                 out.push(format!(
                     "{file}: {column} = {cell}, data row {} (status {statuses:?})",
@@ -170,43 +137,13 @@ pub fn unflagged_in_folder(dir: &Path) -> Vec<String> {
     };
     let mut files: Vec<_> = entries.flatten().map(|e| e.path()).collect();
     files.sort();
-    let positions = std::fs::read_to_string(dir.join("rigid.csv"))
-        .map(|t| position_statuses(&t))
-        .unwrap_or_default();
     for f in files {
         if f.extension().is_some_and(|e| e == "csv") {
             let text = std::fs::read_to_string(&f).unwrap_or_default();
-            out.extend(unflagged_with_positions(
-                &f.display().to_string(),
-                &text,
-                &positions,
-            ));
+            out.extend(unflagged_non_finite(&f.display().to_string(), &text));
         }
     }
     out
-}
-
-/// `(y_ws_mm, status)` of every row of a table with both columns (`rigid.csv`).
-pub fn position_statuses(csv: &str) -> Vec<(String, String)> {
-    let mut lines = csv.lines().filter(|l| !l.starts_with('#'));
-    let Some(header) = lines.next().map(cells) else {
-        return Vec::new();
-    };
-    let (Some(y), Some(s)) = (
-        header.iter().position(|h| h == "y_ws_mm"),
-        header.iter().position(|h| h == "status"),
-    ) else {
-        return Vec::new();
-    };
-    lines
-        .map(|l| {
-            let c = cells(l);
-            (
-                c.get(y).cloned().unwrap_or_default(),
-                c.get(s).cloned().unwrap_or_default(),
-            )
-        })
-        .collect()
 }
 
 /// The `y_ws_mm` column of a CSV text, if it has one.
