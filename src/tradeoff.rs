@@ -12,12 +12,12 @@
 
 use crate::hertz::{self, Method};
 use crate::pipeline;
-use crate::profile::Profile;
-use crate::profile::read::{ProfileFormat, parse_str};
+use crate::profile::read::PointProfile;
+use crate::profile::{Profile, ProfileKind};
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep, Solver, Stop};
 use crate::scene::{ProfileRef, Scene};
-use crate::track::{PlacedRail, PlacedWheel, Placement, SidePair};
+use crate::track::{Placement, SidePair};
 use std::time::Instant;
 
 /// One combination of numerical settings.
@@ -182,30 +182,23 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
     let Some(step) = setting.profile_step_mm else {
         return pipeline::place(scene);
     };
+    // The scene's profiles sampled every `step` mm (section joints included) and fitted
+    // again by an interpolating spline, as a measured file would be.
     let sampled = |r: &ProfileRef, kind| -> Result<Profile, crate::Error> {
         let profile = scene.load_profile(r, kind, "tradeoff")?;
-        let table = crate::app::profile_table(&profile, step)
-            .map_err(|e| crate::Error::Other(e.to_string()))?;
-        let text = table.to_csv_with(crate::report::NumberFormat::Significant(17));
-        let points = parse_str(&text, ProfileFormat::Csv, kind, "sampled")?;
+        let points = profile.sample(step).iter().map(|r| [r[0], r[1]]).collect();
+        let points = PointProfile::from_points(kind, "sampled", points)?;
         Profile::from_points(points, 0.0).map_err(|e| crate::Error::Other(e.to_string()))
     };
     let side = |i: usize| -> Result<SidePair, crate::Error> {
-        let err = |e: crate::track::PlacementError| crate::Error::Other(e.to_string());
-        Ok(SidePair {
-            wheel: PlacedWheel::place(
-                sampled(&scene.wheel_profiles[i], crate::profile::ProfileKind::Wheel)?,
-                scene.nominal_radius_mm[i],
-                &scene.layout,
-            )
-            .map_err(err)?,
-            rail: PlacedRail::place(
-                sampled(&scene.rail_profiles[i], crate::profile::ProfileKind::Rail)?,
-                scene.rail_profile_inclination,
-                &scene.layout,
-            )
-            .map_err(err)?,
-        })
+        SidePair::place(
+            sampled(&scene.wheel_profiles[i], ProfileKind::Wheel)?,
+            scene.nominal_radius_mm[i],
+            sampled(&scene.rail_profiles[i], ProfileKind::Rail)?,
+            scene.rail_profile_inclination,
+            &scene.layout,
+        )
+        .map_err(|e| crate::Error::Other(e.to_string()))
     };
     Ok(Placement {
         layout: scene.layout.clone(),

@@ -276,7 +276,7 @@ fn resampled_placement(step: f64) -> Placement {
     use wheelrail::profile::read::{ProfileFormat, parse_str};
     use wheelrail::track::{Inclination, PlacedRail, PlacedWheel, SidePair};
     let sampled = |p: Profile| {
-        let table = wheelrail::app::profile_table(&p, step).unwrap();
+        let table = wheelrail::outputs::tables::profile_points(&p, step).unwrap();
         let text = table.to_csv_with(wheelrail::report::NumberFormat::Significant(17));
         let points = parse_str(&text, ProfileFormat::Csv, p.kind(), "resampled").unwrap();
         Profile::from_points(points, 0.0).unwrap()
