@@ -58,6 +58,7 @@ pub mod quasi_elastic;
 pub mod report;
 pub mod rigid;
 pub mod scene;
+pub mod stage;
 pub mod track;
 #[cfg(feature = "cli")]
 pub mod tradeoff;

@@ -333,7 +333,7 @@ pub struct RawSweep {
 #[derive(Debug, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct RawOutputs {
-    /// Figure names (see [`crate::pipeline::Figure`]).
+    /// Figure names (see [`crate::stage::Figure`]).
     pub figures: Option<Vec<String>>,
     /// Image formats: "svg", "png".
     pub formats: Option<Vec<String>>,
@@ -394,7 +394,7 @@ pub struct Scene {
     /// Lateral shifts of the sweep, mm, increasing.
     pub sweep_mm: Vec<f64>,
     /// Figures to render.
-    pub figures: Vec<crate::pipeline::Figure>,
+    pub figures: Vec<crate::stage::Figure>,
     /// Formats to render them in.
     pub formats: Vec<ImageFormat>,
     /// Rigid solver.
@@ -664,16 +664,16 @@ impl Scene {
         let sweep_mm = sweep(&raw.sweep).map_err(|(key, message)| invalid(key, message))?;
 
         let figures = match raw.outputs.figures {
-            None => crate::pipeline::Figure::ALL.to_vec(),
+            None => crate::stage::Figure::ALL.to_vec(),
             Some(names) => names
                 .iter()
                 .map(|n| {
-                    crate::pipeline::Figure::from_name(n).ok_or_else(|| {
+                    crate::stage::Figure::from_name(n).ok_or_else(|| {
                         invalid(
                             "outputs.figures",
                             format!(
                                 "unknown figure {n:?}; known figures: {}",
-                                crate::pipeline::Figure::ALL
+                                crate::stage::Figure::ALL
                                     .iter()
                                     .map(|f| f.name())
                                     .collect::<Vec<_>>()
