@@ -350,13 +350,7 @@ pub fn roll(sweep: &RigidSweep) -> Figure {
 
 /// Wickens' contact angle parameter against the shift (paper Fig. 2).
 pub fn contact_angle_parameter(sweep: &RigidSweep) -> Figure {
-    let l0 = sweep.l0_mm();
-    let eps = |p: &Position| match p.contact {
-        [Some(l), Some(r)] if p.y_ws.abs() > 1e-12 => {
-            l0 * (l.gamma.tan() - r.gamma.tan()) / (2.0 * p.y_ws)
-        }
-        _ => f64::NAN,
-    };
+    let eps = |p: &Position| sweep.wickens(p).epsilon;
     Figure::single(with_onsets(
         Chart::new(
             "Contact angle parameter epsilon = l0 (tan gamma_l - tan gamma_r) / (2 y_ws)",

@@ -192,42 +192,25 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
                     .collect::<Vec<_>>(),
             );
     }
-    let r = |p: &crate::rigid::Position, k: usize| p.contact[k].map_or(f64::NAN, |c| c.r);
-    let tan =
-        |p: &crate::rigid::Position, k: usize| p.contact[k].map_or(f64::NAN, |c| c.gamma.tan());
-    let at_centre = |p: &crate::rigid::Position| p.y_ws.abs() < 1e-12;
+    let wickens: Vec<_> = sweep.positions.iter().map(|p| sweep.wickens(p)).collect();
     t = t
-        .numeric("delta_r_mm", converged(sweep, |p| r(p, 0) - r(p, 1)))
+        .numeric(
+            "delta_r_mm",
+            sweep
+                .positions
+                .iter()
+                .map(|p| p.delta_r())
+                .collect::<Vec<_>>(),
+        )
         .numeric(
             "lambda",
-            converged(sweep, |p| {
-                if at_centre(p) {
-                    f64::NAN
-                } else {
-                    (r(p, 0) - r(p, 1)) / (2.0 * p.y_ws)
-                }
-            }),
+            wickens.iter().map(|w| w.lambda).collect::<Vec<_>>(),
         )
         .numeric(
             "epsilon",
-            converged(sweep, |p| {
-                if at_centre(p) {
-                    f64::NAN
-                } else {
-                    l0 * (tan(p, 0) - tan(p, 1)) / (2.0 * p.y_ws)
-                }
-            }),
+            wickens.iter().map(|w| w.epsilon).collect::<Vec<_>>(),
         )
-        .numeric(
-            "sigma",
-            converged(sweep, |p| {
-                if at_centre(p) {
-                    f64::NAN
-                } else {
-                    l0 * p.roll / p.y_ws
-                }
-            }),
-        )
+        .numeric("sigma", wickens.iter().map(|w| w.sigma).collect::<Vec<_>>())
         .numeric(
             "iterations",
             sweep
@@ -253,7 +236,7 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
                         s.push_str(&format!("; two-point contact {side}"));
                     }
                 }
-                if at_centre(p) {
+                if p.y_ws.abs() < crate::rigid::WICKENS_CENTRE_MM {
                     s.push_str("; y_ws = 0: lambda, epsilon, sigma undefined");
                 } else if p.stop == Stop::Converged && !centred_reference {
                     s.push_str(NO_CENTRED_CONTACT);

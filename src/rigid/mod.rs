@@ -235,6 +235,53 @@ impl RigidSweep {
     pub fn z_ws(&self, p: &Position) -> f64 {
         p.axle_height - self.centre.axle_height
     }
+
+    /// Wickens' parameters of position `p` of this sweep (with its [`l0_mm`](Self::l0_mm));
+    /// NaN at `y_ws = 0` (|y_ws| below [`WICKENS_CENTRE_MM`]), where they are undefined,
+    /// and where the position did not converge.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::{pipeline, rigid, scene::Scene};
+    /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
+    /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), &[2.0], rigid::Solver::Default);
+    /// let w = sweep.wickens(&sweep.positions[0]);
+    /// // S1002 on UIC60 1:40 at 2 mm: a conicity of about 0.2.
+    /// assert!(w.lambda > 0.1 && w.lambda < 0.3);
+    /// ```
+    pub fn wickens(&self, p: &Position) -> Wickens {
+        if p.stop != Stop::Converged || p.y_ws.abs() < WICKENS_CENTRE_MM {
+            return Wickens {
+                lambda: f64::NAN,
+                epsilon: f64::NAN,
+                sigma: f64::NAN,
+            };
+        }
+        let l0 = self.l0_mm();
+        let tan = |k: usize| p.contact[k].map_or(f64::NAN, |c| c.gamma.tan());
+        Wickens {
+            lambda: p.delta_r() / (2.0 * p.y_ws),
+            epsilon: l0 * (tan(0) - tan(1)) / (2.0 * p.y_ws),
+            sigma: l0 * p.roll / p.y_ws,
+        }
+    }
+}
+
+/// Shifts closer to 0 than this are the centred wheelset, where Wickens' parameters, ratios
+/// to `y_ws`, are undefined (mm; the sweep rounds its positions to 1e-9 mm).
+pub const WICKENS_CENTRE_MM: f64 = 1e-12;
+
+/// Wickens' linearisation parameters of one position (A. H. Wickens, Fundamentals of Rail
+/// Vehicle Dynamics, 2003), with `l0` half the lateral distance between the contact points
+/// of the centred wheelset.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Wickens {
+    /// Equivalent conicity `λ = Δr / (2 y_ws)` (dimensionless).
+    pub lambda: f64,
+    /// Contact angle parameter `ε = l0 (tan γ_l - tan γ_r) / (2 y_ws)` (dimensionless).
+    pub epsilon: f64,
+    /// Roll angle parameter `σ = l0 θ / y_ws` (dimensionless).
+    pub sigma: f64,
 }
 
 fn side_index(side: Side) -> usize {
