@@ -9,10 +9,7 @@ use super::{
 use crate::rigid::{Position, RigidSweep, Stop};
 use crate::track::Side;
 
-/// Contact angle above which a wheel is in flange contact (rad): 63°, below the flank angle
-/// of S1002 (70°, 1.22 rad) and of the usual worn flanges (65-70°), above every tread and
-/// flange-root contact (S1002 on UIC60 1:40 reaches 0.9 rad at the root).
-pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
+pub use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
 
 /// The lateral shift at which Δr and the contact angle difference are reported (mm).
 pub const REPORT_SHIFT_MM: f64 = 3.0;
@@ -244,8 +241,8 @@ pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
         tan_gamma_e,
         nonlinearity_per_mm: (tan_gamma_e[2] - tan_gamma_e[0]) / (a4 - a2),
         equilibrium_mm: at.equilibrium_mm,
-        flange_contact_left_mm: flange_contact(sweep, Side::Left),
-        flange_contact_right_mm: flange_contact(sweep, Side::Right),
+        flange_contact_left_mm: sweep.flange_contact_mm(Side::Left),
+        flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
         contact_point_jumps: sweep.jumps.len(),
         delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
         contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM]
@@ -282,50 +279,4 @@ fn interpolate(sweep: &RigidSweep, y: f64, f: impl Fn(&Position) -> f64) -> f64 
     let (a, b) = (&p[i - 1], &p[i]);
     let t = (y - a.y_ws) / (b.y_ws - a.y_ws);
     f(a) + t * (f(b) - f(a))
-}
-
-/// The shift where the contact angle of `side` first exceeds [`FLANGE_CONTACT_GAMMA_RAD`]
-/// moving that wheel towards its rail (left: increasing `y_ws > 0`; right: decreasing
-/// `y_ws < 0`): linear between the two positions around the crossing, or the middle of a
-/// contact-point jump between them. NaN when the sweep does not reach it.
-pub fn flange_contact(sweep: &RigidSweep, side: Side) -> f64 {
-    let outward: Vec<&Position> = match side {
-        Side::Left => sweep.positions.iter().filter(|p| p.y_ws >= 0.0).collect(),
-        Side::Right => sweep
-            .positions
-            .iter()
-            .rev()
-            .filter(|p| p.y_ws <= 0.0)
-            .collect(),
-    };
-    let on = |g: f64| g > FLANGE_CONTACT_GAMMA_RAD;
-    for w in outward.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let (ga, gb) = (gamma(a, side), gamma(b, side));
-        if !on(gb) {
-            continue;
-        }
-        if on(ga) {
-            // Already on the flange at the first position of the half sweep.
-            return a.y_ws;
-        }
-        let (lo, hi) = if a.y_ws < b.y_ws {
-            (a.y_ws, b.y_ws)
-        } else {
-            (b.y_ws, a.y_ws)
-        };
-        if let Some(j) = sweep
-            .jumps
-            .iter()
-            .find(|j| j.side == side && j.y_from >= lo && j.y_to <= hi)
-        {
-            return 0.5 * (j.y_from + j.y_to);
-        }
-        if ga.is_nan() {
-            return b.y_ws;
-        }
-        let t = (FLANGE_CONTACT_GAMMA_RAD - ga) / (gb - ga);
-        return a.y_ws + t * (b.y_ws - a.y_ws);
-    }
-    f64::NAN
 }

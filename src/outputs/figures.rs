@@ -248,14 +248,14 @@ fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&Position) -> f64) -> Ve
 }
 
 /// The shifts where flange contact begins on either side
-/// ([`crate::conicity::pair::flange_contact`]), with their labels.
+/// ([`RigidSweep::flange_contact_mm`](crate::rigid::RigidSweep::flange_contact_mm)), with their labels.
 pub fn flange_onsets(sweep: &RigidSweep) -> Vec<(f64, &'static str)> {
     [
         (Side::Left, "left flange contact"),
         (Side::Right, "right flange contact"),
     ]
     .into_iter()
-    .map(|(side, label)| (crate::conicity::pair::flange_contact(sweep, side), label))
+    .map(|(side, label)| (sweep.flange_contact_mm(side), label))
     .filter(|(y, _)| y.is_finite())
     .collect()
 }

@@ -236,6 +236,52 @@ impl RigidSweep {
         p.axle_height - self.centre.axle_height
     }
 
+    /// The shift where the contact angle of `side` first exceeds [`FLANGE_CONTACT_GAMMA_RAD`]
+    /// moving that wheel towards its rail (left: increasing `y_ws > 0`; right: decreasing
+    /// `y_ws < 0`): linear between the two positions around the crossing, or the middle of a
+    /// contact-point jump between them. NaN when the sweep does not reach it.
+    pub fn flange_contact_mm(&self, side: Side) -> f64 {
+        let outward: Vec<&Position> = match side {
+            Side::Left => self.positions.iter().filter(|p| p.y_ws >= 0.0).collect(),
+            Side::Right => self
+                .positions
+                .iter()
+                .rev()
+                .filter(|p| p.y_ws <= 0.0)
+                .collect(),
+        };
+        let on = |g: f64| g > FLANGE_CONTACT_GAMMA_RAD;
+        for w in outward.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let (ga, gb) = (contact_angle(a, side), contact_angle(b, side));
+            if !on(gb) {
+                continue;
+            }
+            if on(ga) {
+                // Already on the flange at the first position of the half sweep.
+                return a.y_ws;
+            }
+            let (lo, hi) = if a.y_ws < b.y_ws {
+                (a.y_ws, b.y_ws)
+            } else {
+                (b.y_ws, a.y_ws)
+            };
+            if let Some(j) = self
+                .jumps
+                .iter()
+                .find(|j| j.side == side && j.y_from >= lo && j.y_to <= hi)
+            {
+                return 0.5 * (j.y_from + j.y_to);
+            }
+            if ga.is_nan() {
+                return b.y_ws;
+            }
+            let t = (FLANGE_CONTACT_GAMMA_RAD - ga) / (gb - ga);
+            return a.y_ws + t * (b.y_ws - a.y_ws);
+        }
+        f64::NAN
+    }
+
     /// Wickens' parameters of position `p` of this sweep (with its [`l0_mm`](Self::l0_mm));
     /// NaN at `y_ws = 0` (|y_ws| below [`WICKENS_CENTRE_MM`]), where they are undefined,
     /// and where the position did not converge.
@@ -264,6 +310,19 @@ impl RigidSweep {
             epsilon: l0 * (tan(0) - tan(1)) / (2.0 * p.y_ws),
             sigma: l0 * p.roll / p.y_ws,
         }
+    }
+}
+
+/// Contact angle above which a wheel is in flange contact (rad): 63°, below the flank angle
+/// of S1002 (70°, 1.22 rad) and of the usual worn flanges (65-70°), above every tread and
+/// flange-root contact (S1002 on UIC60 1:40 reaches 0.9 rad at the root).
+pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
+
+/// The contact angle of `side` at `p` (rad), NaN unless it converged with that contact.
+fn contact_angle(p: &Position, side: Side) -> f64 {
+    match p.side(side) {
+        Some(c) if p.stop == Stop::Converged => c.gamma,
+        _ => f64::NAN,
     }
 }
 
