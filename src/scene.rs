@@ -12,6 +12,24 @@ use serde::Deserialize;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+// The defaults of the scene keys: the paper's case (S1002 on UIC60 1:40, standard gauge and
+// wheelset, 460 mm wheels, 70 kN, steel), in one place. Gauge, gauge-point depth and
+// flange-back distance are the track module's standard values.
+
+/// Default nominal wheel radius (mm): the paper's 920 mm wheel.
+pub const DEFAULT_NOMINAL_RADIUS_MM: f64 = 460.0;
+/// Default vertical wheel load (kN): the paper's 70 kN.
+pub const DEFAULT_WHEEL_LOAD_KN: f64 = 70.0;
+/// Default Young's modulus of wheel and rail (GPa): steel.
+pub const DEFAULT_YOUNG_GPA: f64 = 210.0;
+/// Default Poisson's ratio of wheel and rail: steel.
+pub const DEFAULT_POISSON: f64 = 0.3;
+
+/// Newtons per kilonewton (the scene gives loads in kN, the numerics take N).
+const N_PER_KN: f64 = 1000.0;
+/// Megapascals per gigapascal (the scene gives moduli in GPa, the numerics take MPa).
+const MPA_PER_GPA: f64 = 1000.0;
+
 /// The largest number of lateral positions a sweep may have. A sweep of a million positions
 /// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
 pub const MAX_SWEEP_POSITIONS: usize = 100_001;
@@ -523,7 +541,7 @@ impl Scene {
         {
             let (key, v) = written(own_key, own, "wheel.nominal_radius_mm", w.nominal_radius_mm);
             *r = within(
-                v.unwrap_or(460.0),
+                v.unwrap_or(DEFAULT_NOMINAL_RADIUS_MM),
                 NOMINAL_RADIUS_RANGE_MM,
                 "mm",
                 "not a railway wheel radius",
@@ -562,7 +580,9 @@ impl Scene {
         ];
 
         let gauge_mm = within(
-            raw.track.gauge_mm.unwrap_or(1435.0),
+            raw.track
+                .gauge_mm
+                .unwrap_or(crate::track::STANDARD_GAUGE_MM),
             GAUGE_RANGE_MM,
             "mm",
             "not a railway gauge",
@@ -571,7 +591,7 @@ impl Scene {
         let gauge_point_depth_mm = positive(
             "track.gauge_point_depth_mm",
             raw.track.gauge_point_depth_mm,
-            14.0,
+            crate::track::GAUGE_POINT_DEPTH_MM,
         )?;
         if gauge_point_depth_mm > 30.0 {
             return Err(invalid(
@@ -584,7 +604,7 @@ impl Scene {
         let flange_back_mm = positive(
             "wheelset.flange_back_mm",
             raw.wheelset.flange_back_mm,
-            1360.0,
+            crate::track::STANDARD_FLANGE_BACK_MM,
         )?;
         if !(0.8 * gauge_mm..gauge_mm).contains(&flange_back_mm) {
             return Err(invalid(
@@ -601,10 +621,10 @@ impl Scene {
             flange_back_mm,
         };
 
-        let wheel_load_n = 1000.0
+        let wheel_load_n = N_PER_KN
             * within(
-                raw.load.wheel_load_kN.unwrap_or(70.0),
-                (MIN_WHEEL_LOAD_N / 1000.0, MAX_WHEEL_LOAD_N / 1000.0),
+                raw.load.wheel_load_kN.unwrap_or(DEFAULT_WHEEL_LOAD_KN),
+                (MIN_WHEEL_LOAD_N / N_PER_KN, MAX_WHEEL_LOAD_N / N_PER_KN),
                 "kN",
                 "not a wheel load",
             )
@@ -615,17 +635,17 @@ impl Scene {
         let young = |own_key: &'static str, own: Option<f64>| -> Result<f64, SceneError> {
             let (key, v) = written(own_key, own, "material.young_GPa", m.young_GPa);
             let e = within(
-                v.unwrap_or(210.0),
+                v.unwrap_or(DEFAULT_YOUNG_GPA),
                 YOUNG_RANGE_GPA,
                 "GPa",
                 "not the Young's modulus of a wheel or rail material",
             )
             .map_err(|msg| invalid(key, msg))?;
-            Ok(1000.0 * e)
+            Ok(MPA_PER_GPA * e)
         };
         let poisson = |own_key: &'static str, own: Option<f64>| -> Result<f64, SceneError> {
             let (key, v) = written(own_key, own, "material.poisson", m.poisson);
-            let nu = v.unwrap_or(0.3);
+            let nu = v.unwrap_or(DEFAULT_POISSON);
             if nu.is_finite() && nu >= POISSON_RANGE.0 && nu < POISSON_RANGE.1 {
                 Ok(nu)
             } else {
