@@ -1,0 +1,720 @@
+//! Checking a scene file's keys: one function per section of the file, each returning the
+//! checked values or the offending key (as the user wrote it) and a message.
+
+use super::raw::{RawConicity, RawQuasiElastic, RawScene, RawSweep};
+use super::{
+    CUTOFF_RANGE, DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_NOMINAL_RADIUS_MM, DEFAULT_POISSON,
+    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_WHEEL_LOAD_KN, DEFAULT_YOUNG_GPA, GAUGE_RANGE_MM,
+    ImageFormat, MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS, MAX_SMOOTHING_WAVELENGTH_MM,
+    MAX_SWEEP_POSITIONS, MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N, MIN_EPSILON_MM, MIN_PANEL_WIDTHS,
+    MIN_SWEEP_STEP_MM, MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN,
+    NOMINAL_RADIUS_RANGE_MM, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
+};
+use crate::error::Number;
+use crate::hertz::Material;
+use crate::hertz::sweep::Settings as HertzSettings;
+use crate::profile::Profile;
+use crate::quasi_elastic::{Quadrature, Settings as QeSettings};
+use crate::rigid::Solver;
+use crate::stage::Figure;
+use crate::track::{Inclination, TrackLayout};
+use std::path::Path;
+
+/// A failed check: the key as written and what is wrong with its value.
+pub(super) type Invalid = (&'static str, String);
+
+fn invalid(key: &'static str, message: String) -> Invalid {
+    (key, message)
+}
+
+/// `v` (or `default`) if it is positive and finite.
+fn positive(key: &'static str, v: Option<f64>, default: f64) -> Result<f64, Invalid> {
+    let v = v.unwrap_or(default);
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(invalid(
+            key,
+            format!("{} must be a positive finite number", Number(v)),
+        ))
+    }
+}
+
+/// The profiles of the four places (left and right wheel and rail) and the keys they came
+/// from, as written (`wheel.profile` when one key names both sides).
+struct ProfileRefs {
+    wheels: [ProfileRef; 2],
+    wheel_keys: [&'static str; 2],
+    rails: [ProfileRef; 2],
+    rail_keys: [&'static str; 2],
+}
+
+/// Every key of `raw` checked and converted (see [`Scene::from_toml`]); the offending key
+/// and a message otherwise.
+pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene, Invalid> {
+    let name = raw.name.clone().unwrap_or_else(|| "scene".into());
+    if name.is_empty()
+        || !name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+    {
+        return Err(invalid(
+            "name",
+            format!("{name:?} must be non-empty and use only letters, digits, '-' and '_'"),
+        ));
+    }
+    let title = raw.title.clone().unwrap_or_else(|| name.clone());
+    let ProfileRefs {
+        wheels: wheel_profiles,
+        wheel_keys: wheel_profile_keys,
+        rails: rail_profiles,
+        rail_keys: rail_profile_keys,
+    } = profile_refs(raw, dir);
+    let nominal_radius_mm = nominal_radii(raw)?;
+    let (layout, rail_profile_inclination, smoothing_wavelength_mm) = track(raw)?;
+    let (wheel_load_n, wheel_material, rail_material) = load_and_materials(raw)?;
+    let sweep_mm = sweep(&raw.sweep)?;
+    let (figures, formats) = outputs(raw)?;
+    let rigid_solver = rigid_solver(raw)?;
+    let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
+    let hertz = hertz(raw)?;
+    let conicity = conicity_settings(&raw.conicity)?;
+    Ok(Scene {
+        path: origin.to_string(),
+        name,
+        title,
+        wheel_profiles,
+        wheel_profile_keys,
+        rail_profile_keys,
+        nominal_radius_mm,
+        rail_profiles,
+        rail_profile_inclination,
+        smoothing_wavelength_mm,
+        drop_step_backs: [
+            raw.wheel.drop_step_backs.unwrap_or(false),
+            raw.rail.drop_step_backs.unwrap_or(false),
+        ],
+        layout,
+        wheel_load_n,
+        wheel_material,
+        rail_material,
+        sweep_mm,
+        figures,
+        formats,
+        rigid_solver,
+        quasi_elastic,
+        epsilon_sensitivity_mm,
+        hertz,
+        conicity,
+    })
+}
+
+/// The four profile references and the keys they were written under.
+fn profile_refs(raw: &RawScene, dir: &Path) -> ProfileRefs {
+    let profile_ref = |text: &str| -> ProfileRef {
+        if Profile::built_in(text).is_some() {
+            ProfileRef::BuiltIn(text.to_string())
+        } else {
+            ProfileRef::File(dir.join(text))
+        }
+    };
+    let wheel = raw.wheel.profile.as_deref().unwrap_or("S1002");
+    let wheel_profiles = [
+        profile_ref(raw.wheel.left_profile.as_deref().unwrap_or(wheel)),
+        profile_ref(raw.wheel.right_profile.as_deref().unwrap_or(wheel)),
+    ];
+    // The key each profile came from, as written (or the shared key, default included).
+    let key_of = |side: &Option<String>, side_key: &'static str, shared: &'static str| {
+        if side.is_some() { side_key } else { shared }
+    };
+    let wheel_profile_keys = [
+        key_of(
+            &raw.wheel.left_profile,
+            "wheel.left_profile",
+            "wheel.profile",
+        ),
+        key_of(
+            &raw.wheel.right_profile,
+            "wheel.right_profile",
+            "wheel.profile",
+        ),
+    ];
+    let rail_profile_keys = [
+        key_of(&raw.rail.left_profile, "rail.left_profile", "rail.profile"),
+        key_of(
+            &raw.rail.right_profile,
+            "rail.right_profile",
+            "rail.profile",
+        ),
+    ];
+    let rail = raw.rail.profile.as_deref().unwrap_or("UIC60E1");
+    let rail_profiles = [
+        profile_ref(raw.rail.left_profile.as_deref().unwrap_or(rail)),
+        profile_ref(raw.rail.right_profile.as_deref().unwrap_or(rail)),
+    ];
+    ProfileRefs {
+        wheels: wheel_profiles,
+        wheel_keys: wheel_profile_keys,
+        rails: rail_profiles,
+        rail_keys: rail_profile_keys,
+    }
+}
+
+/// The left and right nominal wheel radii (mm).
+fn nominal_radii(raw: &RawScene) -> Result<[f64; 2], Invalid> {
+    // Errors name the key the user wrote: the per-side key, else the shared one.
+    let w = &raw.wheel;
+    let mut nominal_radius_mm = [0.0; 2];
+    for (r, own_key, own) in nominal_radius_mm
+        .iter_mut()
+        .zip([
+            ("wheel.left_nominal_radius_mm", w.left_nominal_radius_mm),
+            ("wheel.right_nominal_radius_mm", w.right_nominal_radius_mm),
+        ])
+        .map(|(r, (k, v))| (r, k, v))
+    {
+        let (key, v) = written(own_key, own, "wheel.nominal_radius_mm", w.nominal_radius_mm);
+        *r = within(
+            v.unwrap_or(DEFAULT_NOMINAL_RADIUS_MM),
+            NOMINAL_RADIUS_RANGE_MM,
+            "mm",
+            "not a railway wheel radius",
+        )
+        .map_err(|m| invalid(key, m))?;
+    }
+    Ok(nominal_radius_mm)
+}
+
+/// The track layout, the inclination the rail data already has and the smoothing
+/// wavelengths of wheel and rail files (mm).
+fn track(raw: &RawScene) -> Result<(TrackLayout, Inclination, [f64; 2]), Invalid> {
+    let inclination = Inclination::parse(raw.rail.inclination.as_deref().unwrap_or("1:40"))
+        .map_err(|m| invalid("rail.inclination", m))?;
+    let rail_profile_inclination = Inclination::parse(
+        raw.rail
+            .profile_inclination
+            .as_deref()
+            .unwrap_or("vertical"),
+    )
+    .map_err(|m| invalid("rail.profile_inclination", m))?;
+    let smoothing = |key: &'static str, v: Option<f64>| -> Result<f64, Invalid> {
+        let v = v.unwrap_or(DEFAULT_SMOOTHING_WAVELENGTH_MM);
+        within(
+            v,
+            (0.0, MAX_SMOOTHING_WAVELENGTH_MM),
+            "mm",
+            "not a filter wavelength for a profile (longer ones flatten the profile itself)",
+        )
+        .map_err(|m| invalid(key, m))
+    };
+    let smoothing_wavelength_mm = [
+        smoothing(
+            "wheel.smoothing_wavelength_mm",
+            raw.wheel.smoothing_wavelength_mm,
+        )?,
+        smoothing(
+            "rail.smoothing_wavelength_mm",
+            raw.rail.smoothing_wavelength_mm,
+        )?,
+    ];
+
+    let gauge_mm = within(
+        raw.track
+            .gauge_mm
+            .unwrap_or(crate::track::STANDARD_GAUGE_MM),
+        GAUGE_RANGE_MM,
+        "mm",
+        "not a railway gauge",
+    )
+    .map_err(|m| invalid("track.gauge_mm", m))?;
+    let gauge_point_depth_mm = positive(
+        "track.gauge_point_depth_mm",
+        raw.track.gauge_point_depth_mm,
+        crate::track::GAUGE_POINT_DEPTH_MM,
+    )?;
+    if gauge_point_depth_mm > 30.0 {
+        return Err(invalid(
+            "track.gauge_point_depth_mm",
+            format!(
+                "{gauge_point_depth_mm} mm is below the rail head (expected 0 to 30 mm, usually 14)"
+            ),
+        ));
+    }
+    let flange_back_mm = positive(
+        "wheelset.flange_back_mm",
+        raw.wheelset.flange_back_mm,
+        crate::track::STANDARD_FLANGE_BACK_MM,
+    )?;
+    if !(0.8 * gauge_mm..gauge_mm).contains(&flange_back_mm) {
+        return Err(invalid(
+            "wheelset.flange_back_mm",
+            format!(
+                "{flange_back_mm} mm does not fit a {gauge_mm} mm gauge (expected between 80 % of the gauge and the gauge)"
+            ),
+        ));
+    }
+    let layout = TrackLayout {
+        gauge_mm,
+        gauge_point_depth_mm,
+        inclination,
+        flange_back_mm,
+    };
+    Ok((layout, rail_profile_inclination, smoothing_wavelength_mm))
+}
+
+/// The vertical wheel load (N) and the materials of wheel and rail.
+fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Invalid> {
+    let wheel_load_n = N_PER_KN
+        * within(
+            raw.load.wheel_load_kN.unwrap_or(DEFAULT_WHEEL_LOAD_KN),
+            (MIN_WHEEL_LOAD_N / N_PER_KN, MAX_WHEEL_LOAD_N / N_PER_KN),
+            "kN",
+            "not a wheel load",
+        )
+        .map_err(|m| invalid("load.wheel_load_kN", m))?;
+
+    let m = &raw.material;
+    // Per-body keys override the shared ones; errors name the key that was written.
+    let young = |own_key: &'static str, own: Option<f64>| -> Result<f64, Invalid> {
+        let (key, v) = written(own_key, own, "material.young_GPa", m.young_GPa);
+        let e = within(
+            v.unwrap_or(DEFAULT_YOUNG_GPA),
+            YOUNG_RANGE_GPA,
+            "GPa",
+            "not the Young's modulus of a wheel or rail material",
+        )
+        .map_err(|msg| invalid(key, msg))?;
+        Ok(MPA_PER_GPA * e)
+    };
+    let poisson = |own_key: &'static str, own: Option<f64>| -> Result<f64, Invalid> {
+        let (key, v) = written(own_key, own, "material.poisson", m.poisson);
+        let nu = v.unwrap_or(DEFAULT_POISSON);
+        if nu.is_finite() && nu >= POISSON_RANGE.0 && nu < POISSON_RANGE.1 {
+            Ok(nu)
+        } else {
+            Err(invalid(
+                key,
+                format!(
+                    "{nu} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
+                    POISSON_RANGE.0, POISSON_RANGE.1
+                ),
+            ))
+        }
+    };
+    let material = |young_key: &'static str, nu_key: &'static str, e: f64, nu: f64| {
+        crate::hertz::Material::new(e, nu).map_err(|err| {
+            let key = if matches!(err, crate::hertz::HertzError::PoissonOutOfRange { .. }) {
+                nu_key
+            } else {
+                young_key
+            };
+            invalid(key, err.to_string())
+        })
+    };
+    let wheel_material = material(
+        "material.wheel_young_GPa",
+        "material.wheel_poisson",
+        young("material.wheel_young_GPa", m.wheel_young_GPa)?,
+        poisson("material.wheel_poisson", m.wheel_poisson)?,
+    )?;
+    let rail_material = material(
+        "material.rail_young_GPa",
+        "material.rail_poisson",
+        young("material.rail_young_GPa", m.rail_young_GPa)?,
+        poisson("material.rail_poisson", m.rail_poisson)?,
+    )?;
+    Ok((wheel_load_n, wheel_material, rail_material))
+}
+
+/// The figures and image formats asked for.
+fn outputs(raw: &RawScene) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
+    let figures = match &raw.outputs.figures {
+        None => crate::stage::Figure::ALL.to_vec(),
+        Some(names) => names
+            .iter()
+            .map(|n| {
+                crate::stage::Figure::from_name(n).ok_or_else(|| {
+                    invalid(
+                        "outputs.figures",
+                        format!(
+                            "unknown figure {n:?}; known figures: {}",
+                            crate::stage::Figure::ALL
+                                .iter()
+                                .map(|f| f.name())
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    )
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+    };
+    let formats = match &raw.outputs.formats {
+        None => vec![ImageFormat::Svg, ImageFormat::Png],
+        Some(names) => names
+            .iter()
+            .map(|n| match n.to_ascii_lowercase().as_str() {
+                "svg" => Ok(ImageFormat::Svg),
+                "png" => Ok(ImageFormat::Png),
+                _ => Err(invalid(
+                    "outputs.formats",
+                    format!("unknown format {n:?}; expected \"svg\" or \"png\""),
+                )),
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+    };
+    Ok((figures, formats))
+}
+
+/// The rigid solver, with the roll option.
+fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
+    let rigid_solver = match raw.rigid.solver.as_deref() {
+        None => crate::rigid::Solver::Default,
+        Some(name) => crate::rigid::Solver::from_name(name).ok_or_else(|| {
+            invalid(
+                "rigid.solver",
+                format!("unknown solver {name:?}; expected \"default\" or \"paper\""),
+            )
+        })?,
+    };
+    let rigid_solver = match raw.rigid.roll.as_deref() {
+        None | Some("solved") => rigid_solver,
+        Some("none") if rigid_solver == crate::rigid::Solver::Default => {
+            crate::rigid::Solver::NoRoll
+        }
+        Some("none") => {
+            return Err(invalid(
+                "rigid.roll",
+                "\"none\" needs no roll iteration: it goes with solver = \"default\" only".into(),
+            ));
+        }
+        Some(other) => {
+            return Err(invalid(
+                "rigid.roll",
+                format!("unknown roll {other:?}; expected \"solved\" or \"none\""),
+            ));
+        }
+    };
+    Ok(rigid_solver)
+}
+
+/// The quasi-elastic settings and the eps values of the sensitivity figure (mm).
+fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
+    let qe = &raw.quasi_elastic;
+    let quasi_elastic = crate::quasi_elastic::Settings {
+        epsilon_mm: positive(
+            "quasi_elastic.epsilon_mm",
+            qe.epsilon_mm,
+            crate::quasi_elastic::DEFAULT_EPSILON_MM,
+        )?,
+        cutoff: within(
+            qe.cutoff.unwrap_or(crate::quasi_elastic::DEFAULT_CUTOFF),
+            CUTOFF_RANGE,
+            "eps",
+            "not a useful cut-off of the weight exp(-gap/eps) (exp(-700) is near the smallest double)",
+        )
+        .map_err(|m| invalid("quasi_elastic.cutoff", m))?,
+        quadrature: quadrature(qe).map_err(|(key, message)| invalid(key, message))?,
+    };
+    if quasi_elastic.epsilon_mm < MIN_EPSILON_MM {
+        return Err(invalid(
+            "quasi_elastic.epsilon_mm",
+            format!(
+                "{} mm is below {MIN_EPSILON_MM} mm",
+                quasi_elastic.epsilon_mm
+            ),
+        ));
+    }
+    if quasi_elastic.epsilon_mm > 1.0 {
+        return Err(invalid(
+            "quasi_elastic.epsilon_mm",
+            format!(
+                "{} mm is far beyond any elastic approach (paper: 0.01 to 0.05 mm); expected at most 1 mm",
+                quasi_elastic.epsilon_mm
+            ),
+        ));
+    }
+    let epsilon_sensitivity_mm = qe
+        .sensitivity_epsilon_mm
+        .clone()
+        .unwrap_or_else(|| DEFAULT_EPSILON_SENSITIVITY_MM.to_vec());
+    let key = "quasi_elastic.sensitivity_epsilon_mm";
+    if epsilon_sensitivity_mm.is_empty()
+        || epsilon_sensitivity_mm.len() > MAX_EPSILON_SENSITIVITY
+        || epsilon_sensitivity_mm
+            .iter()
+            .any(|e| !(e.is_finite() && *e >= MIN_EPSILON_MM && *e <= 1.0))
+    {
+        return Err(invalid(
+            key,
+            format!("expected 1 to {MAX_EPSILON_SENSITIVITY} values from {MIN_EPSILON_MM} to 1 mm"),
+        ));
+    }
+    for (i, e) in epsilon_sensitivity_mm.iter().enumerate() {
+        if epsilon_sensitivity_mm[..i]
+            .iter()
+            .any(|f| f.to_bits() == e.to_bits())
+        {
+            return Err(invalid(
+                key,
+                format!("{e} mm is listed twice: each value is one curve of the figure"),
+            ));
+        }
+    }
+    Ok((quasi_elastic, epsilon_sensitivity_mm))
+}
+
+/// The Hertz settings.
+fn hertz(raw: &RawScene) -> Result<HertzSettings, Invalid> {
+    let h = &raw.hertz;
+    let hertz = crate::hertz::sweep::Settings {
+        method: match h.method.as_deref() {
+            None | Some("exact") => crate::hertz::Method::Exact,
+            Some("paper") => crate::hertz::Method::Paper,
+            Some(other) => {
+                return Err(invalid(
+                    "hertz.method",
+                    format!("unknown method {other:?}; expected \"exact\" or \"paper\""),
+                ));
+            }
+        },
+        source: match h.contact.as_deref() {
+            None | Some("quasi_elastic") => crate::hertz::sweep::ContactSource::QuasiElastic,
+            Some("rigid") => crate::hertz::sweep::ContactSource::Rigid,
+            Some(other) => {
+                return Err(invalid(
+                    "hertz.contact",
+                    format!("unknown contact {other:?}; expected \"quasi_elastic\" or \"rigid\""),
+                ));
+            }
+        },
+        normal_load: match h.normal_load.as_deref() {
+            None | Some("projected") => crate::hertz::sweep::NormalLoad::Projected,
+            Some("vertical") => crate::hertz::sweep::NormalLoad::Vertical,
+            Some(other) => {
+                return Err(invalid(
+                    "hertz.normal_load",
+                    format!("unknown rule {other:?}; expected \"projected\" or \"vertical\""),
+                ));
+            }
+        },
+    };
+    Ok(hertz)
+}
+
+/// The quadrature of `[quasi_elastic]`: its kind and the one step key that kind takes, or
+/// the offending key and a message.
+fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)> {
+    let finite_positive = |key: &'static str, v: f64| {
+        if v.is_finite() && v > 0.0 {
+            Ok(v)
+        } else {
+            Err((
+                key,
+                format!("{} must be a positive finite number", Number(v)),
+            ))
+        }
+    };
+    match (qe.quadrature.as_deref(), qe.max_step_mm, qe.panel_widths) {
+        (None | Some("gauss_legendre"), Some(_), _) => Err((
+            "quasi_elastic.max_step_mm",
+            "applies to quadrature = \"trapezoid\" only".into(),
+        )),
+        (None | Some("gauss_legendre"), None, panel_widths) => {
+            let key = "quasi_elastic.panel_widths";
+            let panel_widths = finite_positive(
+                key,
+                panel_widths.unwrap_or(crate::quasi_elastic::DEFAULT_PANEL_WIDTHS),
+            )?;
+            if !(MIN_PANEL_WIDTHS..=MAX_PANEL_WIDTHS).contains(&panel_widths) {
+                return Err((
+                    key,
+                    format!(
+                        "{panel_widths} is outside {MIN_PANEL_WIDTHS} to {MAX_PANEL_WIDTHS} weight widths: shorter panels would take minutes, longer ones no longer resolve the weight"
+                    ),
+                ));
+            }
+            Ok(Quadrature::GaussLegendre { panel_widths })
+        }
+        (Some("trapezoid"), _, Some(_)) => Err((
+            "quasi_elastic.panel_widths",
+            "applies to quadrature = \"gauss_legendre\" only".into(),
+        )),
+        (Some("trapezoid"), step, None) => {
+            let key = "quasi_elastic.max_step_mm";
+            let max_step_mm = finite_positive(
+                key,
+                step.unwrap_or(crate::quasi_elastic::DEFAULT_MAX_STEP_MM),
+            )?;
+            if max_step_mm < MIN_TRAPEZOID_STEP_MM {
+                return Err((
+                    key,
+                    format!(
+                        "{max_step_mm} mm is below {MIN_TRAPEZOID_STEP_MM} mm: the quadrature would not finish"
+                    ),
+                ));
+            }
+            if max_step_mm > MAX_TRAPEZOID_STEP_MM {
+                return Err((
+                    key,
+                    format!(
+                        "{} mm is above {MAX_TRAPEZOID_STEP_MM} mm: the step is halved until it resolves the weight, a longer start only adds halvings",
+                        Number(max_step_mm)
+                    ),
+                ));
+            }
+            Ok(Quadrature::Trapezoid { max_step_mm })
+        }
+        (Some(other), _, _) => Err((
+            "quasi_elastic.quadrature",
+            format!("unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""),
+        )),
+    }
+}
+
+/// The largest amplitude of the equivalent conicity accepted (mm): the motion must stay on
+/// the rail heads, and `[sweep]` is limited to ±100 mm.
+pub const MAX_CONICITY_AMPLITUDE_MM: f64 = 100.0;
+
+/// The settings of `[conicity]`, or the offending key and a message.
+fn conicity_settings(
+    raw: &RawConicity,
+) -> Result<crate::conicity::Settings, (&'static str, String)> {
+    use crate::conicity::Method;
+    let method = match raw.method.as_deref() {
+        None => Method::Klingel,
+        Some(name) => Method::from_name(name).ok_or_else(|| {
+            (
+                "conicity.method",
+                format!("unknown method {name:?}; expected \"klingel\" or \"regression\""),
+            )
+        })?,
+    };
+    if let Some(a) = &raw.amplitudes_mm {
+        let key = "conicity.amplitudes_mm";
+        if a.is_empty() || a.len() > MAX_SWEEP_POSITIONS {
+            return Err((
+                key,
+                format!(
+                    "expected 1 to {MAX_SWEEP_POSITIONS} amplitudes, found {}",
+                    a.len()
+                ),
+            ));
+        }
+        for (i, v) in a.iter().enumerate() {
+            if !(v.is_finite() && *v > 0.0 && *v <= MAX_CONICITY_AMPLITUDE_MM) {
+                return Err((
+                    key,
+                    format!(
+                        "amplitude {v} (item {}) must be a number above 0 and at most {MAX_CONICITY_AMPLITUDE_MM} mm",
+                        i + 1
+                    ),
+                ));
+            }
+            if i > 0 && *v <= a[i - 1] {
+                return Err((
+                    key,
+                    format!("amplitudes must increase: {v} follows {}", a[i - 1]),
+                ));
+            }
+        }
+    }
+    Ok(crate::conicity::Settings {
+        method,
+        amplitudes_mm: raw.amplitudes_mm.clone(),
+    })
+}
+
+/// The key a value was written under: `own` (a per-side or per-body key) when given, else
+/// the shared key when given; the value, if any.
+fn written(
+    own_key: &'static str,
+    own: Option<f64>,
+    shared_key: &'static str,
+    shared: Option<f64>,
+) -> (&'static str, Option<f64>) {
+    match (own, shared) {
+        (Some(v), _) => (own_key, Some(v)),
+        (None, Some(v)) => (shared_key, Some(v)),
+        (None, None) => (own_key, None),
+    }
+}
+
+/// `v` if it is finite and within `[lo, hi]`, else a message saying what it is not
+/// (`what`) and the accepted range in `unit`.
+fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, String> {
+    if v.is_finite() && v >= lo && v <= hi {
+        Ok(v)
+    } else {
+        Err(format!(
+            "{} {unit} is {what}; expected {lo} to {hi} {unit}",
+            Number(v)
+        ))
+    }
+}
+
+/// The lateral shifts of a `[sweep]`, or the offending key and a message.
+fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
+    let from = raw.from_mm.unwrap_or(-15.0);
+    let to = raw.to_mm.unwrap_or(15.0);
+    let step = raw.step_mm.unwrap_or(0.1);
+    for (key, v) in [
+        ("sweep.from_mm", from),
+        ("sweep.to_mm", to),
+        ("sweep.step_mm", step),
+    ] {
+        if !v.is_finite() {
+            return Err((key, format!("{v} must be a finite number")));
+        }
+    }
+    if step < MIN_SWEEP_STEP_MM {
+        return Err((
+            "sweep.step_mm",
+            format!(
+                "{} mm is below {MIN_SWEEP_STEP_MM:e} mm: positions are rounded to 1e-9 mm and would repeat or be unevenly spaced",
+                Number(step)
+            ),
+        ));
+    }
+    if to < from {
+        return Err((
+            "sweep.to_mm",
+            format!("{to} is below sweep.from_mm = {from}: the sweep is empty"),
+        ));
+    }
+    for (key, v) in [("sweep.from_mm", from), ("sweep.to_mm", to)] {
+        if v.abs() > 100.0 {
+            return Err((
+                key,
+                format!("{v} mm is beyond any flange clearance (expected -100 to 100 mm)"),
+            ));
+        }
+    }
+    // A step that divides the range to within 1e-9 of a step includes `to`.
+    let n = ((to - from) / step + 1e-9).floor();
+    if n + 1.0 > MAX_SWEEP_POSITIONS as f64 {
+        return Err((
+            "sweep.step_mm",
+            format!(
+                "{step} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
+                n + 1.0
+            ),
+        ));
+    }
+    let n = n as usize;
+    // Positions computed as from + i * step (not accumulated) so that 0.0 is hit exactly
+    // when it lies on the grid, and rounded to 1e-9 mm so printed values stay clean.
+    let positions: Vec<f64> = (0..=n)
+        .map(|i| ((from + i as f64 * step) * 1e9).round() / 1e9)
+        .collect();
+    // MIN_SWEEP_STEP_MM guarantees this; checked because every stage relies on it.
+    if positions.windows(2).any(|p| p[1] <= p[0]) {
+        return Err((
+            "sweep.step_mm",
+            format!(
+                "{step} mm gives positions that are not strictly increasing after rounding to 1e-9 mm"
+            ),
+        ));
+    }
+    Ok(positions)
+}

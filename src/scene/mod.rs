@@ -1,0 +1,419 @@
+//! Scene files: a TOML description of one run (profiles, track, load, sweep, outputs).
+//!
+//! [`RawScene`] mirrors the file exactly (unknown keys are rejected); [`Scene::from_toml`]
+//! checks every value once and converts units, so nothing downstream re-checks. See the
+//! README for the format; `reports/paper/scene.toml` is the paper's scene.
+
+use crate::profile::{Profile, ProfileKind, read};
+use crate::track::{Inclination, TrackLayout};
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+mod check;
+mod raw;
+
+pub use check::MAX_CONICITY_AMPLITUDE_MM;
+pub use raw::{
+    RawConicity, RawHertz, RawLoad, RawMaterial, RawOutputs, RawQuasiElastic, RawRail, RawRigid,
+    RawScene, RawSweep, RawTrack, RawWheel, RawWheelset,
+};
+
+// The defaults of the scene keys: the paper's case (S1002 on UIC60 1:40, standard gauge and
+// wheelset, 460 mm wheels, 70 kN, steel), in one place. Gauge, gauge-point depth and
+// flange-back distance are the track module's standard values.
+
+/// Default nominal wheel radius (mm): the paper's 920 mm wheel.
+pub const DEFAULT_NOMINAL_RADIUS_MM: f64 = 460.0;
+/// Default vertical wheel load (kN): the paper's 70 kN.
+pub const DEFAULT_WHEEL_LOAD_KN: f64 = 70.0;
+/// Default Young's modulus of wheel and rail (GPa): steel.
+pub const DEFAULT_YOUNG_GPA: f64 = 210.0;
+/// Default Poisson's ratio of wheel and rail: steel.
+pub const DEFAULT_POISSON: f64 = 0.3;
+
+/// Newtons per kilonewton (the scene gives loads in kN, the numerics take N).
+const N_PER_KN: f64 = 1000.0;
+/// Megapascals per gigapascal (the scene gives moduli in GPa, the numerics take MPa).
+const MPA_PER_GPA: f64 = 1000.0;
+
+/// The largest number of lateral positions a sweep may have. A sweep of a million positions
+/// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
+pub const MAX_SWEEP_POSITIONS: usize = 100_001;
+
+/// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
+pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
+/// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
+/// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
+pub const MIN_WHEEL_LOAD_N: f64 = 1.0;
+/// The nominal wheel radii accepted (mm): from small trolley wheels to the largest
+/// locomotive wheels, with margin.
+pub const NOMINAL_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
+/// The gauges accepted (mm): every gauge in use, from 381 mm minimum-gauge railways to
+/// 1676 mm broad gauge, with margin. The wheelset is placed from it; 1e300 mm is not a track.
+pub const GAUGE_RANGE_MM: (f64, f64) = (300.0, 2000.0);
+/// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
+/// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
+pub const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
+/// Poisson's ratios accepted, `[0, 0.5)`: the mathematical range is `(-1, 0.5)`, but no
+/// wheel or rail material has a negative ratio (steels 0.27 to 0.30, polymers up to 0.45;
+/// negative ratios belong to auxetic foams), and near -1 the combined modulus `E/(1-ν²)`
+/// grows without bound. 0.5 (incompressible) is excluded by Hertz's formula itself.
+pub const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
+/// The longest filter wavelength of the profile spline (mm): longer than a wheel's tread
+/// and flange together, the filter flattens the profile itself.
+pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
+/// The smallest sweep step (mm): positions are rounded to 1e-9 mm (clean printed values),
+/// so a step must be far above that rounding for positions to stay distinct and evenly
+/// spaced; 1e-6 mm (a nanometre) is a thousand roundings and far below any physical use.
+pub const MIN_SWEEP_STEP_MM: f64 = 1e-6;
+/// The cut-off of the quasi-elastic weight, in units of eps: at least 1 (the weight is
+/// cut within one width: the average would no longer be the paper's) and at most 700
+/// (`exp(-700)` is near the smallest double; a larger cut-off cuts nothing and only widens
+/// the regions integrated).
+pub const CUTOFF_RANGE: (f64, f64) = (1.0, 700.0);
+/// The largest starting step of the trapezoid quadrature (mm): the step is halved until it
+/// resolves the weight, so a longer start only adds halvings (and above about 5e307 mm the
+/// number of halvings overflows). 10 mm is wider than any low region of a contact.
+pub const MAX_TRAPEZOID_STEP_MM: f64 = 10.0;
+/// The largest number of values of eps in the sensitivity figure: each is a quasi-elastic
+/// pass over the whole sweep.
+pub const MAX_EPSILON_SENSITIVITY: usize = 16;
+/// The smallest step of the trapezoid quadrature (mm): its nodes cover the low regions
+/// (millimetres wide), so 1e-6 mm would take half a minute per position.
+pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
+/// The shortest Gauss-Legendre panel accepted, in weight widths: the tradeoff study's
+/// reference uses 0.5; 0.05 would already take seconds per sweep.
+pub const MIN_PANEL_WIDTHS: f64 = 0.05;
+/// The longest Gauss-Legendre panel accepted, in weight widths: 8 nodes over 8 widths no
+/// longer resolve the weight (4 widths already err by 3e-7 in a and b on the paper scene).
+pub const MAX_PANEL_WIDTHS: f64 = 8.0;
+/// The smallest regularisation parameter (mm): below it the weight is narrower than the
+/// spacing of double-precision numbers around a contact point.
+pub const MIN_EPSILON_MM: f64 = 1e-6;
+
+/// Default filter wavelength of the spline through profile points read from files (mm): 0,
+/// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
+/// [`crate::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM`]); exact benchmark files do not.
+pub const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
+
+/// The sensitivity values of eps of the `qe_epsilon` figure (mm).
+pub const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
+
+/// An error in a scene: the file, the key (dotted path) where known, and what was expected.
+#[derive(Debug)]
+pub enum SceneError {
+    /// The scene file could not be read.
+    Io {
+        /// The scene file.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+    /// The TOML is malformed, has an unknown key or a value of the wrong type.
+    Syntax {
+        /// The scene file.
+        path: String,
+        /// The parser's message (names the key, line and column).
+        message: String,
+    },
+    /// A value is out of its allowed range or inconsistent with another.
+    Invalid {
+        /// The scene file.
+        path: String,
+        /// The dotted key, e.g. `track.gauge_mm`.
+        key: &'static str,
+        /// What is wrong and what was expected.
+        message: String,
+    },
+    /// A profile named by the scene could not be read or placed.
+    Profile {
+        /// The scene file.
+        path: String,
+        /// The dotted key naming the profile.
+        key: &'static str,
+        /// The reader's or placement's error.
+        message: String,
+    },
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SceneError::Io { path, source } => {
+                write!(f, "{}: cannot read scene: {source}", path.display())
+            }
+            SceneError::Syntax { path, message } => write!(f, "{path}: {message}"),
+            SceneError::Invalid { path, key, message } => {
+                write!(f, "{path}: key `{key}`: {message}")
+            }
+            SceneError::Profile { path, key, message } => {
+                write!(f, "{path}: key `{key}`: {message}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+/// Where a profile comes from: a built-in definition or a file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ProfileRef {
+    /// A built-in profile by name.
+    BuiltIn(String),
+    /// A file, resolved against the scene's folder.
+    File(PathBuf),
+}
+
+/// Image formats a figure can be written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ImageFormat {
+    /// Scalable vector graphics.
+    Svg,
+    /// Portable network graphics (text drawn with the committed font).
+    Png,
+}
+
+/// A checked scene: all values valid, units converted to mm, N, MPa, rad.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// The scene file (for messages and provenance).
+    pub path: String,
+    /// Short name.
+    pub name: String,
+    /// Report title.
+    pub title: String,
+    /// Left and right wheel profiles.
+    pub wheel_profiles: [ProfileRef; 2],
+    /// Left and right nominal radii, mm.
+    pub nominal_radius_mm: [f64; 2],
+    /// Left and right rail profiles.
+    pub rail_profiles: [ProfileRef; 2],
+    /// The scene keys the wheel's left and right profiles came from, as the user wrote them
+    /// (`wheel.profile` when one key names both), for messages.
+    pub wheel_profile_keys: [&'static str; 2],
+    /// The same for the rails.
+    pub rail_profile_keys: [&'static str; 2],
+    /// Inclination already in the rail profile data.
+    pub rail_profile_inclination: Inclination,
+    /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
+    pub smoothing_wavelength_mm: [f64; 2],
+    /// Whether wheel and rail files may have points that step back dropped.
+    pub drop_step_backs: [bool; 2],
+    /// Track and wheelset dimensions.
+    pub layout: TrackLayout,
+    /// Vertical load per wheel, N.
+    pub wheel_load_n: f64,
+    /// Wheel material.
+    pub wheel_material: crate::hertz::Material,
+    /// Rail material.
+    pub rail_material: crate::hertz::Material,
+    /// Lateral shifts of the sweep, mm, increasing.
+    pub sweep_mm: Vec<f64>,
+    /// Figures to render.
+    pub figures: Vec<crate::stage::Figure>,
+    /// Formats to render them in.
+    pub formats: Vec<ImageFormat>,
+    /// Rigid solver.
+    pub rigid_solver: crate::rigid::Solver,
+    /// Quasi-elastic settings.
+    pub quasi_elastic: crate::quasi_elastic::Settings,
+    /// Values of eps for the sensitivity figure (mm).
+    pub epsilon_sensitivity_mm: Vec<f64>,
+    /// Hertz settings over the sweep.
+    pub hertz: crate::hertz::sweep::Settings,
+    /// Equivalent conicity settings.
+    pub conicity: crate::conicity::Settings,
+}
+
+impl Scene {
+    /// Reads and checks a scene file.
+    ///
+    /// # Errors
+    /// [`SceneError`] naming the file and key.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let dir = path.parent().unwrap_or(Path::new("."));
+        Scene::from_toml(&text, &path.display().to_string(), dir)
+    }
+
+    /// Checks a scene given as TOML text; `origin` names it in messages, relative profile
+    /// paths are resolved against `dir`.
+    ///
+    /// # Errors
+    /// [`SceneError`] naming the key and what was expected.
+    pub fn from_toml(text: &str, origin: &str, dir: &Path) -> Result<Scene, SceneError> {
+        let raw: RawScene = toml::from_str(text).map_err(|e| SceneError::Syntax {
+            path: origin.to_string(),
+            message: e.to_string().trim_end().to_string(),
+        })?;
+        Scene::check(raw, origin, dir)
+    }
+
+    fn check(raw: RawScene, origin: &str, dir: &Path) -> Result<Scene, SceneError> {
+        check::checked(&raw, origin, dir).map_err(|(key, message)| SceneError::Invalid {
+            path: origin.to_string(),
+            key,
+            message,
+        })
+    }
+
+    /// Loads the profile `r` of `kind`, naming `key` in errors.
+    ///
+    /// # Errors
+    /// [`SceneError::Profile`] when the file cannot be read or is not a valid profile.
+    pub fn load_profile(
+        &self,
+        r: &ProfileRef,
+        kind: ProfileKind,
+        key: &'static str,
+    ) -> Result<Profile, SceneError> {
+        let err = |message: String| SceneError::Profile {
+            path: self.path.clone(),
+            key,
+            message,
+        };
+        match r {
+            ProfileRef::BuiltIn(name) => {
+                let p = Profile::built_in(name)
+                    .ok_or_else(|| err(format!("unknown profile {name:?}")))?;
+                if p.kind() == kind {
+                    Ok(p)
+                } else {
+                    Err(err(format!(
+                        "{name} is a {} profile, expected a {kind} profile",
+                        p.kind()
+                    )))
+                }
+            }
+            ProfileRef::File(path) => {
+                let i = match kind {
+                    ProfileKind::Wheel => 0,
+                    ProfileKind::Rail => 1,
+                };
+                let options = read::ReadOptions {
+                    step_back: if self.drop_step_backs[i] {
+                        read::StepBack::Drop
+                    } else {
+                        read::StepBack::Refuse
+                    },
+                };
+                let points = read::read_profile_with(path, kind, &options).map_err(|e| {
+                    // The fix for a measured file that folds back is a scene option: name it.
+                    let hint = match (&e, options.step_back) {
+                        (read::ReadError::NonMonotonic { .. }, read::StepBack::Refuse) => format!(
+                            " (measured profiles fold back at vertical faces: `drop_step_backs = true` under [{}] drops the points that step back)",
+                            if i == 0 { "wheel" } else { "rail" }
+                        ),
+                        _ => String::new(),
+                    };
+                    err(format!("{e}{hint}"))
+                })?;
+                let smoothing = self.smoothing_wavelength_mm[i];
+                Profile::from_points(points, smoothing)
+                    .map_err(|e| err(format!("{}: {e}", path.display())))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(text: &str) -> Result<Scene, SceneError> {
+        Scene::from_toml(text, "test.toml", Path::new("."))
+    }
+
+    #[test]
+    fn defaults_are_the_paper_case() {
+        let s = scene("").unwrap();
+        assert_eq!(s.sweep_mm.len(), 301);
+        assert!(s.sweep_mm[150].abs() < 1e-15 && (s.sweep_mm[300] - 15.0).abs() < 1e-12);
+        assert!((s.wheel_load_n - 70_000.0).abs() < 1e-9);
+        assert!((s.wheel_material.young_mpa - 210_000.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn errors_name_the_key() {
+        let cases = [
+            ("[track]\ngauge_mm = -1435.0", "track.gauge_mm"),
+            ("[material]\npoisson = 0.5", "material.poisson"),
+            ("[sweep]\nstep_mm = 0.0", "sweep.step_mm"),
+            ("[sweep]\nfrom_mm = 5.0\nto_mm = 1.0", "sweep.to_mm"),
+            (
+                "[sweep]\nfrom_mm = -15.0\nto_mm = 15.0\nstep_mm = 1e-5",
+                "sweep.step_mm",
+            ),
+            ("[load]\nwheel_load_kN = -70.0", "load.wheel_load_kN"),
+            ("[rail]\ninclination = \"1:x\"", "rail.inclination"),
+            ("[outputs]\nfigures = [\"nope\"]", "outputs.figures"),
+            (
+                "[quasi_elastic]\npanel_widths = 20.0",
+                "quasi_elastic.panel_widths",
+            ),
+            (
+                "[quasi_elastic]\npanel_widths = 0.01",
+                "quasi_elastic.panel_widths",
+            ),
+            (
+                "[quasi_elastic]\nquadrature = \"trapezoid\"\npanel_widths = 2.0",
+                "quasi_elastic.panel_widths",
+            ),
+            (
+                "[quasi_elastic]\nmax_step_mm = 0.05",
+                "quasi_elastic.max_step_mm",
+            ),
+            // Bounds of issue 16, each naming the key as written.
+            ("[material]\npoisson = -0.967", "material.poisson"),
+            ("[material]\nrail_poisson = -0.1", "material.rail_poisson"),
+            ("[material]\nyoung_GPa = 1e300", "material.young_GPa"),
+            (
+                "[material]\nwheel_young_GPa = 1e-300",
+                "material.wheel_young_GPa",
+            ),
+            (
+                "[wheel]\nnominal_radius_mm = 1e300",
+                "wheel.nominal_radius_mm",
+            ),
+            (
+                "[wheel]\nright_nominal_radius_mm = 50.0",
+                "wheel.right_nominal_radius_mm",
+            ),
+            ("[track]\ngauge_mm = 1e300", "track.gauge_mm"),
+            ("[load]\nwheel_load_kN = 5e-324", "load.wheel_load_kN"),
+            (
+                "[wheel]\nsmoothing_wavelength_mm = 1e300",
+                "wheel.smoothing_wavelength_mm",
+            ),
+            ("[quasi_elastic]\ncutoff = 1.2e57", "quasi_elastic.cutoff"),
+            ("[quasi_elastic]\ncutoff = 0.5", "quasi_elastic.cutoff"),
+            (
+                "[quasi_elastic]\nquadrature = \"trapezoid\"\nmax_step_mm = 1.7976931348623157e308",
+                "quasi_elastic.max_step_mm",
+            ),
+            (
+                "[quasi_elastic]\nsensitivity_epsilon_mm = [0.01, 0.01]",
+                "quasi_elastic.sensitivity_epsilon_mm",
+            ),
+            (
+                "[sweep]\nfrom_mm = 0.0\nto_mm = 1e-9\nstep_mm = 1e-10",
+                "sweep.step_mm",
+            ),
+        ];
+        for (text, key) in cases {
+            let e = scene(text).unwrap_err().to_string();
+            assert!(e.contains(key), "{text:?} gave {e}");
+        }
+    }
+
+    #[test]
+    fn unknown_keys_are_rejected_with_their_name() {
+        let e = scene("[track]\ngauge = 1435.0").unwrap_err().to_string();
+        assert!(e.contains("gauge") && e.contains("unknown field"), "{e}");
+        let e = scene("colour = \"red\"").unwrap_err().to_string();
+        assert!(e.contains("colour"), "{e}");
+    }
+}

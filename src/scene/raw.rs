@@ -1,0 +1,214 @@
+//! The scene file as serde reads it: one struct per table, every key optional, unknown keys
+//! rejected. [`super::Scene::from_toml`] checks the values.
+
+#![allow(non_snake_case)] // keys carry their units as written: `wheel_load_kN`, `young_GPa`
+
+use serde::Deserialize;
+
+/// The scene file as written: every key optional where a default exists.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawScene {
+    /// Short name, used for the output folder.
+    pub name: Option<String>,
+    /// Title shown in the report.
+    pub title: Option<String>,
+    /// `[wheel]`.
+    #[serde(default)]
+    pub wheel: RawWheel,
+    /// `[rail]`.
+    #[serde(default)]
+    pub rail: RawRail,
+    /// `[track]`.
+    #[serde(default)]
+    pub track: RawTrack,
+    /// `[wheelset]`.
+    #[serde(default)]
+    pub wheelset: RawWheelset,
+    /// `[load]`.
+    #[serde(default)]
+    pub load: RawLoad,
+    /// `[material]`.
+    #[serde(default)]
+    pub material: RawMaterial,
+    /// `[sweep]`.
+    #[serde(default)]
+    pub sweep: RawSweep,
+    /// `[outputs]`.
+    #[serde(default)]
+    pub outputs: RawOutputs,
+    /// `[rigid]`.
+    #[serde(default)]
+    pub rigid: RawRigid,
+    /// `[quasi_elastic]`.
+    #[serde(default)]
+    pub quasi_elastic: RawQuasiElastic,
+    /// `[hertz]`.
+    #[serde(default)]
+    pub hertz: RawHertz,
+    /// `[conicity]`.
+    #[serde(default)]
+    pub conicity: RawConicity,
+}
+
+/// `[conicity]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawConicity {
+    /// "klingel" (EN 15302 Annex B, default) or "regression" (Annex C).
+    pub method: Option<String>,
+    /// Amplitudes (mm, increasing); default 0.5 to 10 mm in 0.1 mm steps, clipped to what
+    /// the sweep supports.
+    pub amplitudes_mm: Option<Vec<f64>>,
+}
+
+/// `[rigid]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawRigid {
+    /// "default" or "paper".
+    pub solver: Option<String>,
+    /// "solved" (default: the roll that puts both wheels on their rails) or "none" (each
+    /// wheel lowered onto its rail, the wheelset level: EN 15302 Annex E's Δr).
+    pub roll: Option<String>,
+}
+
+/// `[quasi_elastic]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawQuasiElastic {
+    /// Regularisation parameter eps (mm).
+    pub epsilon_mm: Option<f64>,
+    /// Values of eps for the sensitivity figure (mm).
+    pub sensitivity_epsilon_mm: Option<Vec<f64>>,
+    /// Cut-off of the weight in units of eps.
+    pub cutoff: Option<f64>,
+    /// "gauss_legendre" (default) or "trapezoid".
+    pub quadrature: Option<String>,
+    /// Largest step of the trapezoid quadrature (mm).
+    pub max_step_mm: Option<f64>,
+    /// Panel length of the Gauss-Legendre quadrature, in weight widths.
+    pub panel_widths: Option<f64>,
+}
+
+/// `[hertz]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawHertz {
+    /// "exact" or "paper".
+    pub method: Option<String>,
+    /// "quasi_elastic" or "rigid".
+    pub contact: Option<String>,
+    /// "projected" or "vertical".
+    pub normal_load: Option<String>,
+}
+
+/// `[wheel]`: profile (both sides, or per side) and nominal radius.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawWheel {
+    /// Built-in name or a path (relative to the scene file) for both wheels.
+    pub profile: Option<String>,
+    /// Overrides `profile` for the left wheel.
+    pub left_profile: Option<String>,
+    /// Overrides `profile` for the right wheel.
+    pub right_profile: Option<String>,
+    /// Nominal rolling radius at the taping line, both wheels.
+    pub nominal_radius_mm: Option<f64>,
+    /// Overrides `nominal_radius_mm` for the left wheel.
+    pub left_nominal_radius_mm: Option<f64>,
+    /// Overrides `nominal_radius_mm` for the right wheel.
+    pub right_nominal_radius_mm: Option<f64>,
+    /// Filter wavelength of the spline through wheel profiles read from files (0: none).
+    pub smoothing_wavelength_mm: Option<f64>,
+    /// Drop measured points that step back (MiniProf fold-backs) instead of refusing them.
+    pub drop_step_backs: Option<bool>,
+}
+
+/// `[rail]`: profile (both sides, or per side) and inclination.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawRail {
+    /// Built-in name or a path (relative to the scene file) for both rails.
+    pub profile: Option<String>,
+    /// Overrides `profile` for the left rail.
+    pub left_profile: Option<String>,
+    /// Overrides `profile` for the right rail.
+    pub right_profile: Option<String>,
+    /// Inclination of the rails in the track ("1:40", "1:20", "vertical", radians).
+    pub inclination: Option<String>,
+    /// Inclination already contained in the profile data (default "vertical": upright).
+    pub profile_inclination: Option<String>,
+    /// Filter wavelength of the spline through rail profiles read from files (0: none).
+    pub smoothing_wavelength_mm: Option<f64>,
+    /// Drop measured points that step back (MiniProf fold-backs) instead of refusing them.
+    pub drop_step_backs: Option<bool>,
+}
+
+/// `[track]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawTrack {
+    /// Gauge between the gauge points.
+    pub gauge_mm: Option<f64>,
+    /// Depth of the gauge points below the top of rail.
+    pub gauge_point_depth_mm: Option<f64>,
+}
+
+/// `[wheelset]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawWheelset {
+    /// Distance between the inner faces of the wheels.
+    pub flange_back_mm: Option<f64>,
+}
+
+/// `[load]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+#[allow(non_snake_case)]
+pub struct RawLoad {
+    /// Vertical load per wheel in kN.
+    pub wheel_load_kN: Option<f64>,
+}
+
+/// `[material]`: both bodies, or per body.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+#[allow(non_snake_case)]
+pub struct RawMaterial {
+    /// Young's modulus of both bodies, GPa.
+    pub young_GPa: Option<f64>,
+    /// Poisson's ratio of both bodies.
+    pub poisson: Option<f64>,
+    /// Overrides `young_GPa` for the wheel.
+    pub wheel_young_GPa: Option<f64>,
+    /// Overrides `young_GPa` for the rail.
+    pub rail_young_GPa: Option<f64>,
+    /// Overrides `poisson` for the wheel.
+    pub wheel_poisson: Option<f64>,
+    /// Overrides `poisson` for the rail.
+    pub rail_poisson: Option<f64>,
+}
+
+/// `[sweep]`: lateral positions of the wheelset.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawSweep {
+    /// First lateral shift.
+    pub from_mm: Option<f64>,
+    /// Last lateral shift (included when the step divides the range).
+    pub to_mm: Option<f64>,
+    /// Step between lateral shifts.
+    pub step_mm: Option<f64>,
+}
+
+/// `[outputs]`.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawOutputs {
+    /// Figure names (see [`crate::stage::Figure`]).
+    pub figures: Option<Vec<String>>,
+    /// Image formats: "svg", "png".
+    pub formats: Option<Vec<String>>,
+}
