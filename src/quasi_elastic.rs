@@ -23,7 +23,7 @@
 //! * Separate low regions of the gap (tread and flange) are averaged separately: one
 //!   [`Patch`] per local minimum, split where a barrier higher than `eps` separates minima.
 
-use crate::rigid::gap::{SideGap, SidePose};
+use crate::gap::{SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
 use crate::track::{Placement, Side};
 
@@ -292,7 +292,7 @@ const SHORT_PIECE: f64 = 1.0 / 12.0;
 /// errs by 2e-6 in a and b (2.3e-8 at 1 mm).
 const WIDTH_BOUNDS_MM: (f64, f64) = (1e-3, 1.0);
 
-fn fields_of(side: &SideGap, p: &crate::rigid::gap::GapPoint) -> [f64; FIELDS] {
+fn fields_of(side: &SideGap, p: &crate::gap::GapPoint) -> [f64; FIELDS] {
     [
         p.s,
         side.sign * p.y,
@@ -331,10 +331,10 @@ fn side_average(
         .min(eps / at_rigid.dg.abs().max(f64::MIN_POSITIVE));
     let limit = settings.cutoff * eps;
     // Regions where the gap may be below the cut-off; the coarse gap errs by less than
-    // the margin (see rigid::gap::COARSE_MARGIN_MM).
+    // the margin (see gap::COARSE_MARGIN_MM).
     side.low_regions(
         &pose,
-        at_rigid.g + limit + crate::rigid::gap::COARSE_MARGIN_MM,
+        at_rigid.g + limit + crate::gap::COARSE_MARGIN_MM,
         &mut work.regions,
     );
     let domain = side.wheel().profile().domain();
@@ -449,7 +449,7 @@ fn side_average(
 
 /// Adds the neighbourhood of the rigid contact point to the low regions (sorted, disjoint)
 /// when no region contains it. The coarse scan's margin assumes gap curvatures up to
-/// 1/5 mm^-1 (see [`crate::rigid::gap::COARSE_MARGIN_MM`]); a sharper minimum, such as the
+/// 1/5 mm^-1 (see [`crate::gap::COARSE_MARGIN_MM`]); a sharper minimum, such as the
 /// S1002 flange-back arc near its vertical tangent (d'' = 370 1/mm), can lie between coarse
 /// samples that are all above the threshold. The rigid point is the minimum by definition.
 /// The added region stays inside the wheel's `domain`.
@@ -457,7 +457,7 @@ fn include_rigid_point(regions: &mut Vec<(f64, f64)>, s_rigid: f64, domain: (f64
     if regions.iter().any(|r| (r.0..=r.1).contains(&s_rigid)) {
         return;
     }
-    let step = crate::rigid::gap::COARSE_STEP_MM;
+    let step = crate::gap::COARSE_STEP_MM;
     regions.push((
         (s_rigid - step).max(domain.0),
         (s_rigid + step).min(domain.1),
@@ -571,7 +571,7 @@ fn gauss_region(
 struct Gauss<'a, 'b> {
     side: &'a SideGap<'b>,
     pose: &'a SidePose,
-    /// Added to [`GapPoint::g`](crate::rigid::gap::GapPoint) to measure gaps from the
+    /// Added to [`GapPoint::g`](crate::gap::GapPoint) to measure gaps from the
     /// wheel's minimum (mm).
     offset: f64,
     eps: f64,

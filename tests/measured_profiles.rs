@@ -6,11 +6,11 @@
 //! and plausible or flagged, and nothing may panic.
 
 use std::path::{Path, PathBuf};
+use wheelrail::gap::{SideGap, SidePose};
 use wheelrail::profile::read::{ReadError, ReadOptions, StepBack, read_profile, read_profile_with};
 use wheelrail::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM;
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, Settings};
-use wheelrail::rigid::gap::{SideGap, SidePose};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::track::{
     Inclination, PlacedRail, PlacedWheel, Placement, Side, SidePair, TrackLayout,

@@ -220,7 +220,7 @@ fn weight_shares_match_an_independent_integration() {
     // integral of exp(-(d - d_min)/eps) on its side of the barrier over the whole wheel,
     // summed independently by a trapezoid rule every 0.0005 mm (first-order error where a
     // curvature jumps: below 1e-4 of the share, measured).
-    use wheelrail::rigid::gap::{SideGap, SidePose};
+    use wheelrail::gap::{SideGap, SidePose};
     let sweep: Vec<f64> = (0..=30).map(|i| 3.5 + 0.1 * f64::from(i)).collect();
     let r = rigid::search(placement(), &sweep, Solver::Default);
     let q = quasi_elastic::search(placement(), &r, &Settings::default());

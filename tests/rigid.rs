@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use std::path::Path;
 use std::sync::OnceLock;
-use wheelrail::rigid::gap::{SideGap, SidePose};
+use wheelrail::gap::{SideGap, SidePose};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::scene::Scene;
 use wheelrail::track::{Placement, Side};

@@ -46,11 +46,11 @@
 use proptest::prelude::*;
 use std::f64::consts::PI;
 use std::path::Path;
+use wheelrail::gap::{SideGap, SidePose};
 use wheelrail::hertz::{self, Contact, Material, Method, StopReason};
 use wheelrail::profile::read::{ProfileFormat, parse_str};
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, Settings};
-use wheelrail::rigid::gap::{SideGap, SidePose};
 use wheelrail::rigid::{self, Position, RigidSweep, Solver, Stop};
 use wheelrail::scene::Scene;
 use wheelrail::track::{

@@ -1,7 +1,7 @@
 //! Contact-point jumps of a sweep, located to [`JUMP_REFINE_MM`](super::JUMP_REFINE_MM).
 
-use super::gap::{self, SideGap, SidePose};
 use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, side_index};
+use crate::gap::{self, SideGap, SidePose};
 use crate::track::Side;
 
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined to

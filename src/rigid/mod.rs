@@ -23,7 +23,6 @@
 //!   every [`PAPER_TABLE_STEP_MM`], stopping at `|d_min,r - d_min,l| <` 1e-4 mm (its Eq. 4).
 
 mod continuation;
-pub mod gap;
 mod jumps;
 mod paper;
 mod roll;
@@ -33,8 +32,8 @@ use jumps::find_jumps;
 use paper::solve_paper;
 use roll::{Scratch, solve_default, solve_no_roll};
 
+use crate::gap::{GapPoint, SideGap};
 use crate::track::{Placement, Side};
-use gap::{GapPoint, SideGap};
 
 /// Residual `|m_L - m_R|` at which the default solver stops (mm). The issue asks for 1e-9;
 /// Newton reaches 1e-12 in one more step, so the margin costs nothing.

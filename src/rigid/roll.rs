@@ -2,11 +2,11 @@
 //! minima followed in their basins and verified by a scan at the solution; and the level
 //! wheelset (no roll) of EN 15302 Annex E.
 
-use super::gap::{self, Basin, GapPoint, SideGap, SidePose};
 use super::{
     COLLAPSED_RESIDUAL_MM, DEFAULT_MAX_ITER, Position, ROLL_RESIDUAL_TOL_MM, Stop,
     TWO_POINT_GAP_TOL_MM, finish, no_contact,
 };
+use crate::gap::{self, Basin, GapPoint, SideGap, SidePose};
 
 /// Buffers reused across positions (no allocation per position). The basins of the last
 /// solution start the next position (continuation): its scan at the solution verifies them.

@@ -5,7 +5,7 @@ use super::PlacedRail;
 /// Step of the uniform table of rail heights [`PlacedRail::heights`] (mm): linear
 /// interpolation errs by at most `Z'' h^2 / 8`, 4e-6 mm on the R13 gauge corner at the
 /// 70-degree contact angle of a flange (`Z'' = (1 + tan^2)^1.5 / R`); the coarse scans that
-/// read it allow [`crate::rigid::gap::COARSE_MARGIN_MM`].
+/// read it allow [`crate::gap::COARSE_MARGIN_MM`].
 pub const HEIGHT_TABLE_STEP_MM: f64 = 0.02;
 
 /// A uniform table of a placed rail's heights `Z(Y)` in the side frame, interpolated
