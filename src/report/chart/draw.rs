@@ -778,21 +778,8 @@ impl Occupancy {
         };
         let line_radius = f64::from(LINE_WIDTH);
         for s in &chart.series {
-            let points: Vec<Point> = s
-                .points
-                .iter()
-                .map(|&(x, y)| (xmap.forward(x), ymap.forward(y)))
-                .collect();
+            let (points, lines) = series_lines(s, xmap, ymap, frame);
             let finite = |p: &Point| p.0.is_finite() && p.1.is_finite();
-            let lines: Vec<Vec<Point>> = match s.style {
-                SeriesStyle::Line | SeriesStyle::LineWithMarkers => polylines(&points, frame),
-                SeriesStyle::Segments => points
-                    .chunks_exact(2)
-                    .filter(|c| finite(&c[0]) && finite(&c[1]))
-                    .filter_map(|c| frame.clip(c[0], c[1]).map(|(a, b, _, _)| vec![a, b]))
-                    .collect(),
-                SeriesStyle::Markers => Vec::new(),
-            };
             for line in &lines {
                 if line.len() == 1 {
                     grid.mark(to_px(line[0]), 2.0);
@@ -1006,6 +993,32 @@ impl Look {
     }
 }
 
+/// A series' points mapped to the chart's axes, and the lines to draw through them clipped
+/// to the frame (none for markers): what is drawn, and what the legend placement avoids.
+fn series_lines(
+    series: &Series,
+    xmap: AxisMap,
+    ymap: AxisMap,
+    frame: &Frame,
+) -> (Vec<Point>, Vec<Vec<Point>>) {
+    let finite = |p: &Point| p.0.is_finite() && p.1.is_finite();
+    let points: Vec<Point> = series
+        .points
+        .iter()
+        .map(|&(x, y)| (xmap.forward(x), ymap.forward(y)))
+        .collect();
+    let lines = match series.style {
+        SeriesStyle::Line | SeriesStyle::LineWithMarkers => polylines(&points, frame),
+        SeriesStyle::Segments => points
+            .chunks_exact(2)
+            .filter(|c| finite(&c[0]) && finite(&c[1]))
+            .filter_map(|c| frame.clip(c[0], c[1]).map(|(a, b, _, _)| vec![a, b]))
+            .collect(),
+        SeriesStyle::Markers => Vec::new(),
+    };
+    (points, lines)
+}
+
 fn draw_series<DB: DrawingBackend>(
     ctx: &mut Ctx<'_, DB>,
     series: &Series,
@@ -1016,20 +1029,7 @@ fn draw_series<DB: DrawingBackend>(
 ) -> Result<(), ChartError> {
     let look = Look::of(series, position);
     let finite = |p: &Point| p.0.is_finite() && p.1.is_finite();
-    let points: Vec<Point> = series
-        .points
-        .iter()
-        .map(|&(x, y)| (xmap.forward(x), ymap.forward(y)))
-        .collect();
-    let lines: Vec<Vec<Point>> = match series.style {
-        SeriesStyle::Line | SeriesStyle::LineWithMarkers => polylines(&points, frame),
-        SeriesStyle::Segments => points
-            .chunks_exact(2)
-            .filter(|c| finite(&c[0]) && finite(&c[1]))
-            .filter_map(|c| frame.clip(c[0], c[1]).map(|(a, b, _, _)| vec![a, b]))
-            .collect(),
-        SeriesStyle::Markers => Vec::new(),
-    };
+    let (points, lines) = series_lines(series, xmap, ymap, frame);
     let markers: Vec<Point> = match series.style {
         SeriesStyle::Markers | SeriesStyle::LineWithMarkers => points
             .iter()
