@@ -128,6 +128,9 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
 
     let staging = dir.join(format!(".wheelrail-new-{}", std::process::id()));
     let backup = dir.join(format!(".wheelrail-old-{}", std::process::id()));
+    // A staging folder left by a killed run that had this process id holds only copies of
+    // new outputs: cleared. (A backup folder is left alone: it may hold an old report.)
+    let _ = std::fs::remove_dir_all(&staging);
     let result = (|| {
         let write = |e: std::io::Error| folder_error(dir, "write into the folder", &e);
         std::fs::create_dir(&staging).map_err(write)?;
@@ -139,7 +142,13 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
         swap(dir, &staging, &backup, &names, &stale)
     })();
     let _ = std::fs::remove_dir_all(&staging);
-    let _ = std::fs::remove_dir_all(&backup);
+    if result.is_ok() {
+        let _ = std::fs::remove_dir_all(&backup);
+    } else {
+        // Empty once the old files are back; if one could not be put back it stays there,
+        // not deleted.
+        let _ = std::fs::remove_dir(&backup);
+    }
     result
 }
 
