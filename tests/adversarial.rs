@@ -24,9 +24,10 @@
 
 mod common;
 
+use common::root;
 use proptest::prelude::*;
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::Command;
 use std::time::Instant;
 
@@ -35,10 +36,6 @@ fn cases() -> u32 {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(150)
-}
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// A float as TOML writes it (`nan`, `inf`; Rust's `{:?}` otherwise: `1e300`, `5e-324`).

@@ -5,29 +5,18 @@
 
 mod common;
 
+use common::{bin, root, scratch, stderr};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 use wheelrail::quasi_elastic::{self, Quadrature, Settings};
 use wheelrail::scene::Scene;
 
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// A fresh, empty folder under the target directory for one test.
-fn scratch(name: &str) -> PathBuf {
-    let dir = root().join("target/test-scratch/robustness").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 /// Writes `text` as `scene.toml` in a fresh folder and runs `wheelrail report` on it.
 fn run_scene(name: &str, text: &str) -> (PathBuf, Output) {
-    let dir = scratch(name);
+    let dir = scratch(&format!("robustness/{name}"));
     let scene = dir.join("scene.toml");
     std::fs::write(&scene, text).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_wheelrail"))
+    let out = bin()
         .arg("report")
         .arg(&scene)
         .arg("--out")
@@ -35,10 +24,6 @@ fn run_scene(name: &str, text: &str) -> (PathBuf, Output) {
         .output()
         .unwrap();
     (dir.join("out"), out)
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
 /// Exit code 2, no panic, and every `words` in the message.
