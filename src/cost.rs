@@ -8,9 +8,9 @@
 //! makes it, clipped to the profile, and counts every spline knot in it.
 
 use crate::pipeline::{self, Stage};
-use crate::profile::ProfileKind;
 use crate::quasi_elastic::Quadrature;
-use crate::scene::{Scene, SceneError};
+use crate::scene::Scene;
+use crate::track::Placement;
 
 /// The largest estimated work a run may take without `--allow-long` (gap evaluations):
 /// 3e8, about 25 s on one core of the development machine, at most a minute on a slow one.
@@ -63,20 +63,18 @@ impl Estimate {
 }
 
 /// Estimates the work of `scene`: positions × wheels × (rigid iterations + quadrature
-/// nodes of every quasi-elastic pass) + the conicity's amplitudes × pieces. Profiles are
-/// read (not placed) to count the knots of splines.
-///
-/// # Errors
-/// [`SceneError::Profile`] when a profile cannot be read (the run would fail the same way).
-pub fn estimate(scene: &Scene) -> Result<Estimate, SceneError> {
+/// nodes of every quasi-elastic pass) + the conicity's amplitudes × pieces. The profiles
+/// come from the run's own `placement` (the profile stage, which every run does first), so
+/// that the knots of splines are counted without reading the files again.
+pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     let stages = pipeline::needed_stages(scene);
     let positions = scene.sweep_mm.len() as f64;
     let mut drivers: Vec<(&'static str, String)> = Vec::new();
     if !stages.contains(&Stage::Rigid) {
-        return Ok(Estimate {
+        return Estimate {
             evaluations: 0.0,
             drivers,
-        });
+        };
     }
     drivers.push((
         "sweep.step_mm",
@@ -103,7 +101,7 @@ pub fn estimate(scene: &Scene) -> Result<Estimate, SceneError> {
         ));
     }
     if !passes.is_empty() {
-        let (width_mm, breaks_per_mm) = break_density(scene)?;
+        let (width_mm, breaks_per_mm) = break_density(placement);
         let qe = &scene.quasi_elastic;
         for eps in passes {
             per_wheel += quadrature_nodes(qe.quadrature, qe.cutoff, eps, width_mm, breaks_per_mm);
@@ -132,10 +130,10 @@ pub fn estimate(scene: &Scene) -> Result<Estimate, SceneError> {
             drivers.push(("conicity.amplitudes_mm", format!("{amplitudes} amplitudes")));
         }
     }
-    Ok(Estimate {
+    Estimate {
         evaluations,
         drivers,
-    })
+    }
 }
 
 /// Quadrature nodes of one quasi-elastic pass, one wheel, one position.
@@ -166,29 +164,23 @@ fn quadrature_nodes(
     }
 }
 
-/// The widest profile domain of the scene (mm) and the largest density of breaks (section
-/// joints or spline knots) per mm of the wheel and rail profiles together.
-fn break_density(scene: &Scene) -> Result<(f64, f64), SceneError> {
+/// The widest profile domain of the placement (mm) and the largest density of breaks
+/// (section joints or spline knots) per mm of its wheel and rail profiles together.
+fn break_density(placement: &Placement) -> (f64, f64) {
     let mut width: f64 = 0.0;
     let mut density = [0.0_f64; 2];
-    // The keys as the scene wrote them, for the reader's errors.
-    let keys = [scene.wheel_profile_keys, scene.rail_profile_keys];
-    for (k, (kind, refs)) in [
-        (ProfileKind::Wheel, &scene.wheel_profiles),
-        (ProfileKind::Rail, &scene.rail_profiles),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        for (side, r) in refs.iter().enumerate() {
-            let p = scene.load_profile(r, kind, keys[k][side])?;
+    for pair in [&placement.left, &placement.right] {
+        for (k, p) in [pair.wheel.profile(), pair.rail.profile()]
+            .into_iter()
+            .enumerate()
+        {
             let (lo, hi) = p.domain();
             let w = (hi - lo).max(1.0);
             width = width.max(w);
             density[k] = density[k].max(p.breaks().len() as f64 / w);
         }
     }
-    Ok((width, density[0] + density[1]))
+    (width, density[0] + density[1])
 }
 
 #[cfg(test)]
@@ -200,20 +192,25 @@ mod tests {
         Scene::from_toml(text, "test.toml", Path::new(".")).unwrap()
     }
 
+    /// The estimate of a scene given as TOML text, with its own placement.
+    fn estimate_of(text: &str) -> Estimate {
+        let s = scene(text);
+        estimate(&s, &pipeline::place(&s).unwrap())
+    }
+
     #[test]
     fn the_paper_scene_is_far_within_the_budget() {
-        let e = estimate(&scene("")).unwrap();
+        let e = estimate_of("");
         // 301 positions, 1 + 5 passes of about 40 nodes: about 2e5 evaluations.
         assert!(e.evaluations < 1e-2 * WORK_BUDGET, "{}", e.describe());
     }
 
     #[test]
     fn a_fine_trapezoid_with_a_large_cutoff_is_refused_naming_its_keys() {
-        let e = estimate(&scene(
+        let e = estimate_of(
             "[quasi_elastic]\nquadrature = \"trapezoid\"\nmax_step_mm = 0.0001\ncutoff = 700.0\n\
              [outputs]\nfigures = [\"qe_contact_points\"]",
-        ))
-        .unwrap();
+        );
         assert!(!e.within_budget(), "{}", e.describe());
         let text = e.describe();
         assert!(
@@ -224,7 +221,7 @@ mod tests {
 
     #[test]
     fn profiles_only_cost_nothing() {
-        let e = estimate(&scene("[outputs]\nfigures = [\"profiles\"]")).unwrap();
+        let e = estimate_of("[outputs]\nfigures = [\"profiles\"]");
         assert!(e.evaluations.abs() < 1e-300 && e.within_budget());
     }
 }

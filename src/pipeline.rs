@@ -109,20 +109,23 @@ pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
 /// # Errors
 /// [`crate::Error`] when a profile cannot be read or placed.
 pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
-    run_with_progress(scene, false)
+    run_gated(scene, |_| Ok(false))
 }
 
-/// [`run`], printing each stage's start and end to stderr when `progress` is set.
+/// [`run`], with `gate` called on the placement (the first stage, which every run does)
+/// before any other stage: it may refuse the run (a work budget that needs the profiles),
+/// or return whether to print each stage's start and end to stderr.
 ///
 /// # Errors
-/// As [`run`].
-pub fn run_with_progress(scene: &Scene, progress: bool) -> Result<Results, crate::Error> {
+/// As [`run`], and `gate`'s error.
+pub fn run_gated(
+    scene: &Scene,
+    gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
+) -> Result<Results, crate::Error> {
     let stages = needed_stages(scene);
-    let mut record = RunRecord {
-        stages: Vec::new(),
-        progress,
-    };
+    let mut record = RunRecord::default();
     let placement = record.time(Stage::Profiles, || place(scene))?;
+    record.progress = gate(&placement)?;
     let mut results = Results {
         placement,
         rigid: None,

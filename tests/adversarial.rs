@@ -539,7 +539,10 @@ proptest! {
         // The same scene through the library: its estimated work.
         let estimate = wheelrail::scene::Scene::from_toml(&text, "scene.toml", &dir)
             .ok()
-            .and_then(|s| wheelrail::cost::estimate(&s).ok());
+            .and_then(|s| {
+                let placement = wheelrail::pipeline::place(&s).ok()?;
+                Some(wheelrail::cost::estimate(&s, &placement))
+            });
         let code = o.status.code();
         log_line(&format!(
             "{} {seconds:.3} {:.3e} {}",

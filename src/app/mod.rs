@@ -223,8 +223,9 @@ fn report(
     allow_long: bool,
 ) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
-    let progress = within_budget(&scene, allow_long)?;
-    let results = pipeline::run_with_progress(&scene, progress)?;
+    let results = pipeline::run_gated(&scene, |placement| {
+        within_budget(&scene, placement, allow_long)
+    })?;
     if timings {
         for (stage, seconds) in &results.record.stages {
             eprintln!("{:<20} {:>10.3} ms", stage.name(), 1e3 * seconds);
@@ -358,8 +359,12 @@ fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<Exi
 
 /// Refuses a scene whose estimated work exceeds [`crate::cost::WORK_BUDGET`] unless
 /// `allow_long`; returns whether to show progress (a long run that was allowed).
-fn within_budget(scene: &Scene, allow_long: bool) -> Result<bool, Error> {
-    let estimate = crate::cost::estimate(scene)?;
+fn within_budget(
+    scene: &Scene,
+    placement: &crate::track::Placement,
+    allow_long: bool,
+) -> Result<bool, Error> {
+    let estimate = crate::cost::estimate(scene, placement);
     if estimate.within_budget() {
         return Ok(false);
     }
@@ -380,8 +385,7 @@ fn within_budget(scene: &Scene, allow_long: bool) -> Result<bool, Error> {
 
 fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
-    within_budget(&scene, false)?;
-    let results = pipeline::run(&scene)?;
+    let results = pipeline::run_gated(&scene, |placement| within_budget(&scene, placement, false))?;
     let produced: Vec<(String, String)> = outputs::tables(&scene, &results)?
         .into_iter()
         .map(|t| (t.file, t.table.to_csv_with(CSV_FORMAT)))
