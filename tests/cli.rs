@@ -3,18 +3,8 @@
 
 mod common;
 
-use common::{bin, root, scratch, stderr};
+use common::{assert_clean_failure, bin, root, scratch, stderr};
 use std::path::{Path, PathBuf};
-use std::process::Output;
-
-fn assert_clean_failure(o: &Output, code: i32, must_contain: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(code), "stderr: {err}");
-    assert!(!err.contains("panicked"), "panic: {err}");
-    for m in must_contain {
-        assert!(err.contains(m), "expected {m:?} in: {err}");
-    }
-}
 
 /// Runs `wheelrail report SCENE --timings` and returns its standard error (the stages run).
 fn report_timings(scene: &Path) -> String {

@@ -3,27 +3,15 @@
 
 mod common;
 
-use common::{bin, root, scratch, stderr};
+use common::{assert_clean_failure, bin, report_scene, root, scratch, stderr};
 
 /// Runs `wheelrail report` on a scene with `body`, into a fresh folder, and expects exit 2
 /// with every piece of `must` in the message (and none of `must_not`).
 fn refused(name: &str, body: &str, must: &[&str], must_not: &[&str]) {
     let dir = scratch(name);
-    let scene = dir.join("scene.toml");
-    std::fs::write(&scene, format!("name = \"t\"\n{body}\n")).unwrap();
-    let o = bin()
-        .arg("report")
-        .arg(&scene)
-        .arg("--out")
-        .arg(dir.join("out"))
-        .output()
-        .unwrap();
+    let o = report_scene(&dir, &format!("name = \"t\"\n{body}\n"));
+    assert_clean_failure(&o, 2, must);
     let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(!err.contains("panicked"), "{err}");
-    for m in must {
-        assert!(err.contains(m), "expected {m:?} in: {err}");
-    }
     for m in must_not {
         assert!(!err.contains(m), "unexpected {m:?} in: {err}");
     }

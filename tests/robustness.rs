@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{bin, root, scratch, stderr};
+use common::{assert_clean_failure, report_scene, root, scratch, stderr};
 use std::path::{Path, PathBuf};
 use std::process::Output;
 use wheelrail::quasi_elastic::{self, Quadrature, Settings};
@@ -14,26 +14,12 @@ use wheelrail::scene::Scene;
 /// Writes `text` as `scene.toml` in a fresh folder and runs `wheelrail report` on it.
 fn run_scene(name: &str, text: &str) -> (PathBuf, Output) {
     let dir = scratch(&format!("robustness/{name}"));
-    let scene = dir.join("scene.toml");
-    std::fs::write(&scene, text).unwrap();
-    let out = bin()
-        .arg("report")
-        .arg(&scene)
-        .arg("--out")
-        .arg(dir.join("out"))
-        .output()
-        .unwrap();
-    (dir.join("out"), out)
+    (dir.join("out"), report_scene(&dir, text))
 }
 
 /// Exit code 2, no panic, and every `words` in the message.
 fn assert_refused(o: &Output, words: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert!(!err.contains("panicked"), "{err}");
-    for w in words {
-        assert!(err.contains(w), "expected {w:?} in: {err}");
-    }
+    assert_clean_failure(o, 2, words);
 }
 
 fn profile(name: &str) -> String {

@@ -27,6 +27,29 @@ pub fn scratch(name: &str) -> PathBuf {
     dir
 }
 
+/// Writes `text` as `dir/scene.toml` and runs `wheelrail report` on it into `dir/out`.
+pub fn report_scene(dir: &Path, text: &str) -> Output {
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, text).unwrap();
+    bin()
+        .arg("report")
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap()
+}
+
+/// Exit code `code`, no panic, and every piece of `must_contain` in standard error.
+pub fn assert_clean_failure(o: &Output, code: i32, must_contain: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(code), "stderr: {err}");
+    assert!(!err.contains("panicked"), "panic: {err}");
+    for m in must_contain {
+        assert!(err.contains(m), "expected {m:?} in: {err}");
+    }
+}
+
 /// A run's standard error as text.
 pub fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
