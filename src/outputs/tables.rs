@@ -15,6 +15,9 @@ pub const PROFILE_TABLE_STEP_MM: f64 = 0.1;
 const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
 const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
 
+/// The wheel's side frame as the profile tables state it.
+const WHEEL_SIDE_FRAME: &str = "s_mm from the taping line, positive towards the field side (flange at s < 0); F_mm radius increase over the nominal radius, positive towards the flange tip";
+
 /// Steepest `|tan_gamma|` a profile table writes as a number. Steeper is a vertical tangent:
 /// the profiles evaluate it with a capped root (the S1002 flange back gives `1e6`, see
 /// `profile::s1002`), and a finite stand-in for an infinite slope would read as data. No
@@ -34,7 +37,7 @@ pub fn wheel_profile(wheel: &PlacedWheel) -> Result<Table, TableError> {
     let (tan_gamma, face) = slope_and_face(&rows);
     Table::builder()
         .comment(format!("wheel profile {} ({})", wheel.profile().name(), wheel.profile().source()))
-        .comment("frame: wheel side frame; s_mm from the taping line, positive towards the field side (flange at s < 0); F_mm radius increase over the nominal radius, positive towards the flange tip")
+        .comment(format!("frame: wheel side frame; {WHEEL_SIDE_FRAME}"))
         .comment("tan_gamma = -dF/ds (positive on the coned tread); curvature_per_mm convex positive; section joints included as extra rows")
         .comment(face_comment())
         .numeric("s_mm", col(&rows, 0))
@@ -48,7 +51,7 @@ pub fn wheel_profile(wheel: &PlacedWheel) -> Result<Table, TableError> {
 /// The `tan_gamma` and `face` columns of profile samples `[u, v, tan_gamma, curvature]`:
 /// `NaN` and `vertical` where the tangent is vertical (see [`VERTICAL_TAN_GAMMA`]), the slope
 /// and `regular` elsewhere.
-pub fn slope_and_face(rows: &[[f64; 4]]) -> (Vec<f64>, Vec<&'static str>) {
+fn slope_and_face(rows: &[[f64; 4]]) -> (Vec<f64>, Vec<&'static str>) {
     rows.iter()
         .map(|r| {
             if r[2].abs() > VERTICAL_TAN_GAMMA {
@@ -61,7 +64,7 @@ pub fn slope_and_face(rows: &[[f64; 4]]) -> (Vec<f64>, Vec<&'static str>) {
 }
 
 /// The `#` header line that explains the `face` column of [`slope_and_face`].
-pub fn face_comment() -> String {
+fn face_comment() -> String {
     format!(
         "face: vertical where the tangent is vertical (|tan_gamma| > {VERTICAL_TAN_GAMMA:e}, \
          infinite): tan_gamma NaN there; regular elsewhere"
@@ -633,12 +636,12 @@ pub fn profile_points(
         crate::profile::ProfileKind::Wheel => (
             "s_mm",
             "F_mm",
-            "wheel side frame: s_mm from the taping line, positive towards the field side (flange at s < 0); F_mm radius increase over the nominal radius, positive towards the flange tip",
+            format!("wheel side frame: {WHEEL_SIDE_FRAME}"),
         ),
         crate::profile::ProfileKind::Rail => (
             "y_mm",
             "z_mm",
-            "rail side frame, upright rail: y_mm lateral from the rail axis, positive towards the field side; z_mm height, up positive, 0 at the top of rail",
+            "rail side frame, upright rail: y_mm lateral from the rail axis, positive towards the field side; z_mm height, up positive, 0 at the top of rail".to_string(),
         ),
     };
     Table::builder()
