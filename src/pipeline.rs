@@ -86,8 +86,16 @@ pub struct Results {
 /// The stages `scene`'s outputs need, closed under dependencies, in run order. The
 /// profile stage always runs (placement is validated for every scene).
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
-    let mut wanted: Vec<Stage> = vec![Stage::Profiles];
-    wanted.extend(scene.figures.iter().map(|f| f.stage()));
+    let figures: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
+    closed_stages(scene, &figures)
+}
+
+/// `wanted` and the stages they depend on ([`Stage::requires`]; Hertz also needs the
+/// quasi-elastic stage when the scene's Hertz contact is quasi-elastic), with
+/// [`Stage::Profiles`], in run order.
+pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
+    let mut wanted: Vec<Stage> = wanted.to_vec();
+    wanted.push(Stage::Profiles);
     let mut closed = std::collections::BTreeSet::new();
     while let Some(s) = wanted.pop() {
         if closed.insert(s) {
@@ -122,10 +130,44 @@ pub fn run_gated(
     scene: &Scene,
     gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
 ) -> Result<Results, crate::Error> {
-    let stages = needed_stages(scene);
     let mut record = RunRecord::default();
     let placement = record.time(Stage::Profiles, || place(scene))?;
     record.progress = gate(&placement)?;
+    Ok(run_recorded(scene, placement, &needed_stages(scene), record))
+}
+
+/// Runs `stages` (and the stages they depend on, see [`closed_stages`]) of `scene` on a
+/// placement made by the caller: a study that samples the scene's profiles, or a fleet that
+/// places its shared rail once. Every other input (sweep, solver, quasi-elastic and Hertz
+/// settings, load, materials) is the scene's, so a caller overrides a setting by changing
+/// it in a copy of the scene. The same code computes [`run`]'s stages: results agree to the
+/// last digit with a report of the same scene and placement.
+///
+/// ```
+/// use wheelrail::pipeline::{self, Stage};
+/// use wheelrail::scene::Scene;
+/// let scene = Scene::from_toml("[sweep]\nfrom_mm = 0.0\nto_mm = 2.0\nstep_mm = 1.0", "doc", ".".as_ref()).unwrap();
+/// let placement = pipeline::place(&scene).unwrap();
+/// let results = pipeline::run_on(&scene, placement, &[Stage::Rigid]);
+/// assert_eq!(results.rigid.unwrap().positions.len(), 3);
+/// assert!(results.quasi_elastic.is_none());
+/// ```
+pub fn run_on(scene: &Scene, placement: Placement, stages: &[Stage]) -> Results {
+    run_recorded(
+        scene,
+        placement,
+        &closed_stages(scene, stages),
+        RunRecord::default(),
+    )
+}
+
+/// Runs `stages` (closed under dependencies, in run order) on `placement`.
+fn run_recorded(
+    scene: &Scene,
+    placement: Placement,
+    stages: &[Stage],
+    record: RunRecord,
+) -> Results {
     let mut results = Results {
         placement,
         rigid: None,
@@ -136,7 +178,7 @@ pub fn run_gated(
         hertz_accuracy: None,
         record,
     };
-    for stage in stages {
+    for &stage in stages {
         let record = &mut results.record;
         match stage {
             Stage::Profiles => {}
@@ -207,7 +249,7 @@ pub fn run_gated(
             }
         }
     }
-    Ok(results)
+    results
 }
 
 /// Loads the scene's four profiles and places them.

@@ -11,11 +11,11 @@
 //!   the setting and the reference have an ellipse.
 
 use crate::hertz::{self, Method};
-use crate::pipeline;
+use crate::pipeline::{self, Stage};
 use crate::profile::read::PointProfile;
 use crate::profile::{Profile, ProfileKind};
 use crate::quasi_elastic::{self, QuasiElasticSweep};
-use crate::rigid::{self, RigidSweep, Solver, Stop};
+use crate::rigid::{RigidSweep, Solver, Stop};
 use crate::scene::{ProfileRef, Scene};
 use crate::track::{Placement, SidePair};
 use std::time::Instant;
@@ -178,6 +178,15 @@ struct Run {
     hertz: Vec<hertz::sweep::Position>,
 }
 
+/// The scene with `setting`'s numerical choices in place of its own.
+fn with_setting(scene: &Scene, setting: &Setting) -> Scene {
+    let mut scene = scene.clone();
+    scene.rigid_solver = setting.solver;
+    scene.quasi_elastic = setting.quasi_elastic;
+    scene.hertz.method = setting.hertz;
+    scene
+}
+
 fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::Error> {
     let Some(step) = setting.profile_step_mm else {
         return pipeline::place(scene);
@@ -207,25 +216,18 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
     })
 }
 
-fn run_once(scene: &Scene, setting: &Setting, placement: &Placement) -> Run {
-    let rigid = rigid::search(placement, &scene.sweep_mm, setting.solver);
-    let qe = quasi_elastic::search(placement, &rigid, &setting.quasi_elastic);
-    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
-    let h = hertz::sweep::sweep(
-        &rigid,
-        Some(&qe),
-        scene.wheel_load_n,
-        e_star,
-        &hertz::sweep::Settings {
-            method: setting.hertz,
-            ..scene.hertz
-        },
-    );
-    Run {
-        rigid,
-        quasi_elastic: qe,
-        hertz: h,
-    }
+/// One run of the pipeline's stages (placement included, as a report runs them) under
+/// `setting`: the same code as `wheelrail report`, with the setting's overrides.
+fn run_once(scene: &Scene, setting: &Setting) -> Result<Run, crate::Error> {
+    let scene = with_setting(scene, setting);
+    let placement = placement_for(&scene, setting)?;
+    let results = pipeline::run_on(&scene, placement, &[Stage::QuasiElastic, Stage::Hertz]);
+    let missing = "both stages and the rigid stage they need ran";
+    Ok(Run {
+        rigid: results.rigid.expect(missing),
+        quasi_elastic: results.quasi_elastic.expect(missing),
+        hertz: results.hertz.expect(missing),
+    })
 }
 
 /// Runs the study: the reference once, then a warm-up round (each setting once, untimed:
@@ -265,11 +267,7 @@ fn study_on_this_thread(
     mut progress: impl FnMut(usize, usize, &str),
 ) -> Result<Vec<Measurement>, crate::Error> {
     let reference_setting = reference_setting();
-    let reference = run_once(
-        scene,
-        &reference_setting,
-        &placement_for(scene, &reference_setting)?,
-    );
+    let reference = run_once(scene, &reference_setting)?;
     let rounds = 1 + repeats.max(1);
     let total = rounds * settings.len();
     let mut rng = SplitMix64(ORDER_SEED);
@@ -282,8 +280,7 @@ fn study_on_this_thread(
             progress(done, total, &setting.label);
             done += 1;
             let start = Instant::now();
-            let placement = placement_for(scene, setting)?;
-            let run = run_once(scene, setting, &placement);
+            let run = run_once(scene, setting)?;
             let elapsed = start.elapsed().as_secs_f64();
             if round == 0 {
                 // The warm-up: the first run of a setting pays for its first use of code and
