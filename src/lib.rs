@@ -49,6 +49,7 @@ pub mod app;
 pub mod conicity;
 pub mod cost;
 pub mod error;
+pub mod fleet;
 pub mod gap;
 pub mod hertz;
 #[cfg(feature = "cli")]

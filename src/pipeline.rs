@@ -133,7 +133,12 @@ pub fn run_gated(
     let mut record = RunRecord::default();
     let placement = record.time(Stage::Profiles, || place(scene))?;
     record.progress = gate(&placement)?;
-    Ok(run_recorded(scene, placement, &needed_stages(scene), record))
+    Ok(run_recorded(
+        scene,
+        placement,
+        &needed_stages(scene),
+        record,
+    ))
 }
 
 /// Runs `stages` (and the stages they depend on, see [`closed_stages`]) of `scene` on a
@@ -252,48 +257,102 @@ fn run_recorded(
     results
 }
 
-/// Loads the scene's four profiles and places them.
+/// Loads the scene's four profiles and places them: [`place_wheels`], [`place_rails`] and
+/// [`assemble`].
 ///
 /// # Errors
 /// [`crate::Error::Scene`] naming the profile key.
 pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
-    let (wheel_keys, rail_keys) = (scene.wheel_profile_keys, scene.rail_profile_keys);
-    let mut pairs: Vec<SidePair> = Vec::with_capacity(2);
-    let placement_error =
-        |key: &'static str, e: crate::track::PlacementError| crate::scene::SceneError::Profile {
-            path: scene.path.clone(),
-            key,
-            message: e.to_string(),
-        };
-    for i in 0..2 {
-        // The right side takes the left's profiles when the scene names the same ones (the
-        // usual case): read, fitted and placed once.
-        let same_wheel = i == 1 && scene.wheel_profiles[1] == scene.wheel_profiles[0];
-        let wheel = match pairs.first() {
-            Some(left) if same_wheel => left.wheel.profile().clone(),
-            _ => scene.load_profile(&scene.wheel_profiles[i], ProfileKind::Wheel, wheel_keys[i])?,
-        };
-        let wheel = PlacedWheel::place(wheel, scene.nominal_radius_mm[i], &scene.layout)
-            .map_err(|e| placement_error(wheel_keys[i], e))?;
-        let same_rail = i == 1 && scene.rail_profiles[1] == scene.rail_profiles[0];
-        let rail = match pairs.first() {
-            Some(left) if same_rail => left.rail.clone(),
-            _ => {
-                let rail =
-                    scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, rail_keys[i])?;
-                PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
-                    .map_err(|e| placement_error(rail_keys[i], e))?
-            }
-        };
-        pairs.push(SidePair { wheel, rail });
+    let wheels = place_wheels(scene)?;
+    let rails = place_rails(scene)?;
+    assemble(scene, wheels, rails)
+}
+
+/// The error of placing the profile of `key`.
+fn placement_error(
+    scene: &Scene,
+    key: &'static str,
+    e: crate::track::PlacementError,
+) -> crate::Error {
+    crate::scene::SceneError::Profile {
+        path: scene.path.clone(),
+        key,
+        message: e.to_string(),
     }
-    let right = pairs.pop().expect("two sides were pushed");
-    let left = pairs.pop().expect("two sides were pushed");
+    .into()
+}
+
+/// Loads the scene's left and right wheel profiles and places them. The right wheel takes
+/// the left's profile when the scene names the same one (the usual case): read, fitted and
+/// placed once.
+///
+/// # Errors
+/// [`crate::Error::Scene`] naming the profile key.
+pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], crate::Error> {
+    let keys = scene.wheel_profile_keys;
+    let place = |i: usize, profile| {
+        PlacedWheel::place(profile, scene.nominal_radius_mm[i], &scene.layout)
+            .map_err(|e| placement_error(scene, keys[i], e))
+    };
+    let left = place(
+        0,
+        scene.load_profile(&scene.wheel_profiles[0], ProfileKind::Wheel, keys[0])?,
+    )?;
+    let right_profile = if scene.wheel_profiles[1] == scene.wheel_profiles[0] {
+        left.profile().clone()
+    } else {
+        scene.load_profile(&scene.wheel_profiles[1], ProfileKind::Wheel, keys[1])?
+    };
+    let right = place(1, right_profile)?;
+    Ok([left, right])
+}
+
+/// Loads the scene's left and right rail profiles and places them (the right rail is the
+/// left one when the scene names the same profile).
+///
+/// # Errors
+/// [`crate::Error::Scene`] naming the profile key.
+pub fn place_rails(scene: &Scene) -> Result<[PlacedRail; 2], crate::Error> {
+    let keys = scene.rail_profile_keys;
+    let place = |i: usize| -> Result<PlacedRail, crate::Error> {
+        let rail = scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, keys[i])?;
+        PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
+            .map_err(|e| placement_error(scene, keys[i], e))
+    };
+    let left = place(0)?;
+    let right = if scene.rail_profiles[1] == scene.rail_profiles[0] {
+        left.clone()
+    } else {
+        place(1)?
+    };
+    Ok([left, right])
+}
+
+/// The placement of placed wheels and rails `[left, right]` on `scene`'s track, checked: a
+/// wheel that lies nowhere above its rail with the wheelset centred is an error. A fleet
+/// places its shared rails (or wheels) once and assembles each pair from them.
+///
+/// # Errors
+/// [`crate::Error::Scene`] naming the wheel's profile key.
+pub fn assemble(
+    scene: &Scene,
+    wheels: [PlacedWheel; 2],
+    rails: [PlacedRail; 2],
+) -> Result<Placement, crate::Error> {
+    let [left_wheel, right_wheel] = wheels;
+    let [left_rail, right_rail] = rails;
     let placement = Placement {
         layout: scene.layout.clone(),
-        left,
-        right,
+        left: SidePair {
+            wheel: left_wheel,
+            rail: left_rail,
+        },
+        right: SidePair {
+            wheel: right_wheel,
+            rail: right_rail,
+        },
     };
+    let wheel_keys = scene.wheel_profile_keys;
     // A wheel that lies nowhere above its rail with the wheelset centred cannot touch it in
     // any sweep of a few centimetres: a unit mistake or a wrong profile, not a result.
     for (side, key) in [(Side::Left, wheel_keys[0]), (Side::Right, wheel_keys[1])] {

@@ -1,14 +1,15 @@
 //! Checking a scene file's keys: one function per section of the file, each returning the
 //! checked values or the offending key (as the user wrote it) and a message.
 
-use super::raw::{RawConicity, RawQuasiElastic, RawScene, RawSweep};
+use super::raw::{RawConicity, RawFleet, RawQuasiElastic, RawScene, RawSweep};
 use super::{
     CUTOFF_RANGE, DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_NOMINAL_RADIUS_MM, DEFAULT_POISSON,
-    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_WHEEL_LOAD_KN, DEFAULT_YOUNG_GPA, GAUGE_RANGE_MM,
-    ImageFormat, MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS, MAX_SMOOTHING_WAVELENGTH_MM,
-    MAX_SWEEP_POSITIONS, MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N, MIN_EPSILON_MM, MIN_PANEL_WIDTHS,
-    MIN_SWEEP_STEP_MM, MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN,
-    NOMINAL_RADIUS_RANGE_MM, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
+    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_WHEEL_LOAD_KN, DEFAULT_YOUNG_GPA, FleetSettings,
+    GAUGE_RANGE_MM, ImageFormat, MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS,
+    MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS, MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N,
+    MIN_EPSILON_MM, MIN_PANEL_WIDTHS, MIN_SWEEP_STEP_MM, MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N,
+    MPA_PER_GPA, N_PER_KN, NOMINAL_RADIUS_RANGE_MM, POISSON_RANGE, ProfileRef, Scene,
+    YOUNG_RANGE_GPA,
 };
 use crate::error::Number;
 use crate::hertz::Material;
@@ -79,6 +80,7 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
     let hertz = hertz(raw)?;
     let conicity = conicity_settings(&raw.conicity)?;
+    let fleet = fleet_settings(&raw.fleet)?;
     Ok(Scene {
         path: origin.to_string(),
         name,
@@ -106,6 +108,7 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         epsilon_sensitivity_mm,
         hertz,
         conicity,
+        fleet,
     })
 }
 
@@ -570,6 +573,24 @@ fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)
             format!("unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""),
         )),
     }
+}
+
+/// The settings of `[fleet]`, or the offending key and a message.
+fn fleet_settings(raw: &RawFleet) -> Result<FleetSettings, Invalid> {
+    let conicity_limit = match raw.conicity_limit {
+        None => None,
+        Some(v) if v.is_finite() && v > 0.0 && v <= MAX_CONICITY_LIMIT => Some(v),
+        Some(v) => {
+            return Err(invalid(
+                "fleet.conicity_limit",
+                format!(
+                    "{} must be above 0 and at most {MAX_CONICITY_LIMIT} (a limit of tan gamma_e at 3 mm, dimensionless)",
+                    Number(v)
+                ),
+            ));
+        }
+    };
+    Ok(FleetSettings { conicity_limit })
 }
 
 /// The largest amplitude of the equivalent conicity accepted (mm): the motion must stay on

@@ -14,8 +14,8 @@ mod raw;
 
 pub use check::MAX_CONICITY_AMPLITUDE_MM;
 pub use raw::{
-    RawConicity, RawHertz, RawLoad, RawMaterial, RawOutputs, RawQuasiElastic, RawRail, RawRigid,
-    RawScene, RawSweep, RawTrack, RawWheel, RawWheelset,
+    RawConicity, RawFleet, RawHertz, RawLoad, RawMaterial, RawOutputs, RawQuasiElastic, RawRail,
+    RawRigid, RawScene, RawSweep, RawTrack, RawWheel, RawWheelset,
 };
 
 // The defaults of the scene keys: the paper's case (S1002 on UIC60 1:40, standard gauge and
@@ -95,6 +95,10 @@ pub const MIN_EPSILON_MM: f64 = 1e-6;
 /// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
 /// [`crate::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM`]); exact benchmark files do not.
 pub const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
+
+/// The largest `[fleet] conicity_limit` accepted: equivalent conicities of railway wheel/rail
+/// pairs lie far below 1 (limits in use are 0.15 to 0.5); a limit above 2 marks nothing.
+pub const MAX_CONICITY_LIMIT: f64 = 2.0;
 
 /// The sensitivity values of eps of the `qe_epsilon` figure (mm).
 pub const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
@@ -223,6 +227,16 @@ pub struct Scene {
     pub hertz: crate::hertz::sweep::Settings,
     /// Equivalent conicity settings.
     pub conicity: crate::conicity::Settings,
+    /// Settings of `wheelrail fleet` with this scene as its template.
+    pub fleet: FleetSettings,
+}
+
+/// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FleetSettings {
+    /// The limit of tan γe(3 mm) marked in the fleet's charts and listed pairs above it
+    /// (dimensionless); `None`: no limit.
+    pub conicity_limit: Option<f64>,
 }
 
 impl Scene {
@@ -402,11 +416,24 @@ mod tests {
                 "[sweep]\nfrom_mm = 0.0\nto_mm = 1e-9\nstep_mm = 1e-10",
                 "sweep.step_mm",
             ),
+            ("[fleet]\nconicity_limit = 0.0", "fleet.conicity_limit"),
+            ("[fleet]\nconicity_limit = -0.3", "fleet.conicity_limit"),
+            ("[fleet]\nconicity_limit = nan", "fleet.conicity_limit"),
+            ("[fleet]\nconicity_limit = 3.0", "fleet.conicity_limit"),
         ];
         for (text, key) in cases {
             let e = scene(text).unwrap_err().to_string();
             assert!(e.contains(key), "{text:?} gave {e}");
         }
+    }
+
+    #[test]
+    fn the_fleet_limit_is_read() {
+        let s = scene("[fleet]\nconicity_limit = 0.4").unwrap();
+        assert_eq!(s.fleet.conicity_limit, Some(0.4));
+        assert_eq!(scene("").unwrap().fleet.conicity_limit, None);
+        let e = scene("[fleet]\nlimit = 0.4").unwrap_err().to_string();
+        assert!(e.contains("limit") && e.contains("unknown field"), "{e}");
     }
 
     #[test]

@@ -49,6 +49,17 @@ pub struct RawScene {
     /// `[conicity]`.
     #[serde(default)]
     pub conicity: RawConicity,
+    /// `[fleet]`.
+    #[serde(default)]
+    pub fleet: RawFleet,
+}
+
+/// `[fleet]`: settings of `wheelrail fleet` when this scene is its template.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawFleet {
+    /// The limit of tan γe(3 mm) that the fleet report marks (dimensionless, > 0).
+    pub conicity_limit: Option<f64>,
 }
 
 /// `[conicity]`.

@@ -1,0 +1,630 @@
+//! Fleet assessment: many measured profiles through one template scene, one summary row each.
+//!
+//! The template [`Scene`] fixes everything but the profiles that vary: track, load, sweep,
+//! settings, and the profiles the fleet's inputs do not replace. Each [`Item`] names the
+//! files of one wheelset (a wheel profile put on both wheels, the right one mirrored by its
+//! side frame; or two wheels measured separately; or a rail profile for a grinding
+//! assessment). [`Fleet::new`] places the template's fixed profiles once and shares them;
+//! [`Fleet::assess`] reads, fits and places an item's files with the same functions as a
+//! report run ([`pipeline::place_wheels`], [`pipeline::place_rails`], [`pipeline::assemble`])
+//! and runs the stages the summary needs with [`pipeline::run_on`], so its numbers agree to
+//! the last digit with `wheelrail report` on the template with those files.
+//!
+//! [`in_order`] runs items in parallel (rayon) and hands their rows to the caller in input
+//! order as they complete, whatever the number of threads. [`synthetic`] generates worn
+//! S1002 profiles for tests, benchmarks and the example fleet.
+//!
+//! Nothing here touches the file system except the profile readers; a failure of one item
+//! (unreadable file, bad profile, no overlap with its rail) is that item's row, never an
+//! error of the fleet.
+
+pub mod synthetic;
+
+use crate::conicity::{Method, Parameters};
+use crate::pipeline::{self, Results, Stage};
+use crate::profile::Source;
+use crate::scene::{ProfileRef, Scene, SceneError};
+use crate::track::{PlacedRail, PlacedWheel, Side};
+use std::collections::{BTreeMap, HashSet};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// One wheelset of the fleet: its id and the files that replace the template's profiles.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Item {
+    /// Unique within the fleet; letters, digits, `.`, `-`, `_` (a folder name for
+    /// `--reports`).
+    pub id: String,
+    /// Left and right wheel profile files; `None`: the template's wheels.
+    pub wheels: Option<[PathBuf; 2]>,
+    /// Left and right rail profile files; `None`: the template's rails.
+    pub rails: Option<[PathBuf; 2]>,
+}
+
+/// What the items of a fleet replace in the template: decides the file columns of a row.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Inputs {
+    /// One wheel profile per item, on both wheels.
+    Wheels,
+    /// One rail profile per item, on both rails.
+    Rails,
+    /// Left and right wheels measured separately, and optionally left and right rails.
+    Pairs {
+        /// Whether the pairs file has rail columns.
+        rails: bool,
+    },
+}
+
+impl Inputs {
+    /// The roles of an item's files, in column order (`wheel`, or `left_wheel`,
+    /// `right_wheel`, ...): each gives the columns `ROLE_file` and `ROLE_sha256`.
+    pub fn roles(self) -> &'static [&'static str] {
+        match self {
+            Inputs::Wheels => &["wheel"],
+            Inputs::Rails => &["rail"],
+            Inputs::Pairs { rails: false } => &["left_wheel", "right_wheel"],
+            Inputs::Pairs { rails: true } => {
+                &["left_wheel", "right_wheel", "left_rail", "right_rail"]
+            }
+        }
+    }
+
+    /// The files of `item` in the order of [`Inputs::roles`] (`None` where the item keeps
+    /// the template's profile).
+    pub fn files(self, item: &Item) -> Vec<Option<PathBuf>> {
+        let w = item.wheels.as_ref();
+        let r = item.rails.as_ref();
+        match self {
+            Inputs::Wheels => vec![w.map(|w| w[0].clone())],
+            Inputs::Rails => vec![r.map(|r| r[0].clone())],
+            Inputs::Pairs { rails } => {
+                let mut v = vec![w.map(|w| w[0].clone()), w.map(|w| w[1].clone())];
+                if rails {
+                    v.extend([r.map(|r| r[0].clone()), r.map(|r| r[1].clone())]);
+                }
+                v
+            }
+        }
+    }
+}
+
+/// Items for profile files given one by one: each on both wheels (or both rails with
+/// `rails`), ids from the file names (see [`unique_ids`]).
+pub fn items_of_files(paths: &[PathBuf], rails: bool) -> Vec<Item> {
+    let stems: Vec<String> = paths
+        .iter()
+        .map(|p| {
+            p.file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_default()
+        })
+        .collect();
+    unique_ids(&stems)
+        .into_iter()
+        .zip(paths)
+        .map(|(id, p)| {
+            let both = Some([p.clone(), p.clone()]);
+            if rails {
+                Item {
+                    id,
+                    wheels: None,
+                    rails: both,
+                }
+            } else {
+                Item {
+                    id,
+                    wheels: both,
+                    rails: None,
+                }
+            }
+        })
+        .collect()
+}
+
+/// Ids for names, in order: characters other than letters, digits, `.`, `-` and `_`
+/// replaced by `_`, a leading `.` too (ids name folders), empty names `profile`; a name met
+/// again gets `-2`, `-3`, ... (the first keeps its name).
+///
+/// ```
+/// let ids = wheelrail::fleet::unique_ids(&["w 1".into(), "w_1".into(), "".into(), ".x".into()]);
+/// assert_eq!(ids, ["w_1", "w_1-2", "profile", "_x"]);
+/// ```
+pub fn unique_ids(names: &[String]) -> Vec<String> {
+    let mut seen = HashSet::new();
+    names
+        .iter()
+        .map(|name| {
+            let mut base: String = name
+                .chars()
+                .map(|c| {
+                    if c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '_') {
+                        c
+                    } else {
+                        '_'
+                    }
+                })
+                .collect();
+            if base.is_empty() {
+                base = "profile".into();
+            }
+            if base.starts_with('.') {
+                base.replace_range(0..1, "_");
+            }
+            let mut id = base.clone();
+            let mut n = 2;
+            while !seen.insert(id.clone()) {
+                id = format!("{base}-{n}");
+                n += 1;
+            }
+            id
+        })
+        .collect()
+}
+
+/// Whether `id` may name a pair: letters, digits, `.`, `-`, `_`, not starting with `.`.
+fn valid_id(id: &str) -> bool {
+    !id.is_empty()
+        && !id.starts_with('.')
+        && id
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '_'))
+}
+
+/// The columns of a pairs file.
+const PAIR_COLUMNS: [&str; 5] = ["id", "left_wheel", "right_wheel", "left_rail", "right_rail"];
+
+/// Reads a pairs file: CSV with the columns `id,left_wheel,right_wheel` and optionally
+/// `left_rail,right_rail` (both or neither), `#` comment lines allowed; paths relative to
+/// `dir` (the file's folder). A row with both rail cells empty keeps the template's rails.
+/// `origin` names the file in messages.
+///
+/// # Errors
+/// A message naming `origin` and the line: malformed CSV, a missing or unknown column, an
+/// empty cell, an id that is repeated or not a folder name, one rail cell of two, no rows.
+///
+/// ```
+/// use std::path::Path;
+/// use wheelrail::fleet::{parse_pairs, Inputs};
+/// let (items, inputs) = parse_pairs("id,left_wheel,right_wheel\nws1,a.whl,b.whl\n", "pairs.csv", Path::new("m")).unwrap();
+/// assert_eq!(inputs, Inputs::Pairs { rails: false });
+/// assert_eq!(items[0].wheels.as_ref().unwrap()[1], Path::new("m/b.whl"));
+/// let e = parse_pairs("id,left_wheel,right_wheel\nws1,a.whl,b.whl\nws1,c.whl,d.whl\n", "pairs.csv", Path::new(".")).unwrap_err();
+/// assert!(e.contains("pairs.csv:3") && e.contains("ws1"), "{e}");
+/// ```
+pub fn parse_pairs(text: &str, origin: &str, dir: &Path) -> Result<(Vec<Item>, Inputs), String> {
+    let mut reader = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .trim(csv::Trim::All)
+        .flexible(false)
+        .from_reader(text.as_bytes());
+    let at = |line: u64, message: String| format!("{origin}:{line}: {message}");
+    let csv_error = |e: csv::Error| match e.position() {
+        Some(p) => at(p.line(), e.to_string()),
+        None => format!("{origin}: {e}"),
+    };
+    let header = reader.headers().map_err(csv_error)?.clone();
+    let header_line = reader.position().line().max(1);
+    let mut column = [None; 5];
+    for (i, name) in header.iter().enumerate() {
+        let Some(k) = PAIR_COLUMNS.iter().position(|c| *c == name) else {
+            return Err(at(
+                header_line,
+                format!(
+                    "unknown column {name:?}; expected {}",
+                    PAIR_COLUMNS.join(",")
+                ),
+            ));
+        };
+        if column[k].replace(i).is_some() {
+            return Err(at(header_line, format!("column {name:?} appears twice")));
+        }
+    }
+    for k in 0..3 {
+        if column[k].is_none() {
+            return Err(at(
+                header_line,
+                format!(
+                    "missing column {:?}; expected id,left_wheel,right_wheel and optionally left_rail,right_rail",
+                    PAIR_COLUMNS[k]
+                ),
+            ));
+        }
+    }
+    let rails = match (column[3], column[4]) {
+        (None, None) => false,
+        (Some(_), Some(_)) => true,
+        _ => {
+            return Err(at(
+                header_line,
+                "give both left_rail and right_rail, or neither".into(),
+            ));
+        }
+    };
+    let mut items = Vec::new();
+    let mut ids = HashSet::new();
+    for record in reader.records() {
+        let record = record.map_err(csv_error)?;
+        let line = record.position().map_or(0, csv::Position::line);
+        let cell = |k: usize| column[k].and_then(|i| record.get(i)).unwrap_or("");
+        let id = cell(0).to_string();
+        if !valid_id(&id) {
+            return Err(at(
+                line,
+                format!(
+                    "id {id:?}: expected letters, digits, '.', '-' and '_', not starting with '.' (it names the pair's report folder)"
+                ),
+            ));
+        }
+        if !ids.insert(id.clone()) {
+            return Err(at(line, format!("id {id:?} appears twice")));
+        }
+        let path = |k: usize| -> Result<PathBuf, String> {
+            match cell(k) {
+                "" => Err(at(
+                    line,
+                    format!("pair {id:?}: empty {} cell", PAIR_COLUMNS[k]),
+                )),
+                p => Ok(dir.join(p)),
+            }
+        };
+        let wheels = Some([path(1)?, path(2)?]);
+        let rails = match (rails, cell(3), cell(4)) {
+            (false, _, _) | (true, "", "") => None,
+            _ => Some([path(3)?, path(4)?]),
+        };
+        items.push(Item { id, wheels, rails });
+    }
+    if items.is_empty() {
+        return Err(format!("{origin}: no pairs (only a header)"));
+    }
+    Ok((items, Inputs::Pairs { rails }))
+}
+
+/// One part of a fleet split across machines: the `k`-th (from 1) of `n` parts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// Which part, 1 to `n`.
+    pub k: usize,
+    /// How many parts.
+    pub n: usize,
+}
+
+impl Shard {
+    /// Parses `K/N` (1 ≤ K ≤ N).
+    ///
+    /// # Errors
+    /// A message saying what was expected.
+    ///
+    /// ```
+    /// use wheelrail::fleet::Shard;
+    /// assert_eq!(Shard::parse("2/3"), Ok(Shard { k: 2, n: 3 }));
+    /// assert!(Shard::parse("0/3").is_err() && Shard::parse("4/3").is_err());
+    /// ```
+    pub fn parse(text: &str) -> Result<Shard, String> {
+        let bad = || format!("--shard {text:?}: expected K/N with 1 <= K <= N, e.g. 3/8");
+        let (k, n) = text.split_once('/').ok_or_else(bad)?;
+        let k: usize = k.trim().parse().map_err(|_| bad())?;
+        let n: usize = n.trim().parse().map_err(|_| bad())?;
+        if k == 0 || k > n {
+            return Err(bad());
+        }
+        Ok(Shard { k, n })
+    }
+
+    /// The index range of this part of `len` items: consecutive parts whose sizes differ by
+    /// at most one, so that the parts' rows concatenated in part order are the whole
+    /// fleet's rows in input order.
+    ///
+    /// ```
+    /// use wheelrail::fleet::Shard;
+    /// let parts: Vec<_> = (1..=3).map(|k| Shard { k, n: 3 }.range(7)).collect();
+    /// assert_eq!(parts, [0..3, 3..5, 5..7]);
+    /// ```
+    pub fn range(self, len: usize) -> std::ops::Range<usize> {
+        let start = |k: usize| k * (len / self.n) + (k).min(len % self.n);
+        start(self.k - 1)..start(self.k)
+    }
+}
+
+/// The largest Hertz pressure of one pair over its sweep.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MaxPressure {
+    /// The largest maximum pressure p0 over the sweep and both wheels (MPa).
+    pub p0_mpa: f64,
+    /// The wheelset shift where it occurs (mm, track frame, first such position).
+    pub y_ws_mm: f64,
+    /// The wheel that carries it.
+    pub side: Side,
+}
+
+/// What a fleet keeps of one pair's run: the pair's parameters, its equivalent conicity
+/// function by the scene's method, and the largest Hertz pressure when Hertz ran.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Summary {
+    /// The pair's parameters ([`Parameters::rows`] gives their names and units).
+    pub parameters: Parameters,
+    /// `(amplitude mm, tan γe)` by the scene's method (NaN where not computable).
+    pub conicity: Vec<(f64, f64)>,
+    /// The largest p0 over the sweep; `None` when Hertz did not run or no ellipse exists.
+    pub max_p0: Option<MaxPressure>,
+}
+
+/// The summary of a run that computed the equivalent conicity (and Hertz, if it ran).
+///
+/// # Panics
+/// If the run did not compute the equivalent conicity (a caller's bug: [`Fleet`] always
+/// asks for it).
+pub fn summarise(results: &Results, method: Method) -> Summary {
+    let c = results
+        .conicity
+        .as_ref()
+        .expect("a fleet run computes the equivalent conicity");
+    let conicity = c
+        .by(method)
+        .points
+        .iter()
+        .map(|p| (p.amplitude_mm, p.tan_gamma_e))
+        .collect();
+    let mut max_p0: Option<MaxPressure> = None;
+    for p in results.hertz.iter().flatten() {
+        for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
+            if let Some(e) = p.sides[k].ellipse()
+                && e.p0_mpa.is_finite()
+                && max_p0.is_none_or(|m| e.p0_mpa > m.p0_mpa)
+            {
+                max_p0 = Some(MaxPressure {
+                    p0_mpa: e.p0_mpa,
+                    y_ws_mm: p.y_ws,
+                    side,
+                });
+            }
+        }
+    }
+    Summary {
+        parameters: c.parameters,
+        conicity,
+        max_p0,
+    }
+}
+
+/// One input file of a row: its role, path and the SHA-256 of its bytes (`None` when it
+/// could not be read).
+#[derive(Debug, Clone, PartialEq)]
+pub struct InputFile {
+    /// `wheel`, `rail`, `left_wheel`, ... (see [`Inputs::roles`]).
+    pub role: &'static str,
+    /// The path as given (resolved against the pairs file's folder for pairs).
+    pub path: Option<PathBuf>,
+    /// SHA-256 of the file's bytes, lower-case hex.
+    pub sha256: Option<String>,
+}
+
+/// The result of one item: its id, its files and the summary or why it failed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// The item's id.
+    pub id: String,
+    /// The item's files, in the order of [`Inputs::roles`].
+    pub files: Vec<InputFile>,
+    /// The summary, or the error message (the reader's, naming the file and line).
+    pub outcome: Result<Summary, String>,
+}
+
+/// A template scene with its fixed profiles placed once, ready to assess items.
+#[derive(Debug)]
+pub struct Fleet {
+    template: Scene,
+    inputs: Inputs,
+    stages: Vec<Stage>,
+    wheels: Option<[PlacedWheel; 2]>,
+    rails: Option<[PlacedRail; 2]>,
+}
+
+impl Fleet {
+    /// Prepares `template` for `items` of kind `inputs`: the template's wheels (rails) are
+    /// read and placed once if some item keeps them. The stages run per item are the
+    /// equivalent conicity and, when the template's figures need it, Hertz; with `full`,
+    /// every stage the template's figures need (for a full report per pair).
+    ///
+    /// # Errors
+    /// The template's own profiles cannot be read or placed.
+    pub fn new(
+        template: Scene,
+        inputs: Inputs,
+        items: &[Item],
+        full: bool,
+    ) -> Result<Fleet, crate::Error> {
+        let wheels = if items.iter().any(|i| i.wheels.is_none()) {
+            Some(pipeline::place_wheels(&template)?)
+        } else {
+            None
+        };
+        let rails = if items.iter().any(|i| i.rails.is_none()) {
+            Some(pipeline::place_rails(&template)?)
+        } else {
+            None
+        };
+        let mut stages = vec![Stage::EquivalentConicity];
+        if full {
+            stages.extend(pipeline::needed_stages(&template));
+        } else if pipeline::needed_stages(&template).contains(&Stage::Hertz) {
+            stages.push(Stage::Hertz);
+        }
+        let stages = pipeline::closed_stages(&template, &stages);
+        Ok(Fleet {
+            template,
+            inputs,
+            stages,
+            wheels,
+            rails,
+        })
+    }
+
+    /// The template scene.
+    pub fn template(&self) -> &Scene {
+        &self.template
+    }
+
+    /// What the items replace.
+    pub fn inputs(&self) -> Inputs {
+        self.inputs
+    }
+
+    /// The stages run for each item, in run order.
+    pub fn stages(&self) -> &[Stage] {
+        &self.stages
+    }
+
+    /// Whether the rows carry the Hertz pressure (the template's figures need Hertz).
+    pub fn has_hertz(&self) -> bool {
+        self.stages.contains(&Stage::Hertz)
+    }
+
+    /// The template with `item`'s files in place of its profiles: the scene a single
+    /// `wheelrail report` of this pair would run.
+    pub fn scene_for(&self, item: &Item) -> Scene {
+        // The one place that writes a scene's profile fields.
+        let mut scene = self.template.clone();
+        if let Some([l, r]) = &item.wheels {
+            scene.wheel_profiles = [ProfileRef::File(l.clone()), ProfileRef::File(r.clone())];
+        }
+        if let Some([l, r]) = &item.rails {
+            scene.rail_profiles = [ProfileRef::File(l.clone()), ProfileRef::File(r.clone())];
+        }
+        scene
+    }
+
+    /// Places `item`'s profiles (its files read, fitted and placed as a report does; the
+    /// template's shared profiles cloned) and runs the fleet's stages on them.
+    ///
+    /// # Errors
+    /// The message of the first file that cannot be read or placed (naming the file and
+    /// line), or of a wheel that does not overlap its rail.
+    pub fn run(&self, item: &Item) -> Result<(Scene, Results), String> {
+        let scene = self.scene_for(item);
+        let wheels = match (&item.wheels, &self.wheels) {
+            (Some(_), _) | (None, None) => pipeline::place_wheels(&scene),
+            (None, Some(shared)) => Ok(shared.clone()),
+        }
+        .map_err(message)?;
+        let rails = match (&item.rails, &self.rails) {
+            (Some(_), _) | (None, None) => pipeline::place_rails(&scene),
+            (None, Some(shared)) => Ok(shared.clone()),
+        }
+        .map_err(message)?;
+        let placement = pipeline::assemble(&scene, wheels, rails).map_err(message)?;
+        let results = pipeline::run_on(&scene, placement, &self.stages);
+        Ok((scene, results))
+    }
+
+    /// The row of `item`, from [`Fleet::run`] (or from `run`'s results when the caller ran
+    /// it, e.g. to write a full report too).
+    pub fn row(&self, item: &Item, run: Result<&Results, &str>) -> Row {
+        let outcome = run
+            .map(|r| summarise(r, self.template.conicity.method))
+            .map_err(str::to_string);
+        let files = self
+            .inputs
+            .roles()
+            .iter()
+            .zip(self.inputs.files(item))
+            .map(|(&role, path)| {
+                let placed = run.ok().and_then(|r| placed_sha256(r, role));
+                let sha256 = placed.or_else(|| {
+                    path.as_ref()
+                        .and_then(|p| std::fs::read(p).ok())
+                        .map(|b| crate::profile::read::sha256_hex(&b))
+                });
+                InputFile { role, path, sha256 }
+            })
+            .collect();
+        Row {
+            id: item.id.clone(),
+            files,
+            outcome,
+        }
+    }
+
+    /// Runs and summarises `item`.
+    pub fn assess(&self, item: &Item) -> Row {
+        let run = self.run(item);
+        self.row(item, run.as_ref().map(|(_, r)| r).map_err(String::as_str))
+    }
+}
+
+/// The SHA-256 the reader took of the file of `role`, from the placed profile.
+fn placed_sha256(results: &Results, role: &str) -> Option<String> {
+    let p = &results.placement;
+    let profile = match role {
+        "wheel" | "left_wheel" => p.left.wheel.profile(),
+        "right_wheel" => p.right.wheel.profile(),
+        "rail" | "left_rail" => p.left.rail.profile(),
+        "right_rail" => p.right.rail.profile(),
+        _ => return None,
+    };
+    match profile.source() {
+        Source::File { sha256, .. } => Some(sha256.clone()),
+        Source::Definition(_) => None,
+    }
+}
+
+/// The message of an item's error: the reader's or placement's own message (it names the
+/// file and line), without the template scene's name and key.
+fn message(e: crate::Error) -> String {
+    match e {
+        crate::Error::Scene(SceneError::Profile { message, .. }) => message,
+        e => e.to_string(),
+    }
+}
+
+/// Runs `f` on every item in parallel (the current rayon pool; each thread takes the next
+/// item in input order) and calls `sink` with each result in input order as soon as it and
+/// all before it are done. `sink` runs on a thread of its own, so a slow sink (a file, a
+/// progress bar) never holds up the workers; results wait in memory only while an earlier
+/// item is still running. A panic in `f` becomes `on_panic(message)` for that item.
+pub fn in_order<T, R>(
+    items: &[T],
+    f: impl Fn(&T) -> R + Sync,
+    on_panic: impl Fn(String) -> R + Sync,
+    sink: impl FnMut(usize, R) + Send,
+) where
+    T: Sync,
+    R: Send,
+{
+    let next = AtomicUsize::new(0);
+    let (tx, rx) = std::sync::mpsc::channel::<(usize, R)>();
+    std::thread::scope(|scope| {
+        let mut sink = sink;
+        scope.spawn(move || {
+            let mut waiting = BTreeMap::new();
+            let mut due = 0;
+            for (i, r) in rx {
+                waiting.insert(i, r);
+                while let Some(r) = waiting.remove(&due) {
+                    sink(due, r);
+                    due += 1;
+                }
+            }
+        });
+        rayon::broadcast(|_| {
+            let tx = tx.clone();
+            loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(item) = items.get(i) else { break };
+                let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(item)))
+                    .unwrap_or_else(|p| {
+                        let text = p
+                            .downcast_ref::<&str>()
+                            .map(|s| (*s).to_string())
+                            .or_else(|| p.downcast_ref::<String>().cloned())
+                            .unwrap_or_default();
+                        on_panic(text)
+                    });
+                if tx.send((i, r)).is_err() {
+                    break;
+                }
+            }
+        });
+        drop(tx);
+    });
+}
