@@ -467,9 +467,17 @@ fn html_page_escapes_everything_and_links_files() {
             file: "rigid.csv".into(),
             description: "contact points <per y_ws>".into(),
         }],
+        data_tables: vec![wheelrail::report::DataTable {
+            title: "Pairs over <limit>".into(),
+            header: vec!["id & name".into()],
+            rows: vec![vec!["<b>ws1</b>".into()]],
+        }],
         notes: vec!["3 points did not converge".into()],
     };
     let html = render_html(&page);
+    assert!(html.contains("Pairs over &lt;limit&gt;</h2>"));
+    assert!(html.contains("<th>id &amp; name</th>"));
+    assert!(html.contains("&lt;b&gt;ws1&lt;/b&gt;"));
     assert!(!html.contains("<script>"));
     assert!(html.contains("Report &lt;script&gt;alert(1)&lt;/script&gt;"));
     assert!(html.contains("Jump at y_ws &gt; 6.5 mm &amp; more"));

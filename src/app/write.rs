@@ -3,7 +3,7 @@
 //! with the replaced files kept aside until the swap is complete (and put back if it fails).
 //!
 //! A manifest (`.wheelrail-manifest`, one `group name` line per file) records what wheelrail
-//! wrote, per group (`report`, `tradeoff`, `golden`), so that a new run removes the files of
+//! wrote, per group (`report`, `tradeoff`, `golden`, `fleet`), so that a new run removes the files of
 //! its group's earlier run that it does not write again (figures a scene no longer asks for),
 //! leaves the other groups' files (a tradeoff study beside a report) and never touches a
 //! file it did not write (a user's notes, the scene file itself). A file with the name of one
@@ -26,6 +26,8 @@ pub enum Group {
     Tradeoff,
     /// `wheelrail check --bless`.
     Golden,
+    /// `wheelrail fleet`.
+    Fleet,
 }
 
 impl Group {
@@ -34,6 +36,7 @@ impl Group {
             Group::Report => "report",
             Group::Tradeoff => "tradeoff",
             Group::Golden => "golden",
+            Group::Fleet => "fleet",
         }
     }
 }

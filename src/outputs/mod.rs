@@ -5,6 +5,7 @@
 //! [`figures`] taking that stage's result, a caption in [`caption`], an arm in [`figure`].
 
 pub mod figures;
+pub mod fleet;
 pub mod tables;
 
 use crate::Error;
@@ -453,6 +454,7 @@ fn report_page(
                 description: t.description.clone(),
             })
             .collect(),
+        data_tables: Vec::new(),
         notes,
     }
 }

@@ -32,6 +32,17 @@ pub struct TableEntry {
     pub description: String,
 }
 
+/// A table of values shown on the page (escaped text cells), under its own heading.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct DataTable {
+    /// Heading above the table.
+    pub title: String,
+    /// Column headings.
+    pub header: Vec<String>,
+    /// Rows of cells, as many as the header has.
+    pub rows: Vec<Vec<String>>,
+}
+
 /// The content of a report page.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct ReportPage {
@@ -49,6 +60,9 @@ pub struct ReportPage {
     pub figures: Vec<FigureEntry>,
     /// CSV tables in order.
     pub tables: Vec<TableEntry>,
+    /// Tables of values shown on the page, after the summary (e.g. the pairs of a fleet over
+    /// a limit).
+    pub data_tables: Vec<DataTable>,
     /// Closing notes, e.g. points that did not converge.
     pub notes: Vec<String>,
 }
@@ -119,6 +133,35 @@ pub fn render_html(page: &ReportPage) -> String {
     }
     for paragraph in &page.summary {
         let _ = writeln!(out, "<p>{}</p>", escape_html(paragraph));
+    }
+    for t in &page.data_tables {
+        let _ = writeln!(
+            out,
+            "<h2 id=\"{}\">{}</h2>\n<table>\n<tr>{}</tr>",
+            escape_html(&anchor(&t.title)),
+            escape_html(&t.title),
+            t.header
+                .iter()
+                .map(|h| format!("<th>{}</th>", escape_html(h)))
+                .collect::<String>()
+        );
+        if t.rows.is_empty() {
+            let _ = writeln!(
+                out,
+                "<tr><td colspan=\"{}\">none</td></tr>",
+                t.header.len().max(1)
+            );
+        }
+        for row in &t.rows {
+            let _ = writeln!(
+                out,
+                "<tr>{}</tr>",
+                row.iter()
+                    .map(|c| format!("<td class=\"v\">{}</td>", escape_html(c)))
+                    .collect::<String>()
+            );
+        }
+        out.push_str("</table>\n");
     }
     if !page.parameters.is_empty() {
         out.push_str("<h2 id=\"parameters\">Parameters</h2>\n");

@@ -51,5 +51,5 @@ pub use golden::{
     ColumnDiff, Comparison, FileOutcome, FilesComparison, Tolerance, TolerancePolicy, compare,
     compare_files,
 };
-pub use html::{FigureEntry, ReportPage, TableEntry, render_html};
+pub use html::{DataTable, FigureEntry, ReportPage, TableEntry, render_html};
 pub use table::{Column, ColumnData, NumberFormat, Table, TableBuilder, TableError};

@@ -1,0 +1,268 @@
+//! `wheelrail fleet`: many profiles through one template scene, `fleet.csv` streamed row by
+//! row in input order, then the charts and `index.html` (see [`crate::fleet`]).
+//!
+//! Exit codes: 0 every row ok, 3 some rows failed (their status says why), 2 nothing could
+//! run (bad scene, bad pairs file, no profiles, unwritable output).
+
+use super::write::{Group, write_folder};
+use crate::Error;
+use crate::fleet::{self, Fleet, Inputs, Item, Row, Shard};
+use crate::outputs::{self, OutputFile};
+use crate::scene::Scene;
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+/// The arguments of `wheelrail fleet`.
+#[derive(Debug, clap::Args)]
+pub struct FleetArgs {
+    /// The template scene (track, rail, load, sweep, stages, settings; `[fleet]`).
+    pub scene: PathBuf,
+    /// Wheel profile files (any format the readers accept), each put on both wheels; rail
+    /// profiles with --rail.
+    #[arg(required_unless_present = "pairs")]
+    pub profiles: Vec<PathBuf>,
+    /// Output folder: fleet.csv, the charts and index.html.
+    #[arg(long)]
+    pub out: PathBuf,
+    /// The profiles are rails: each is put on both rails under the template's wheels.
+    #[arg(long, conflicts_with = "pairs")]
+    pub rail: bool,
+    /// A CSV of wheelsets measured wheel by wheel: columns id,left_wheel,right_wheel and
+    /// optionally left_rail,right_rail (paths relative to the CSV).
+    #[arg(long, conflicts_with = "profiles")]
+    pub pairs: Option<PathBuf>,
+    /// Process only part K of N (consecutive parts of the input list, sizes within one):
+    /// the parts' fleet.csv files, concatenated in order without their header lines, are
+    /// the whole fleet's.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<String>,
+    /// Also write each pair's full report (the template's figures) into DIR/<id>/.
+    #[arg(long)]
+    pub reports: bool,
+}
+
+/// The streamed CSV's name while the run is going on; renamed when the run is complete.
+pub const PARTIAL_CSV: &str = "fleet.csv.partial";
+
+/// Runs `wheelrail fleet`.
+///
+/// # Errors
+/// Everything that stops the whole fleet (exit code 2): the scene, the pairs file, the
+/// shard, an empty list, the output folder.
+pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
+    let template = Scene::load(&args.scene)?;
+    let (items, inputs) = match &args.pairs {
+        Some(path) => {
+            let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+                path: path.clone(),
+                source,
+            })?;
+            let dir = path.parent().unwrap_or(Path::new(""));
+            fleet::parse_pairs(&text, &path.display().to_string(), dir).map_err(Error::Other)?
+        }
+        None => {
+            let inputs = if args.rail {
+                Inputs::Rails
+            } else {
+                Inputs::Wheels
+            };
+            (fleet::items_of_files(&args.profiles, args.rail), inputs)
+        }
+    };
+    if items.is_empty() {
+        return Err(Error::Other("no profiles to assess".into()));
+    }
+    let items: Vec<Item> = match &args.shard {
+        Some(text) => {
+            let shard = Shard::parse(text).map_err(Error::Other)?;
+            items[shard.range(items.len())].to_vec()
+        }
+        None => items,
+    };
+    let template_path = args.scene.display().to_string();
+    let fleet = Fleet::new(template, inputs, &items, args.reports)?;
+    let dir = &args.out;
+    if dir.exists() && !dir.is_dir() {
+        return Err(Error::Other(format!(
+            "{}: is a file, not a folder (choose another --out)",
+            dir.display()
+        )));
+    }
+    std::fs::create_dir_all(dir).map_err(|source| Error::Io {
+        path: dir.clone(),
+        source,
+    })?;
+    let partial = dir.join(PARTIAL_CSV);
+    let io = |source| Error::Io {
+        path: partial.clone(),
+        source,
+    };
+    let mut csv = std::io::BufWriter::new(std::fs::File::create(&partial).map_err(io)?);
+    csv.write_all(outputs::fleet::csv_header(&fleet, &template_path).as_bytes())
+        .map_err(io)?;
+    csv.flush().map_err(io)?;
+
+    let mut progress = Progress::new(items.len());
+    let mut rows: Vec<Row> = Vec::with_capacity(items.len());
+    let mut write_error = None;
+    fleet::in_order(
+        &items,
+        |item| assess(&fleet, item, args.reports.then_some(dir.as_path())),
+        |panic| {
+            // Only a bug panics; the row says so and the others run.
+            Err(format!("internal error (please report): {panic}"))
+        },
+        |i, row: Result<Row, String>| {
+            let row = row.unwrap_or_else(|message| Row {
+                id: items[i].id.clone(),
+                files: Vec::new(),
+                outcome: Err(message),
+            });
+            if write_error.is_none() {
+                let line =
+                    outputs::fleet::csv_line(&fleet, &pad_files(&fleet, &items[i], row.clone()));
+                // Flushed per row: an interrupted run keeps every row it finished.
+                if let Err(e) = csv.write_all(line.as_bytes()).and_then(|()| csv.flush()) {
+                    write_error = Some(e);
+                }
+            }
+            progress.step(row.outcome.is_ok());
+            rows.push(row);
+        },
+    );
+    progress.finish();
+    if let Some(e) = write_error {
+        return Err(io(e));
+    }
+    drop(csv);
+    let csv_bytes = std::fs::read(&partial).map_err(io)?;
+    let mut files = outputs::fleet::render(&fleet, &rows, &template_path, args.reports)?;
+    files.push(OutputFile {
+        name: "fleet.csv".into(),
+        bytes: csv_bytes,
+    });
+    // The whole folder (fleet.csv with the charts and page) is swapped in at once.
+    write_folder(dir, Group::Fleet, &files)?;
+    let _ = std::fs::remove_file(&partial);
+    let failed = rows.iter().filter(|r| r.outcome.is_err()).count();
+    eprintln!(
+        "{} rows ({} ok, {failed} failed) in {}: open {}",
+        rows.len(),
+        rows.len() - failed,
+        dir.join("fleet.csv").display(),
+        dir.join("index.html").display()
+    );
+    Ok(if failed == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(3)
+    })
+}
+
+/// A row whose item panicked has no file cells: the item's paths, without hashes.
+fn pad_files(fleet: &Fleet, item: &Item, mut row: Row) -> Row {
+    if row.files.is_empty() {
+        row.files = fleet
+            .inputs()
+            .roles()
+            .iter()
+            .zip(fleet.inputs().files(item))
+            .map(|(&role, path)| fleet::InputFile {
+                role,
+                path,
+                sha256: None,
+            })
+            .collect();
+    }
+    row
+}
+
+/// One item's row; with `reports`, its full report written into `reports/<id>/` too.
+fn assess(fleet: &Fleet, item: &Item, reports: Option<&Path>) -> Result<Row, String> {
+    let Some(dir) = reports else {
+        return Ok(fleet.assess(item));
+    };
+    let run = fleet.run(item);
+    let mut row = fleet.row(item, run.as_ref().map(|(_, r)| r).map_err(String::as_str));
+    if let Ok((scene, results)) = &run {
+        let written = outputs::render(scene, results, &[])
+            .and_then(|files| write_folder(&dir.join(&item.id), Group::Report, &files));
+        if let Err(e) = written {
+            row.outcome = Err(format!("report not written: {e}"));
+        }
+    }
+    Ok(row)
+}
+
+/// Progress on standard error: a bar with count, rate and time left on a terminal, a plain
+/// line every [`Progress::PLAIN_EVERY`] otherwise (and a last one at the end).
+struct Progress {
+    bar: Option<indicatif::ProgressBar>,
+    total: usize,
+    done: usize,
+    failed: usize,
+    start: Instant,
+    last_line: Instant,
+}
+
+impl Progress {
+    const PLAIN_EVERY: Duration = Duration::from_secs(10);
+
+    fn new(total: usize) -> Progress {
+        let bar = std::io::stderr().is_terminal().then(|| {
+            let bar = indicatif::ProgressBar::new(total as u64);
+            if let Ok(style) = indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} profiles, {per_sec}, {eta} left {msg}",
+            ) {
+                bar.set_style(style);
+            }
+            bar
+        });
+        let now = Instant::now();
+        Progress {
+            bar,
+            total,
+            done: 0,
+            failed: 0,
+            start: now,
+            last_line: now,
+        }
+    }
+
+    fn step(&mut self, ok: bool) {
+        self.done += 1;
+        if !ok {
+            self.failed += 1;
+        }
+        if let Some(bar) = &self.bar {
+            if !ok {
+                bar.set_message(format!("({} failed)", self.failed));
+            }
+            bar.inc(1);
+        } else if self.last_line.elapsed() >= Self::PLAIN_EVERY {
+            self.last_line = Instant::now();
+            self.line();
+        }
+    }
+
+    fn line(&self) {
+        let seconds = self.start.elapsed().as_secs_f64();
+        let rate = self.done as f64 / seconds.max(1e-9);
+        eprintln!(
+            "fleet: {}/{} profiles ({} failed), {rate:.0}/s, about {:.0} s left",
+            self.done,
+            self.total,
+            self.failed,
+            (self.total - self.done) as f64 / rate.max(1e-9)
+        );
+    }
+
+    fn finish(&self) {
+        match &self.bar {
+            Some(bar) => bar.finish(),
+            None => self.line(),
+        }
+    }
+}
