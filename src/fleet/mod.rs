@@ -203,7 +203,7 @@ pub fn parse_pairs(text: &str, origin: &str, dir: &Path) -> Result<(Vec<Item>, I
         None => format!("{origin}: {e}"),
     };
     let header = reader.headers().map_err(csv_error)?.clone();
-    let header_line = reader.position().line().max(1);
+    let header_line = header.position().map_or(1, csv::Position::line);
     let mut column = [None; 5];
     for (i, name) in header.iter().enumerate() {
         let Some(k) = PAIR_COLUMNS.iter().position(|c| *c == name) else {
