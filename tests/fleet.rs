@@ -156,7 +156,10 @@ fn fleet_rows_equal_single_reports_of_the_same_scene() {
     }
     assert!(!out.join(wheelrail::app::fleet::PARTIAL_CSV).exists());
     let page = read(&out.join("index.html"));
-    assert!(page.contains("Pairs over the limit tan γe(3 mm) &gt; 0.3"), "{page}");
+    assert!(
+        page.contains("Pairs over the limit tan γe(3 mm) &gt; 0.3"),
+        "{page}"
+    );
 }
 
 #[test]
@@ -188,7 +191,11 @@ fn one_or_two_threads_and_shards_give_the_same_csv() {
     for n in [2, 3, 5] {
         let mut joined = String::new();
         for k in 1..=n {
-            let part = run(&format!("shard-{k}-of-{n}"), "2", &["--shard", &format!("{k}/{n}")]);
+            let part = run(
+                &format!("shard-{k}-of-{n}"),
+                "2",
+                &["--shard", &format!("{k}/{n}")],
+            );
             if k == 1 {
                 joined.push_str(&part);
             } else {
@@ -203,7 +210,10 @@ fn one_or_two_threads_and_shards_give_the_same_csv() {
                 }
             }
         }
-        assert!(joined == one, "shards of {n} do not concatenate to the whole");
+        assert!(
+            joined == one,
+            "shards of {n} do not concatenate to the whole"
+        );
     }
 }
 
@@ -237,7 +247,8 @@ fn bad_files_in_the_middle_give_error_rows_and_exit_3() {
     let scene = dir.join("strict.toml");
     std::fs::write(
         &scene,
-        read(&root().join("reports/fleet/scene.toml")).replace("drop_step_backs = true", "drop_step_backs = false"),
+        read(&root().join("reports/fleet/scene.toml"))
+            .replace("drop_step_backs = true", "drop_step_backs = false"),
     )
     .unwrap();
     let list: Vec<&Path> = vec![
@@ -265,7 +276,11 @@ fn bad_files_in_the_middle_give_error_rows_and_exit_3() {
         assert!(status.contains(file), "row {i}: {status}");
         assert!(status.to_lowercase().contains(words), "row {i}: {status}");
         assert_eq!(got[i]["tan_gamma_e_3mm"], "NaN");
-        assert_eq!(got[i]["wheel_sha256"].len(), 64, "row {i}: the file was readable");
+        assert_eq!(
+            got[i]["wheel_sha256"].len(),
+            64,
+            "row {i}: the file was readable"
+        );
     }
     // The good rows are complete: the same as a fleet of the good files alone.
     let alone = dir.join("alone");
@@ -308,7 +323,11 @@ fn pairs_and_rails_match_single_reports_and_a_bad_path_is_a_row() {
     let got = rows(&read(&out.join("fleet.csv")));
     assert_eq!(got.len(), 2);
     assert_eq!(got[0]["status"], "ok");
-    assert!(got[1]["status"].contains("missing.csv"), "{}", got[1]["status"]);
+    assert!(
+        got[1]["status"].contains("missing.csv"),
+        "{}",
+        got[1]["status"]
+    );
     assert!(got[1]["right_wheel_sha256"].is_empty());
     // ws1 against a report with the two wheels.
     let base = read(&scene);
@@ -374,11 +393,17 @@ fn a_fleet_that_cannot_run_exits_2_and_writes_nothing() {
     let bad_column = pairs("bad_column.csv", "id,left,right\nws1,a.csv,b.csv\n");
     let cases: Vec<(Vec<String>, Vec<&str>)> = vec![
         (
-            vec![bad_scene.display().to_string(), files[0].display().to_string()],
+            vec![
+                bad_scene.display().to_string(),
+                files[0].display().to_string(),
+            ],
             vec!["fleet.conicity_limit"],
         ),
         (
-            vec![unknown.display().to_string(), files[0].display().to_string()],
+            vec![
+                unknown.display().to_string(),
+                files[0].display().to_string(),
+            ],
             vec!["limit", "unknown field"],
         ),
         (

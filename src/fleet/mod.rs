@@ -606,23 +606,29 @@ pub fn in_order<T, R>(
                 }
             }
         });
-        rayon::broadcast(|_| {
-            let tx = tx.clone();
-            loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(item) = items.get(i) else { break };
-                let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(item)))
-                    .unwrap_or_else(|p| {
-                        let text = p
-                            .downcast_ref::<&str>()
-                            .map(|s| (*s).to_string())
-                            .or_else(|| p.downcast_ref::<String>().cloned())
-                            .unwrap_or_default();
-                        on_panic(text)
-                    });
-                if tx.send((i, r)).is_err() {
-                    break;
-                }
+        // One job per thread of the current pool, each taking the next item until none is
+        // left (rayon::scope: from inside a pool, its idle threads steal the jobs).
+        let work = |tx: std::sync::mpsc::Sender<(usize, R)>| loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some(item) = items.get(i) else { break };
+            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(item)))
+                .unwrap_or_else(|p| {
+                    let text = p
+                        .downcast_ref::<&str>()
+                        .map(|s| (*s).to_string())
+                        .or_else(|| p.downcast_ref::<String>().cloned())
+                        .unwrap_or_default();
+                    on_panic(text)
+                });
+            if tx.send((i, r)).is_err() {
+                break;
+            }
+        };
+        rayon::scope(|s| {
+            for _ in 0..rayon::current_num_threads() {
+                let tx = tx.clone();
+                let work = &work;
+                s.spawn(move |_| work(tx));
             }
         });
         drop(tx);
