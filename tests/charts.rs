@@ -162,3 +162,44 @@ fn one_extreme_sample_does_not_set_the_range() {
         "no tick label at -1e6"
     );
 }
+
+/// The fleet report's charts (issue 14), on 60 generated profiles and the measured CONTACT
+/// wheels with a limit: no legend covers data, the limit line or its label.
+#[test]
+fn no_legend_of_the_fleet_charts_covers_data_or_labels() {
+    use wheelrail::fleet::{self, Fleet, Inputs, synthetic};
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = root.join("target/test-scratch/charts-fleet");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut files: Vec<PathBuf> = (0..60)
+        .map(|i| {
+            let p = dir.join(format!("worn_{i:04}.csv"));
+            std::fs::write(&p, synthetic::csv_text(14, i).0).unwrap();
+            p
+        })
+        .collect();
+    for name in ["Car7216_0001r.whl", "Car7358_0001r.whl", "avg_wheel.whl"] {
+        files.push(root.join("tests/data/profiles").join(name));
+    }
+    let template = Scene::load(&root.join("reports/fleet/scene.toml")).unwrap();
+    let limit = template.fleet.conicity_limit;
+    assert!(limit.is_some(), "the default fleet scene sets a limit");
+    let items = fleet::items_of_files(&files, false);
+    let fleet = Fleet::new(template, Inputs::Wheels, &items, false).unwrap();
+    let rows: Vec<_> = items.iter().map(|i| fleet.assess(i)).collect();
+    let figures = [
+        outputs::fleet::histogram(&rows, limit),
+        outputs::fleet::conicity_against_nonlinearity(&rows, limit),
+        outputs::fleet::conicity_functions(&rows, limit, "klingel"),
+    ];
+    let mut problems = Vec::new();
+    for (i, figure) in figures.iter().enumerate() {
+        assert!(layout(figure).unwrap()[0].legend.is_some(), "figure {i}");
+        problems.extend(
+            covered_legends(figure)
+                .into_iter()
+                .map(|p| format!("fleet figure {i}: {p}")),
+        );
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}

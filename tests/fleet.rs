@@ -263,7 +263,13 @@ fn bad_files_in_the_middle_give_error_rows_and_exit_3() {
     let out = dir.join("out");
     let o = fleet(&scene, &list, &out, &[]);
     assert_clean_failure(&o, 3, &["7 rows (3 ok, 4 failed)"]);
-    let got = rows(&read(&out.join("fleet.csv")));
+    let text = read(&out.join("fleet.csv"));
+    // Every NaN is explained: by the status of a failed row, by undefined_status otherwise.
+    assert_eq!(
+        common::unflagged_non_finite("fleet.csv", &text),
+        Vec::<String>::new()
+    );
+    let got = rows(&text);
     assert_eq!(got.len(), 7);
     let expect_error = [
         (1, "empty.csv", "empty"),

@@ -25,7 +25,7 @@ pub fn columns(fleet: &Fleet) -> Vec<String> {
     if fleet.has_hertz() {
         c.extend(HERTZ_COLUMNS.iter().map(|s| s.to_string()));
     }
-    c.push("notes".into());
+    c.push("undefined_status".into());
     c
 }
 
@@ -63,7 +63,7 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
             env!("CARGO_PKG_VERSION"),
             stages.join(", ")
         ),
-        "one row per profile or pair, in input order; status: ok, or why that row's files could not be assessed (the reader's message names the file and line); NaN where a value is undefined, with the reason in notes".into(),
+        "one row per profile or pair, in input order; status: ok, or why that row's files could not be assessed (the reader's message names the file and line); NaN where a value is undefined, with the reason in undefined_status".into(),
         format!(
             "the *_file columns name the profiles each row puts in place of the template's (a wheel profile on both wheels, mirrored by the right side frame); the others are the template's: wheels {}, rails {}",
             profile_names(&t.wheel_profiles),
