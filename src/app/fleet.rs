@@ -38,7 +38,7 @@ pub struct FleetArgs {
     /// the whole fleet's.
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
-    /// Also write each pair's full report (the template's figures) into DIR/<id>/.
+    /// Also write each pair's full report (the template's figures) into DIR/ID/ (ID the row's id).
     #[arg(long)]
     pub reports: bool,
 }
