@@ -214,9 +214,14 @@ impl Progress {
         let bar = std::io::stderr().is_terminal().then(|| {
             let bar = indicatif::ProgressBar::new(total as u64);
             if let Ok(style) = indicatif::ProgressStyle::with_template(
-                "{bar:40} {pos}/{len} profiles, {per_sec}, {eta} left {msg}",
+                "{bar:40} {pos}/{len} profiles, {rate}, {eta} left {msg}",
             ) {
-                bar.set_style(style);
+                bar.set_style(style.with_key(
+                    "rate",
+                    |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+                        let _ = write!(w, "{:.0}/s", s.per_sec());
+                    },
+                ));
             }
             bar
         });
@@ -251,7 +256,7 @@ impl Progress {
         let seconds = self.start.elapsed().as_secs_f64();
         let rate = self.done as f64 / seconds.max(1e-9);
         eprintln!(
-            "fleet: {}/{} profiles ({} failed), {rate:.0}/s, about {:.0} s left",
+            "fleet: {}/{} profiles ({} failed) in {seconds:.1} s, {rate:.0}/s, about {:.0} s left",
             self.done,
             self.total,
             self.failed,
@@ -260,9 +265,9 @@ impl Progress {
     }
 
     fn finish(&self) {
-        match &self.bar {
-            Some(bar) => bar.finish(),
-            None => self.line(),
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
         }
+        self.line();
     }
 }
