@@ -469,3 +469,49 @@ fn a_fleet_that_cannot_run_exits_2_and_writes_nothing() {
         .unwrap();
     assert_clean_failure(&o, 2, &["PROFILES"]);
 }
+
+/// A run stopped half-way keeps every row it finished, whole and in order, in
+/// `fleet.csv.partial`; `fleet.csv` appears only when a run completes.
+#[test]
+fn an_interrupted_fleet_keeps_its_finished_rows() {
+    let dir = scratch("fleet-interrupted");
+    let files = generated(&dir, 1000);
+    let out = dir.join("out");
+    let mut child = bin()
+        .env("RAYON_NUM_THREADS", "1")
+        .arg("fleet")
+        .arg(root().join("reports/fleet/scene.toml"))
+        .args(&files)
+        .arg("--out")
+        .arg(&out)
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let partial = out.join(wheelrail::app::fleet::PARTIAL_CSV);
+    // About 2 ms a profile on one thread: 1000 take seconds; stop after 20 rows.
+    let start = std::time::Instant::now();
+    loop {
+        let done = std::fs::read_to_string(&partial)
+            .map(|t| t.lines().filter(|l| l.starts_with("worn_")).count())
+            .unwrap_or(0);
+        if done >= 20 {
+            break;
+        }
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the run ended before it was stopped"
+        );
+        assert!(start.elapsed().as_secs() < 60, "no rows after 60 s");
+        std::thread::sleep(std::time::Duration::from_millis(2));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(!out.join("fleet.csv").exists());
+    // `rows` reads with the csv crate, which refuses a row with fewer cells than the header.
+    let kept = rows(&read(&partial));
+    assert!(kept.len() >= 20 && kept.len() < 1000, "{} rows", kept.len());
+    for (i, row) in kept.iter().enumerate() {
+        assert_eq!(row["id"], format!("worn_{i:04}"));
+        assert_eq!(row["status"], "ok");
+    }
+}
