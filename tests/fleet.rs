@@ -135,10 +135,16 @@ fn fleet_rows_equal_single_reports_of_the_same_scene() {
     let scene = dir.join("fleet.toml");
     std::fs::write(&scene, template(Path::new("S1002"))).unwrap();
     let args: Vec<&Path> = files.iter().map(PathBuf::as_path).collect();
+    // Without --reports the summary computes the conicity of one method from the rigid
+    // sweep; with it the whole stage runs for the pair's report: the same rows.
+    let plain = dir.join("plain");
+    let o = fleet(&scene, &args, &plain, &[]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let out = dir.join("out");
     let o = fleet(&scene, &args, &out, &["--reports"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let fleet_rows = rows(&read(&out.join("fleet.csv")));
+    let fleet_rows = rows(&read(&plain.join("fleet.csv")));
+    assert_eq!(fleet_rows, rows(&read(&out.join("fleet.csv"))));
     assert_eq!(fleet_rows.len(), files.len());
     for (row, file) in fleet_rows.iter().zip(&files) {
         assert_eq!(row["status"], "ok");

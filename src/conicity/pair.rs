@@ -227,16 +227,48 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 /// The equivalent conicity and parameters of the pair swept by `sweep`.
 pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
     let delta_r = delta_r_of(sweep);
-    let amplitudes = settings
-        .amplitudes_mm
-        .clone()
-        .unwrap_or_else(|| supported_default_amplitudes(&delta_r));
+    let amplitudes = amplitudes(settings, &delta_r);
     let klingel = equivalent_conicity(&delta_r, &amplitudes, Method::Klingel);
     let regression = equivalent_conicity(&delta_r, &amplitudes, Method::Regression);
-    let at = equivalent_conicity(&delta_r, &[2.0, 3.0, 4.0], settings.method);
+    let parameters = parameters(sweep, &delta_r, settings);
+    PairConicity {
+        delta_r,
+        klingel,
+        regression,
+        parameters,
+    }
+}
+
+/// The pair's equivalent conicity function by the settings' method only, and its
+/// parameters: what [`assess`] gives for that method, without the other method's function
+/// (a fleet's summary needs one). The same functions compute both: the values are
+/// [`assess`]'s to the last digit.
+pub fn assess_by_method(
+    sweep: &RigidSweep,
+    settings: &Settings,
+) -> (EquivalentConicity, Parameters) {
+    let delta_r = delta_r_of(sweep);
+    let amplitudes = amplitudes(settings, &delta_r);
+    (
+        equivalent_conicity(&delta_r, &amplitudes, settings.method),
+        parameters(sweep, &delta_r, settings),
+    )
+}
+
+/// The amplitudes of the settings, or the default ones the Δr function supports.
+fn amplitudes(settings: &Settings, delta_r: &DeltaR) -> Vec<f64> {
+    settings
+        .amplitudes_mm
+        .clone()
+        .unwrap_or_else(|| supported_default_amplitudes(delta_r))
+}
+
+/// The parameters of the pair swept by `sweep`, whose Δr function is `delta_r`.
+fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Parameters {
+    let at = equivalent_conicity(delta_r, &[2.0, 3.0, 4.0], settings.method);
     let tan_gamma_e = [0, 1, 2].map(|i| at.points[i].tan_gamma_e);
     let [a2, a4] = NONLINEARITY_AMPLITUDES_MM;
-    let parameters = Parameters {
+    Parameters {
         method: settings.method,
         tan_gamma_e,
         nonlinearity_per_mm: (tan_gamma_e[2] - tan_gamma_e[0]) / (a4 - a2),
@@ -247,12 +279,6 @@ pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
         delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
         contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM]
             .map(|y| interpolate(sweep, y, |p| gamma(p, Side::Left) - gamma(p, Side::Right))),
-    };
-    PairConicity {
-        delta_r,
-        klingel,
-        regression,
-        parameters,
     }
 }
 

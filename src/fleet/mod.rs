@@ -20,7 +20,7 @@
 
 pub mod synthetic;
 
-use crate::conicity::{Method, Parameters};
+use crate::conicity::Parameters;
 use crate::pipeline::{self, Results, Stage};
 use crate::profile::Source;
 use crate::scene::{ProfileRef, Scene, SceneError};
@@ -349,22 +349,32 @@ pub struct Summary {
     pub max_p0: Option<MaxPressure>,
 }
 
-/// The summary of a run that computed the equivalent conicity (and Hertz, if it ran).
+/// The summary of a run: the equivalent conicity by `settings`' method and the pair's
+/// parameters (from the run's conicity stage when it ran, else computed here from its rigid
+/// sweep by [`crate::conicity::pair::assess_by_method`], the same values without the other
+/// method's function), and the largest Hertz pressure if Hertz ran.
 ///
 /// # Panics
-/// If the run did not compute the equivalent conicity (a caller's bug: [`Fleet`] always
-/// asks for it).
-pub fn summarise(results: &Results, method: Method) -> Summary {
-    let c = results
-        .conicity
-        .as_ref()
-        .expect("a fleet run computes the equivalent conicity");
-    let conicity = c
-        .by(method)
-        .points
-        .iter()
-        .map(|p| (p.amplitude_mm, p.tan_gamma_e))
-        .collect();
+/// If the run computed neither the equivalent conicity nor the rigid sweep (a caller's bug:
+/// [`Fleet`] always runs the rigid search).
+pub fn summarise(results: &Results, settings: &crate::conicity::Settings) -> Summary {
+    let points = |c: &crate::conicity::EquivalentConicity| -> Vec<(f64, f64)> {
+        c.points
+            .iter()
+            .map(|p| (p.amplitude_mm, p.tan_gamma_e))
+            .collect()
+    };
+    let (conicity, parameters) = match &results.conicity {
+        Some(c) => (points(c.by(settings.method)), c.parameters),
+        None => {
+            let rigid = results
+                .rigid
+                .as_ref()
+                .expect("a fleet run computes the rigid sweep");
+            let (function, parameters) = crate::conicity::pair::assess_by_method(rigid, settings);
+            (points(&function), parameters)
+        }
+    };
     let mut max_p0: Option<MaxPressure> = None;
     for p in results.hertz.iter().flatten() {
         for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
@@ -381,7 +391,7 @@ pub fn summarise(results: &Results, method: Method) -> Summary {
         }
     }
     Summary {
-        parameters: c.parameters,
+        parameters,
         conicity,
         max_p0,
     }
@@ -422,9 +432,10 @@ pub struct Fleet {
 
 impl Fleet {
     /// Prepares `template` for `items` of kind `inputs`: the template's wheels (rails) are
-    /// read and placed once if some item keeps them. The stages run per item are the
-    /// equivalent conicity and, when the template's figures need it, Hertz; with `full`,
-    /// every stage the template's figures need (for a full report per pair).
+    /// read and placed once if some item keeps them. The stages run per item are the rigid
+    /// search (the summary computes the conicity of the scene's method from it) and, when
+    /// the template's figures need it, Hertz; with `full`, every stage the template's
+    /// figures need and the equivalent conicity (for a full report per pair).
     ///
     /// # Errors
     /// The template's own profiles cannot be read or placed.
@@ -444,9 +455,12 @@ impl Fleet {
         } else {
             None
         };
-        let mut stages = vec![Stage::EquivalentConicity];
+        // The conicity function of one method and the parameters are computed from the
+        // rigid sweep by the summary; a full report needs the whole stage.
+        let mut stages = vec![Stage::Rigid];
         if full {
             stages.extend(pipeline::needed_stages(&template));
+            stages.push(Stage::EquivalentConicity);
         } else if pipeline::needed_stages(&template).contains(&Stage::Hertz) {
             stages.push(Stage::Hertz);
         }
@@ -470,9 +484,22 @@ impl Fleet {
         self.inputs
     }
 
-    /// The stages run for each item, in run order.
+    /// The pipeline stages run for each item, in run order (the summary adds the
+    /// equivalent conicity of the scene's method when the stage itself does not run).
     pub fn stages(&self) -> &[Stage] {
         &self.stages
+    }
+
+    /// What each item computes, in words: the stages, and the equivalent conicity.
+    pub fn describe_stages(&self) -> String {
+        let mut names: Vec<String> = self.stages.iter().map(|s| s.name().to_string()).collect();
+        if !self.stages.contains(&Stage::EquivalentConicity) {
+            names.push(format!(
+                "equivalent_conicity ({} method and parameters only)",
+                self.template.conicity.method.name()
+            ));
+        }
+        names.join(", ")
     }
 
     /// Whether the rows carry the Hertz pressure (the template's figures need Hertz).
@@ -521,7 +548,7 @@ impl Fleet {
     /// it, e.g. to write a full report too).
     pub fn row(&self, item: &Item, run: Result<&Results, &str>) -> Row {
         let outcome = run
-            .map(|r| summarise(r, self.template.conicity.method))
+            .map(|r| summarise(r, &self.template.conicity))
             .map_err(str::to_string);
         let files = self
             .inputs

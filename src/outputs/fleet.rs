@@ -56,12 +56,11 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
         t.sweep_mm.last().copied().unwrap_or(f64::NAN),
         t.sweep_mm.len()
     );
-    let stages: Vec<&str> = fleet.stages().iter().map(|s| s.name()).collect();
     let mut lines = vec![
         format!(
-            "fleet assessment by wheelrail {}: template scene {template_path} (sweep {sweep}; stages {})",
+            "fleet assessment by wheelrail {}: template scene {template_path} (sweep {sweep}; computed per row: {})",
             env!("CARGO_PKG_VERSION"),
-            stages.join(", ")
+            fleet.describe_stages()
         ),
         "one row per profile or pair, in input order; status: ok, or why that row's files could not be assessed (the reader's message names the file and line); NaN where a value is undefined, with the reason in undefined_status".into(),
         format!(
@@ -548,15 +547,7 @@ fn page(
                 "conicity limit".into(),
                 limit.map_or("none".into(), |l| l.to_string()),
             ),
-            (
-                "stages per pair".into(),
-                fleet
-                    .stages()
-                    .iter()
-                    .map(|s| s.name())
-                    .collect::<Vec<_>>()
-                    .join(", "),
-            ),
+            ("computed per pair".into(), fleet.describe_stages()),
         ],
         provenance: vec![(
             "wheelrail".into(),

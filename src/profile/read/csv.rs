@@ -22,13 +22,16 @@ pub(super) fn parse(
     let mut points = Vec::new();
     // One record reused for every line: a fleet reads thousands of files.
     let mut record = ::csv::StringRecord::new();
-    while reader.read_record(&mut record).map_err(|e| ReadError::Malformed {
-        origin: origin.to_owned(),
-        line: e
-            .position()
-            .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX)),
-        problem: format!("CSV syntax error: {e}"),
-    })? {
+    while reader
+        .read_record(&mut record)
+        .map_err(|e| ReadError::Malformed {
+            origin: origin.to_owned(),
+            line: e
+                .position()
+                .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX)),
+            problem: format!("CSV syntax error: {e}"),
+        })?
+    {
         let line = record
             .position()
             .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX));
