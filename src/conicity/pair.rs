@@ -306,3 +306,36 @@ fn interpolate(sweep: &RigidSweep, y: f64, f: impl Fn(&Position) -> f64) -> f64 
     let t = (y - a.y_ws) / (b.y_ws - a.y_ws);
     f(a) + t * (f(b) - f(a))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rigid::{Solver, search};
+    use crate::scene::Scene;
+
+    /// A fleet's summary (one method) and the stage agree to the last digit.
+    #[test]
+    fn one_method_gives_the_stages_values() {
+        let scene = Scene::from_toml(
+            "[sweep]\nfrom_mm = -8.0\nto_mm = 8.0\nstep_mm = 0.2",
+            "t",
+            ".".as_ref(),
+        )
+        .unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let sweep = search(&placement, &scene.sweep_mm, Solver::Default);
+        for method in [Method::Klingel, Method::Regression] {
+            let settings = Settings {
+                method,
+                amplitudes_mm: None,
+            };
+            let whole = assess(&sweep, &settings);
+            let (function, parameters) = assess_by_method(&sweep, &settings);
+            assert_eq!(parameters, whole.parameters);
+            assert_eq!(function.points.len(), whole.by(method).points.len());
+            for (a, b) in function.points.iter().zip(&whole.by(method).points) {
+                assert_eq!(a.tan_gamma_e.to_bits(), b.tan_gamma_e.to_bits());
+            }
+        }
+    }
+}

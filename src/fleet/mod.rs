@@ -661,3 +661,65 @@ pub fn in_order<T, R>(
         drop(tx);
     });
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Malformed pairs files are errors naming the file and line, never panics.
+    #[test]
+    fn bad_pairs_files_name_file_and_line() {
+        let cases = [
+            ("", "p.csv"),
+            (
+                "id,left_wheel\nws1,a.csv\n",
+                "p.csv:1: missing column \"right_wheel\"",
+            ),
+            (
+                "id,left_wheel,right_wheel,left_rail\nws1,a,b,c\n",
+                "p.csv:1: give both",
+            ),
+            ("id,left_wheel,right_wheel\nws1,a.csv\n", "p.csv:2"),
+            (
+                "id,left_wheel,right_wheel\nws1,a.csv,\n",
+                "p.csv:2: pair \"ws1\": empty right_wheel",
+            ),
+            (
+                "id,left_wheel,right_wheel\n../x,a.csv,b.csv\n",
+                "p.csv:2: id \"../x\"",
+            ),
+            ("id,left_wheel,right_wheel\n\"ws1,a.csv,b.csv\n", "p.csv"),
+            ("# only a comment\n", "p.csv"),
+            (
+                "id,id,right_wheel\n",
+                "p.csv:1: column \"id\" appears twice",
+            ),
+        ];
+        for (text, expected) in cases {
+            let e = parse_pairs(text, "p.csv", Path::new(".")).unwrap_err();
+            assert!(e.contains(expected), "{text:?}: {e}");
+        }
+        let (items, inputs) = parse_pairs(
+            "\u{feff}# measured 2026-11-23\nid,left_wheel,right_wheel,left_rail,right_rail\nws1,a.whl,b.whl,,\nws2,a.whl,b.whl,r.ban,s.ban\n",
+            "p.csv",
+            Path::new("d"),
+        )
+        .unwrap();
+        assert_eq!(inputs, Inputs::Pairs { rails: true });
+        assert_eq!(items[0].rails, None);
+        assert_eq!(
+            items[1].rails,
+            Some([PathBuf::from("d/r.ban"), PathBuf::from("d/s.ban")])
+        );
+    }
+
+    #[test]
+    fn shards_cover_the_list_once_in_order() {
+        for len in 0..20 {
+            for n in 1..7 {
+                let parts: Vec<usize> = (1..=n).flat_map(|k| Shard { k, n }.range(len)).collect();
+                assert_eq!(parts, (0..len).collect::<Vec<_>>(), "{len} in {n}");
+            }
+        }
+    }
+}
