@@ -382,6 +382,44 @@ fn pairs_and_rails_match_single_reports_and_a_bad_path_is_a_row() {
         ),
     );
     assert_row_is_report(&got[0], &report);
+
+    // A pairs file with rail columns: both wheels and both rails replaced.
+    let pairs = dir.join("pairs_rails.csv");
+    std::fs::write(
+        &pairs,
+        format!(
+            "id,left_wheel,right_wheel,left_rail,right_rail\nws1,worn_0000.csv,worn_0001.csv,{0},{0}\n",
+            rail.display()
+        ),
+    )
+    .unwrap();
+    let out = dir.join("pairs-rails");
+    let o = bin()
+        .arg("fleet")
+        .arg(&rail_scene)
+        .arg("--pairs")
+        .arg(&pairs)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let got = rows(&read(&out.join("fleet.csv")));
+    assert_eq!(got[0]["left_rail_file"], rail.display().to_string());
+    let report = single_report(
+        &dir,
+        "single-ws1-rails",
+        &template
+            .replace(
+                "inclination = \"1:40\"",
+                "inclination = \"1:40\"\nprofile_inclination = \"1:40\"",
+            )
+            .replace(
+                "profile = \"UIC60E1\"",
+                &format!("profile = \"{}\"", rail.display()),
+            ),
+    );
+    assert_row_is_report(&got[0], &report);
 }
 
 #[test]
@@ -404,6 +442,10 @@ fn a_fleet_that_cannot_run_exits_2_and_writes_nothing() {
         "id,left_wheel,right_wheel\nws1,a.csv,b.csv\nws1,c.csv,d.csv\n",
     );
     let bad_column = pairs("bad_column.csv", "id,left,right\nws1,a.csv,b.csv\n");
+    let clash = pairs(
+        "clash.csv",
+        "id,left_wheel,right_wheel\nindex.html,a.csv,b.csv\n",
+    );
     let cases: Vec<(Vec<String>, Vec<&str>)> = vec![
         (
             vec![
@@ -451,6 +493,15 @@ fn a_fleet_that_cannot_run_exits_2_and_writes_nothing() {
                 "3/2".into(),
             ],
             vec!["--shard", "K/N"],
+        ),
+        (
+            vec![
+                good_scene.display().to_string(),
+                "--pairs".into(),
+                clash.display().to_string(),
+                "--reports".into(),
+            ],
+            vec!["\"index.html\"", "--reports"],
         ),
     ];
     for (i, (args, words)) in cases.iter().enumerate() {

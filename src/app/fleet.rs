@@ -81,6 +81,14 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
         }
         None => items,
     };
+    if args.reports
+        && let Some(item) = items.iter().find(|i| is_fleet_output(&i.id))
+    {
+        return Err(Error::Other(format!(
+            "id {:?}: --reports would write its report folder where the fleet writes a file of that name; rename the profile file or the pair",
+            item.id
+        )));
+    }
     let template_path = args.scene.display().to_string();
     let fleet = Fleet::new(template, inputs, &items, args.reports)?;
     let dir = &args.out;
@@ -159,6 +167,18 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
     } else {
         ExitCode::from(3)
     })
+}
+
+/// Whether `name` is one of the files `wheelrail fleet` writes into its folder.
+fn is_fleet_output(name: &str) -> bool {
+    [
+        "fleet.csv",
+        PARTIAL_CSV,
+        "index.html",
+        super::write::MANIFEST,
+    ]
+    .contains(&name)
+        || name.starts_with("fleet_conicity_")
 }
 
 /// A row whose item panicked has no file cells: the item's paths, without hashes.
