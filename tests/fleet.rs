@@ -429,6 +429,12 @@ fn a_fleet_that_cannot_run_exits_2_and_writes_nothing() {
     let good_scene = root().join("reports/fleet/scene.toml");
     let bad_scene = dir.join("bad.toml");
     std::fs::write(&bad_scene, "[fleet]\nconicity_limit = -0.4\n").unwrap();
+    let long = dir.join("long.toml");
+    std::fs::write(
+        &long,
+        "[quasi_elastic]\nquadrature = \"trapezoid\"\nmax_step_mm = 0.0001\ncutoff = 700\n[outputs]\nfigures = [\"qe_contact_points\"]\n",
+    )
+    .unwrap();
     let unknown = dir.join("unknown.toml");
     std::fs::write(&unknown, "[fleet]\nlimit = 0.4\n").unwrap();
     let pairs = |name: &str, text: &str| -> PathBuf {
@@ -460,6 +466,10 @@ fn a_fleet_that_cannot_run_exits_2_and_writes_nothing() {
                 files[0].display().to_string(),
             ],
             vec!["limit", "unknown field"],
+        ),
+        (
+            vec![long.display().to_string(), files[0].display().to_string()],
+            vec!["each pair", "gap evaluations", "--allow-long"],
         ),
         (
             vec![

@@ -38,6 +38,10 @@ pub struct FleetArgs {
     /// the whole fleet's.
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
+    /// Run a template whose estimated work per pair exceeds the budget of a report
+    /// (`cost::WORK_BUDGET`).
+    #[arg(long)]
+    pub allow_long: bool,
     /// Also write each pair's full report (the template's figures) into DIR/ID/ (ID the row's id).
     #[arg(long)]
     pub reports: bool,
@@ -91,6 +95,17 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
     }
     let template_path = args.scene.display().to_string();
     let fleet = Fleet::new(template, inputs, &items, args.reports)?;
+    // Each pair computes at most what a report of the template would: refused as a report
+    // would be (estimated on the template's own profiles, when they can be placed).
+    if let Ok(placement) = crate::pipeline::place(fleet.template()) {
+        let estimate = crate::cost::estimate(fleet.template(), &placement);
+        if !estimate.within_budget() && !args.allow_long {
+            return Err(Error::Other(format!(
+                "{template_path}: each pair: {}: refused; coarsen those keys, or run with --allow-long",
+                estimate.describe()
+            )));
+        }
+    }
     let dir = &args.out;
     if dir.exists() && !dir.is_dir() {
         return Err(Error::Other(format!(
