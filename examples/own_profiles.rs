@@ -22,7 +22,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // Standard gauge and wheelset, rails inclined 1:40; the rail points are upright.
     let layout = TrackLayout::standard(Inclination::parse("1:40")?);
-    let placement = Placement::symmetric(wheel, 460.0, rail, Inclination(0.0), layout)?;
+    let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
 
     // Lateral shifts of the wheelset from -10 to 10 mm every 0.1 mm, roll solved.
     let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();

@@ -18,7 +18,7 @@ use crate::profile::ProfileKind;
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep};
 use crate::scene::Scene;
-use crate::track::{PlacedRail, PlacedWheel, Placement, Side, SidePair};
+use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, SidePair};
 use std::time::Instant;
 
 pub use crate::stage::{Figure, Stage};
@@ -133,7 +133,12 @@ pub fn run_gated(
     let mut record = RunRecord::default();
     let placement = record.time(Stage::Profiles, || place(scene))?;
     record.progress = gate(&placement)?;
-    Ok(run_recorded(scene, placement, &needed_stages(scene), record))
+    Ok(run_recorded(
+        scene,
+        placement,
+        &needed_stages(scene),
+        record,
+    ))
 }
 
 /// Runs `stages` (and the stages they depend on, see [`closed_stages`]) of `scene` on a
@@ -260,7 +265,7 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     let (wheel_keys, rail_keys) = (scene.wheel_profile_keys, scene.rail_profile_keys);
     let mut pairs: Vec<SidePair> = Vec::with_capacity(2);
     let placement_error =
-        |key: &'static str, e: crate::track::PlacementError| crate::scene::SceneError::Profile {
+        |key: &'static str, e: PlacementError| crate::scene::SceneError::Profile {
             path: scene.path.clone(),
             key,
             message: e.to_string(),
@@ -285,35 +290,18 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
                     .map_err(|e| placement_error(rail_keys[i], e))?
             }
         };
-        pairs.push(SidePair { wheel, rail });
+        pairs.push(SidePair::new(wheel, rail));
     }
     let right = pairs.pop().expect("two sides were pushed");
     let left = pairs.pop().expect("two sides were pushed");
-    let placement = Placement {
-        layout: scene.layout.clone(),
-        left,
-        right,
-    };
-    // A wheel that lies nowhere above its rail with the wheelset centred cannot touch it in
-    // any sweep of a few centimetres: a unit mistake or a wrong profile, not a result.
-    for (side, key) in [(Side::Left, wheel_keys[0]), (Side::Right, wheel_keys[1])] {
-        let pair = placement.side(side);
-        let (s_lo, s_hi) = pair.wheel.profile().domain();
-        let (y_lo, y_hi) = pair.rail.y_range();
-        let taping = pair.wheel.taping_line_mm();
-        if taping + s_hi < y_lo || taping + s_lo > y_hi {
-            return Err(crate::scene::SceneError::Profile {
-                path: scene.path.clone(),
-                key,
-                message: format!(
-                    "the {} wheel and rail do not overlap laterally with the wheelset centred (wheel {}, rail {}): check the profiles' lateral origins and units",
-                    side.name(),
-                    placement.side(side).wheel.profile().name(),
-                    placement.side(side).rail.profile().name()
-                ),
-            }
-            .into());
-        }
-    }
+    let placement = Placement::new(scene.layout.clone(), left, right).map_err(|e| {
+        let key = match e {
+            PlacementError::NoOverlap {
+                side: Side::Right, ..
+            } => wheel_keys[1],
+            _ => wheel_keys[0],
+        };
+        placement_error(key, e)
+    })?;
     Ok(placement)
 }

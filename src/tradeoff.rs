@@ -209,11 +209,8 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
         )
         .map_err(|e| crate::Error::Other(e.to_string()))
     };
-    Ok(Placement {
-        layout: scene.layout.clone(),
-        left: side(0)?,
-        right: side(1)?,
-    })
+    Placement::new(scene.layout.clone(), side(0)?, side(1)?)
+        .map_err(|e| crate::Error::Other(e.to_string()))
 }
 
 /// One run of the pipeline's stages (placement included, as a report runs them) under

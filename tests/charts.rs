@@ -77,7 +77,7 @@ fn no_legend_of_a_committed_report_covers_data_or_labels() {
     for path in &scenes {
         let scene = Scene::load(path).unwrap();
         let results = pipeline::run(&scene).unwrap();
-        for &fig in &scene.figures {
+        for &fig in scene.figures() {
             let figure = outputs::figure(fig, &results).unwrap();
             checked += layout(&figure)
                 .unwrap()

@@ -224,7 +224,7 @@ fn weight_shares_match_an_independent_integration() {
     let sweep: Vec<f64> = (0..=30).map(|i| 3.5 + 0.1 * f64::from(i)).collect();
     let r = rigid::search(placement(), &sweep, Solver::Default);
     let q = quasi_elastic::search(placement(), &r, &Settings::default());
-    let side = SideGap::new(&placement().left, 1.0);
+    let side = SideGap::new(placement().left(), 1.0);
     let mut checked = 0;
     for (rp, qp) in r.positions.iter().zip(&q.positions) {
         let patches = &qp.side(Side::Left).patches;

@@ -161,7 +161,7 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
 #[test]
 fn scene_rejects_values_that_overflow_on_conversion() {
     let scene = Scene::from_toml("[load]\nwheel_load_kN = 1e306\n", "t", Path::new("."));
-    assert!(scene.is_err(), "{:?}", scene.map(|s| s.wheel_load_n));
+    assert!(scene.is_err(), "{:?}", scene.map(|s| s.wheel_load_n()));
 }
 
 /// Found while fuzzing scenes: any positive `quasi_elastic.max_step_mm` is accepted, but the

@@ -91,8 +91,8 @@ fn paper_solver_touches_within_its_tolerance() {
 fn brute_force(y_ws: f64) -> (f64, [f64; 2]) {
     let placement = paper_placement();
     let sides = [
-        SideGap::new(&placement.left, 1.0),
-        SideGap::new(&placement.right, -1.0),
+        SideGap::new(placement.left(), 1.0),
+        SideGap::new(placement.right(), -1.0),
     ];
     let min = |k: usize, roll: f64| -> (f64, f64) {
         let sign = sides[k].sign;
@@ -281,16 +281,14 @@ fn resampled_placement(step: f64) -> Placement {
         let points = parse_str(&text, ProfileFormat::Csv, p.kind(), "resampled").unwrap();
         Profile::from_points(points, 0.0).unwrap()
     };
-    let layout = paper_placement().layout.clone();
-    let pair = || SidePair {
-        wheel: PlacedWheel::place(sampled(Profile::s1002()), 460.0, &layout).unwrap(),
-        rail: PlacedRail::place(sampled(Profile::uic60e1()), Inclination(0.0), &layout).unwrap(),
+    let layout = paper_placement().layout().clone();
+    let pair = || {
+        SidePair::new(
+            PlacedWheel::place(sampled(Profile::s1002()), 460.0, &layout).unwrap(),
+            PlacedRail::place(sampled(Profile::uic60e1()), Inclination::VERTICAL, &layout).unwrap(),
+        )
     };
-    Placement {
-        layout: layout.clone(),
-        left: pair(),
-        right: pair(),
-    }
+    Placement::new(layout.clone(), pair(), pair()).unwrap()
 }
 
 #[test]

@@ -316,15 +316,18 @@ fn place(
 ) -> Placement {
     let [wl, wr] = wheels;
     let [rl, rr] = rails;
-    let pair = |w: Profile, r: Profile, r0: f64| SidePair {
-        wheel: PlacedWheel::place(w, r0, layout).expect("a wheel"),
-        rail: PlacedRail::place(r, Inclination(0.0), layout).expect("a rail with a gauge point"),
+    let pair = |w: Profile, r: Profile, r0: f64| {
+        SidePair::new(
+            PlacedWheel::place(w, r0, layout).expect("a wheel"),
+            PlacedRail::place(r, Inclination::VERTICAL, layout).expect("a rail with a gauge point"),
+        )
     };
-    Placement {
-        layout: layout.clone(),
-        left: pair(wl, rl, radii_mm[0]),
-        right: pair(wr, rr, radii_mm[1]),
-    }
+    Placement::new(
+        layout.clone(),
+        pair(wl, rl, radii_mm[0]),
+        pair(wr, rr, radii_mm[1]),
+    )
+    .expect("the sides overlap")
 }
 
 /// `count` shifts in `[-reach, reach]` (both ends, 0 and the flange region included).
@@ -359,7 +362,7 @@ const S1002_VALUE_JUMP_MM: f64 = 1.2e-4;
 /// The penetration tolerated on `side`: [`PENETRATION_TOL_MM`], or the value jump of an
 /// analytic profile with joints.
 fn penetration_tol(placement: &Placement, side: Side) -> f64 {
-    if placement.side(side).wheel.profile().joints().is_empty() {
+    if placement.side(side).wheel().profile().joints().is_empty() {
         PENETRATION_TOL_MM
     } else {
         S1002_VALUE_JUMP_MM
@@ -373,7 +376,7 @@ fn gaps(placement: &Placement, side: Side, pos: &Position, step: f64) -> Vec<(f6
     let sign = side.sign();
     let gap = SideGap::new(placement.side(side), sign);
     let pose = SidePose::new(sign, pos.y_ws, pos.roll);
-    let (lo, hi) = placement.side(side).wheel.profile().domain();
+    let (lo, hi) = placement.side(side).wheel().profile().domain();
     let n = ((hi - lo) / step).ceil() as usize;
     (0..=n)
         .filter_map(|i| {
@@ -392,7 +395,8 @@ fn check_rigid(placement: &Placement, sweep: &RigidSweep, context: &str) -> usiz
             continue;
         }
         converged += 1;
-        let radii = [Side::Left, Side::Right].map(|s| placement.side(s).wheel.nominal_radius_mm());
+        let radii =
+            [Side::Left, Side::Right].map(|s| placement.side(s).wheel().nominal_radius_mm());
         let max_roll = MAX_ROLL_RAD + (radii[0] - radii[1]).abs() / 1500.0;
         assert!(
             pos.roll.is_finite() && pos.roll.abs() < max_roll,

@@ -3,12 +3,14 @@
 
 use super::raw::{RawConicity, RawQuasiElastic, RawScene, RawSweep};
 use super::{
-    CUTOFF_RANGE, DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_NOMINAL_RADIUS_MM, DEFAULT_POISSON,
-    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_WHEEL_LOAD_KN, DEFAULT_YOUNG_GPA, GAUGE_RANGE_MM,
-    ImageFormat, MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS, MAX_SMOOTHING_WAVELENGTH_MM,
-    MAX_SWEEP_POSITIONS, MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N, MIN_EPSILON_MM, MIN_PANEL_WIDTHS,
-    MIN_SWEEP_STEP_MM, MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN,
-    NOMINAL_RADIUS_RANGE_MM, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
+    CUTOFF_RANGE, DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_INCLINATION, DEFAULT_NOMINAL_RADIUS_MM,
+    DEFAULT_POISSON, DEFAULT_RAIL_PROFILE, DEFAULT_RAIL_PROFILE_INCLINATION,
+    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_SWEEP_MM, DEFAULT_SWEEP_STEP_MM,
+    DEFAULT_WHEEL_LOAD_KN, DEFAULT_WHEEL_PROFILE, DEFAULT_YOUNG_GPA, ImageFormat,
+    MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS, MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS,
+    MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N, MIN_EPSILON_MM, MIN_PANEL_WIDTHS, MIN_SWEEP_STEP_MM,
+    MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef,
+    Scene, YOUNG_RANGE_GPA,
 };
 use crate::error::Number;
 use crate::hertz::Material;
@@ -17,7 +19,10 @@ use crate::profile::Profile;
 use crate::quasi_elastic::{Quadrature, Settings as QeSettings};
 use crate::rigid::Solver;
 use crate::stage::Figure;
-use crate::track::{Inclination, TrackLayout};
+use crate::track::{
+    GAUGE_POINT_DEPTH_MM, Inclination, LayoutError, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
+    TrackLayout,
+};
 use std::path::Path;
 
 /// A failed check: the key as written and what is wrong with its value.
@@ -118,7 +123,11 @@ fn profile_refs(raw: &RawScene, dir: &Path) -> ProfileRefs {
             ProfileRef::File(dir.join(text))
         }
     };
-    let wheel = raw.wheel.profile.as_deref().unwrap_or("S1002");
+    let wheel = raw
+        .wheel
+        .profile
+        .as_deref()
+        .unwrap_or(DEFAULT_WHEEL_PROFILE);
     let wheel_profiles = [
         profile_ref(raw.wheel.left_profile.as_deref().unwrap_or(wheel)),
         profile_ref(raw.wheel.right_profile.as_deref().unwrap_or(wheel)),
@@ -147,7 +156,7 @@ fn profile_refs(raw: &RawScene, dir: &Path) -> ProfileRefs {
             "rail.profile",
         ),
     ];
-    let rail = raw.rail.profile.as_deref().unwrap_or("UIC60E1");
+    let rail = raw.rail.profile.as_deref().unwrap_or(DEFAULT_RAIL_PROFILE);
     let rail_profiles = [
         profile_ref(raw.rail.left_profile.as_deref().unwrap_or(rail)),
         profile_ref(raw.rail.right_profile.as_deref().unwrap_or(rail)),
@@ -174,13 +183,8 @@ fn nominal_radii(raw: &RawScene) -> Result<[f64; 2], Invalid> {
         .map(|(r, (k, v))| (r, k, v))
     {
         let (key, v) = written(own_key, own, "wheel.nominal_radius_mm", w.nominal_radius_mm);
-        *r = within(
-            v.unwrap_or(DEFAULT_NOMINAL_RADIUS_MM),
-            NOMINAL_RADIUS_RANGE_MM,
-            "mm",
-            "not a railway wheel radius",
-        )
-        .map_err(|m| invalid(key, m))?;
+        *r = crate::track::check_nominal_radius(v.unwrap_or(DEFAULT_NOMINAL_RADIUS_MM))
+            .map_err(|e| invalid(key, e.to_string()))?;
     }
     Ok(nominal_radius_mm)
 }
@@ -188,15 +192,20 @@ fn nominal_radii(raw: &RawScene) -> Result<[f64; 2], Invalid> {
 /// The track layout, the inclination the rail data already has and the smoothing
 /// wavelengths of wheel and rail files (mm).
 fn track(raw: &RawScene) -> Result<(TrackLayout, Inclination, [f64; 2]), Invalid> {
-    let inclination = Inclination::parse(raw.rail.inclination.as_deref().unwrap_or("1:40"))
-        .map_err(|m| invalid("rail.inclination", m))?;
+    let inclination = Inclination::parse(
+        raw.rail
+            .inclination
+            .as_deref()
+            .unwrap_or(DEFAULT_INCLINATION),
+    )
+    .map_err(|e| invalid("rail.inclination", e.to_string()))?;
     let rail_profile_inclination = Inclination::parse(
         raw.rail
             .profile_inclination
             .as_deref()
-            .unwrap_or("vertical"),
+            .unwrap_or(DEFAULT_RAIL_PROFILE_INCLINATION),
     )
-    .map_err(|m| invalid("rail.profile_inclination", m))?;
+    .map_err(|e| invalid("rail.profile_inclination", e.to_string()))?;
     let smoothing = |key: &'static str, v: Option<f64>| -> Result<f64, Invalid> {
         let v = v.unwrap_or(DEFAULT_SMOOTHING_WAVELENGTH_MM);
         within(
@@ -218,47 +227,27 @@ fn track(raw: &RawScene) -> Result<(TrackLayout, Inclination, [f64; 2]), Invalid
         )?,
     ];
 
-    let gauge_mm = within(
+    let layout = TrackLayout::new(
+        raw.track.gauge_mm.unwrap_or(STANDARD_GAUGE_MM),
         raw.track
-            .gauge_mm
-            .unwrap_or(crate::track::STANDARD_GAUGE_MM),
-        GAUGE_RANGE_MM,
-        "mm",
-        "not a railway gauge",
-    )
-    .map_err(|m| invalid("track.gauge_mm", m))?;
-    let gauge_point_depth_mm = positive(
-        "track.gauge_point_depth_mm",
-        raw.track.gauge_point_depth_mm,
-        crate::track::GAUGE_POINT_DEPTH_MM,
-    )?;
-    if gauge_point_depth_mm > 30.0 {
-        return Err(invalid(
-            "track.gauge_point_depth_mm",
-            format!(
-                "{gauge_point_depth_mm} mm is below the rail head (expected 0 to 30 mm, usually 14)"
-            ),
-        ));
-    }
-    let flange_back_mm = positive(
-        "wheelset.flange_back_mm",
-        raw.wheelset.flange_back_mm,
-        crate::track::STANDARD_FLANGE_BACK_MM,
-    )?;
-    if !(0.8 * gauge_mm..gauge_mm).contains(&flange_back_mm) {
-        return Err(invalid(
-            "wheelset.flange_back_mm",
-            format!(
-                "{flange_back_mm} mm does not fit a {gauge_mm} mm gauge (expected between 80 % of the gauge and the gauge)"
-            ),
-        ));
-    }
-    let layout = TrackLayout {
-        gauge_mm,
-        gauge_point_depth_mm,
+            .gauge_point_depth_mm
+            .unwrap_or(GAUGE_POINT_DEPTH_MM),
+        raw.wheelset
+            .flange_back_mm
+            .unwrap_or(STANDARD_FLANGE_BACK_MM),
         inclination,
-        flange_back_mm,
-    };
+    )
+    .map_err(|e| {
+        let key = match e {
+            LayoutError::Gauge { .. } => "track.gauge_mm",
+            LayoutError::GaugePointDepth { .. } => "track.gauge_point_depth_mm",
+            LayoutError::FlangeBack { .. } => "wheelset.flange_back_mm",
+            LayoutError::InclinationText { .. } | LayoutError::InclinationOutOfRange { .. } => {
+                "rail.inclination"
+            }
+        };
+        invalid(key, e.to_string())
+    })?;
     Ok((layout, rail_profile_inclination, smoothing_wavelength_mm))
 }
 
@@ -655,9 +644,9 @@ fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, S
 
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
 fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
-    let from = raw.from_mm.unwrap_or(-15.0);
-    let to = raw.to_mm.unwrap_or(15.0);
-    let step = raw.step_mm.unwrap_or(0.1);
+    let from = raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0);
+    let to = raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1);
+    let step = raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM);
     for (key, v) in [
         ("sweep.from_mm", from),
         ("sweep.to_mm", to),

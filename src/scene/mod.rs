@@ -1,6 +1,6 @@
 //! Scene files: a TOML description of one run (profiles, track, load, sweep, outputs).
 //!
-//! [`RawScene`] mirrors the file exactly (unknown keys are rejected); [`Scene::from_toml`]
+//! A serde mirror of the file (`raw.rs`) takes it exactly (unknown keys are rejected); [`Scene::from_toml`]
 //! checks every value once and converts units, so nothing downstream re-checks. See the
 //! README for the format; `reports/paper/scene.toml` is the paper's scene.
 
@@ -13,15 +13,27 @@ mod check;
 mod raw;
 
 pub use check::MAX_CONICITY_AMPLITUDE_MM;
-pub use raw::{
-    RawConicity, RawHertz, RawLoad, RawMaterial, RawOutputs, RawQuasiElastic, RawRail, RawRigid,
-    RawScene, RawSweep, RawTrack, RawWheel, RawWheelset,
-};
+use raw::RawScene;
 
 // The defaults of the scene keys: the paper's case (S1002 on UIC60 1:40, standard gauge and
 // wheelset, 460 mm wheels, 70 kN, steel), in one place. Gauge, gauge-point depth and
-// flange-back distance are the track module's standard values.
+// flange-back distance are the track module's standard values (`track::STANDARD_GAUGE_MM`,
+// ...), the numerical settings the defaults of their stages (`rigid::Solver::default`,
+// `quasi_elastic::Settings::default`, `hertz::sweep::Settings::default`).
 
+/// Default wheel profile (both sides): the paper's S1002.
+pub const DEFAULT_WHEEL_PROFILE: &str = "S1002";
+/// Default rail profile (both sides): the paper's UIC60 (60E1).
+pub const DEFAULT_RAIL_PROFILE: &str = "UIC60E1";
+/// Default rail inclination of the track: the paper's 1:40.
+pub const DEFAULT_INCLINATION: &str = "1:40";
+/// Default inclination already in the rail profile data: upright (the built-in UIC60 and
+/// most rail files are given upright).
+pub const DEFAULT_RAIL_PROFILE_INCLINATION: &str = "vertical";
+/// Default lateral sweep (mm): the paper's -15 to 15 mm.
+pub const DEFAULT_SWEEP_MM: (f64, f64) = (-15.0, 15.0);
+/// Default sweep step (mm): the paper's 0.1 mm (301 positions).
+pub const DEFAULT_SWEEP_STEP_MM: f64 = 0.1;
 /// Default nominal wheel radius (mm): the paper's 920 mm wheel.
 pub const DEFAULT_NOMINAL_RADIUS_MM: f64 = 460.0;
 /// Default vertical wheel load (kN): the paper's 70 kN.
@@ -45,12 +57,6 @@ pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
 /// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
 /// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
 pub const MIN_WHEEL_LOAD_N: f64 = 1.0;
-/// The nominal wheel radii accepted (mm): from small trolley wheels to the largest
-/// locomotive wheels, with margin.
-pub const NOMINAL_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
-/// The gauges accepted (mm): every gauge in use, from 381 mm minimum-gauge railways to
-/// 1676 mm broad gauge, with margin. The wheelset is placed from it; 1e300 mm is not a track.
-pub const GAUGE_RANGE_MM: (f64, f64) = (300.0, 2000.0);
 /// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
 /// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
 pub const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
@@ -177,55 +183,167 @@ pub enum ImageFormat {
 #[derive(Debug, Clone)]
 pub struct Scene {
     /// The scene file (for messages and provenance).
-    pub path: String,
+    pub(crate) path: String,
     /// Short name.
-    pub name: String,
+    pub(crate) name: String,
     /// Report title.
-    pub title: String,
+    pub(crate) title: String,
     /// Left and right wheel profiles.
-    pub wheel_profiles: [ProfileRef; 2],
+    pub(crate) wheel_profiles: [ProfileRef; 2],
     /// Left and right nominal radii, mm.
-    pub nominal_radius_mm: [f64; 2],
+    pub(crate) nominal_radius_mm: [f64; 2],
     /// Left and right rail profiles.
-    pub rail_profiles: [ProfileRef; 2],
+    pub(crate) rail_profiles: [ProfileRef; 2],
     /// The scene keys the wheel's left and right profiles came from, as the user wrote them
     /// (`wheel.profile` when one key names both), for messages.
-    pub wheel_profile_keys: [&'static str; 2],
+    pub(crate) wheel_profile_keys: [&'static str; 2],
     /// The same for the rails.
-    pub rail_profile_keys: [&'static str; 2],
+    pub(crate) rail_profile_keys: [&'static str; 2],
     /// Inclination already in the rail profile data.
-    pub rail_profile_inclination: Inclination,
+    pub(crate) rail_profile_inclination: Inclination,
     /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
-    pub smoothing_wavelength_mm: [f64; 2],
+    pub(crate) smoothing_wavelength_mm: [f64; 2],
     /// Whether wheel and rail files may have points that step back dropped.
-    pub drop_step_backs: [bool; 2],
+    pub(crate) drop_step_backs: [bool; 2],
     /// Track and wheelset dimensions.
-    pub layout: TrackLayout,
+    pub(crate) layout: TrackLayout,
     /// Vertical load per wheel, N.
-    pub wheel_load_n: f64,
+    pub(crate) wheel_load_n: f64,
     /// Wheel material.
-    pub wheel_material: crate::hertz::Material,
+    pub(crate) wheel_material: crate::hertz::Material,
     /// Rail material.
-    pub rail_material: crate::hertz::Material,
+    pub(crate) rail_material: crate::hertz::Material,
     /// Lateral shifts of the sweep, mm, increasing.
-    pub sweep_mm: Vec<f64>,
+    pub(crate) sweep_mm: Vec<f64>,
     /// Figures to render.
-    pub figures: Vec<crate::stage::Figure>,
+    pub(crate) figures: Vec<crate::stage::Figure>,
     /// Formats to render them in.
-    pub formats: Vec<ImageFormat>,
+    pub(crate) formats: Vec<ImageFormat>,
     /// Rigid solver.
-    pub rigid_solver: crate::rigid::Solver,
+    pub(crate) rigid_solver: crate::rigid::Solver,
     /// Quasi-elastic settings.
-    pub quasi_elastic: crate::quasi_elastic::Settings,
+    pub(crate) quasi_elastic: crate::quasi_elastic::Settings,
     /// Values of eps for the sensitivity figure (mm).
-    pub epsilon_sensitivity_mm: Vec<f64>,
+    pub(crate) epsilon_sensitivity_mm: Vec<f64>,
     /// Hertz settings over the sweep.
-    pub hertz: crate::hertz::sweep::Settings,
+    pub(crate) hertz: crate::hertz::sweep::Settings,
     /// Equivalent conicity settings.
-    pub conicity: crate::conicity::Settings,
+    pub(crate) conicity: crate::conicity::Settings,
 }
 
 impl Scene {
+    /// The scene file (for messages and provenance).
+    pub fn path(&self) -> &str {
+        &self.path
+    }
+
+    /// Short name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Report title.
+    pub fn title(&self) -> &str {
+        &self.title
+    }
+
+    /// Left and right wheel profiles.
+    pub fn wheel_profiles(&self) -> &[ProfileRef; 2] {
+        &self.wheel_profiles
+    }
+
+    /// Left and right nominal radii, mm.
+    pub fn nominal_radius_mm(&self) -> [f64; 2] {
+        self.nominal_radius_mm
+    }
+
+    /// Left and right rail profiles.
+    pub fn rail_profiles(&self) -> &[ProfileRef; 2] {
+        &self.rail_profiles
+    }
+
+    /// Inclination already in the rail profile data.
+    pub fn rail_profile_inclination(&self) -> Inclination {
+        self.rail_profile_inclination
+    }
+
+    /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
+    pub fn smoothing_wavelength_mm(&self) -> [f64; 2] {
+        self.smoothing_wavelength_mm
+    }
+
+    /// Track and wheelset dimensions.
+    pub fn layout(&self) -> &TrackLayout {
+        &self.layout
+    }
+
+    /// Vertical load per wheel, N.
+    pub fn wheel_load_n(&self) -> f64 {
+        self.wheel_load_n
+    }
+
+    /// Wheel material.
+    pub fn wheel_material(&self) -> &crate::hertz::Material {
+        &self.wheel_material
+    }
+
+    /// Rail material.
+    pub fn rail_material(&self) -> &crate::hertz::Material {
+        &self.rail_material
+    }
+
+    /// Lateral shifts of the sweep, mm, increasing.
+    pub fn sweep_mm(&self) -> &[f64] {
+        &self.sweep_mm
+    }
+
+    /// Figures to render.
+    pub fn figures(&self) -> &[crate::stage::Figure] {
+        &self.figures
+    }
+
+    /// Formats to render them in.
+    pub fn formats(&self) -> &[ImageFormat] {
+        &self.formats
+    }
+
+    /// Rigid solver.
+    pub fn rigid_solver(&self) -> crate::rigid::Solver {
+        self.rigid_solver
+    }
+
+    /// Quasi-elastic settings.
+    pub fn quasi_elastic(&self) -> &crate::quasi_elastic::Settings {
+        &self.quasi_elastic
+    }
+
+    /// Values of eps for the sensitivity figure (mm).
+    pub fn epsilon_sensitivity_mm(&self) -> &[f64] {
+        &self.epsilon_sensitivity_mm
+    }
+
+    /// Hertz settings over the sweep.
+    pub fn hertz(&self) -> &crate::hertz::sweep::Settings {
+        &self.hertz
+    }
+
+    /// Equivalent conicity settings.
+    pub fn conicity(&self) -> &crate::conicity::Settings {
+        &self.conicity
+    }
+
+    /// The scene with `figures` in place of its own (what a run computes follows them).
+    pub fn with_figures(mut self, figures: Vec<crate::stage::Figure>) -> Scene {
+        self.figures = figures;
+        self
+    }
+
+    /// The scene with its figures rendered in `formats` instead of its own.
+    pub fn with_formats(mut self, formats: Vec<ImageFormat>) -> Scene {
+        self.formats = formats;
+        self
+    }
+
     /// Reads and checks a scene file.
     ///
     /// # Errors

@@ -537,7 +537,7 @@ mod tests {
     #[test]
     fn uic60_at_1_in_40_has_its_top_43_03_mm_field_side_of_the_gauge_point() {
         let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
         // Gauge point exactly at half the gauge (bisection to 1e-15).
         assert!((rail.gauge_point()[0] - 717.5).abs() < 1e-9);
         assert!((rail.gauge_point()[1] + 14.0).abs() < 1e-9);
@@ -556,7 +556,8 @@ mod tests {
                 inclination: Inclination::parse(incl).unwrap(),
                 ..paper_layout()
             };
-            let rail = PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &layout).unwrap();
+            let rail =
+                PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &layout).unwrap();
             let offset = rail.top()[0] - rail.gauge_point()[0];
             assert!((offset - expected).abs() < tol, "{incl}: {offset}");
         }
@@ -565,7 +566,7 @@ mod tests {
     #[test]
     fn rail_inverse_is_exact() {
         let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.profile().domain();
         for i in 0..=200 {
             let u = lo + (hi - lo) * f64::from(i) / 200.0;
@@ -581,7 +582,7 @@ mod tests {
         // Every 1e-3 mm over the placed UIC60 at 1:40: the quintic pieces against Newton's
         // inversion of the analytic head.
         let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.y_range();
         let (mut tabulated, mut worst) = (0, [0.0f64; 3]);
         let n = ((hi - lo) / 1e-3) as usize;
