@@ -66,6 +66,14 @@ impl Estimate {
 /// nodes of every quasi-elastic pass) + the conicity's amplitudes × pieces. The profiles
 /// come from the run's own `placement` (the profile stage, which every run does first), so
 /// that the knots of splines are counted without reading the files again.
+///
+/// # Example
+/// ```
+/// use wheelrail::{cost, pipeline, scene::Scene};
+/// let scene = Scene::from_toml("", "doc", ".".as_ref()).unwrap(); // the paper's case
+/// let estimate = cost::estimate(&scene, &pipeline::place(&scene).unwrap());
+/// assert!(estimate.within_budget(), "{}", estimate.describe());
+/// ```
 pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     let stages = pipeline::needed_stages(scene);
     let positions = scene.sweep_mm.len() as f64;

@@ -112,10 +112,25 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
         .collect()
 }
 
-/// Runs the stages `scene`'s outputs need.
+/// Runs the stages `scene`'s outputs need (and only those: see [`needed_stages`]).
 ///
 /// # Errors
 /// [`crate::Error`] when a profile cannot be read or placed.
+///
+/// # Example
+/// ```
+/// use wheelrail::{pipeline, scene::Scene};
+/// let scene = Scene::from_toml(
+///     "[sweep]\nfrom_mm = 0.0\nto_mm = 1.0\nstep_mm = 0.5\n[outputs]\nfigures = [\"semi_axes\"]",
+///     "doc",
+///     ".".as_ref(),
+/// )
+/// .unwrap();
+/// let results = pipeline::run(&scene).unwrap();
+/// let hertz = results.hertz.unwrap(); // semi_axes draws the Hertz stage
+/// assert_eq!(hertz.len(), 3);
+/// assert!(results.conicity.is_none()); // not needed by the figures
+/// ```
 pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
     run_gated(scene, |_| Ok(false))
 }

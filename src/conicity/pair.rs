@@ -224,7 +224,21 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     })
 }
 
-/// The equivalent conicity and parameters of the pair swept by `sweep`.
+/// The equivalent conicity and parameters of the pair swept by `sweep`: its Δr function
+/// (jumps as steps, [`delta_r_of`]), tan γe by both methods at the settings' amplitudes
+/// (mm), and the [`Parameters`] (tan γe at 2, 3 and 4 mm, nonlinearity, flange-contact
+/// shifts, jumps). Amplitudes the sweep cannot support give NaN with their status, not an
+/// error.
+///
+/// # Example
+/// ```
+/// use wheelrail::{conicity, pipeline, rigid, scene::Scene};
+/// let scene = Scene::from_toml("[sweep]\nfrom_mm = -10.0\nto_mm = 10.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
+/// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), scene.sweep_mm(), rigid::Solver::default());
+/// let pair = conicity::assess(&sweep, &conicity::Settings::default());
+/// let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
+/// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
+/// ```
 pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
     let delta_r = delta_r_of(sweep);
     let amplitudes = settings

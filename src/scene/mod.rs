@@ -344,10 +344,19 @@ impl Scene {
         self
     }
 
-    /// Reads and checks a scene file.
+    /// Reads and checks a scene file; relative profile paths are resolved against the
+    /// file's folder.
     ///
     /// # Errors
     /// [`SceneError`] naming the file and key.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::scene::Scene;
+    /// let scene = Scene::load("reports/paper/scene.toml".as_ref()).unwrap();
+    /// assert_eq!(scene.sweep_mm().len(), 301);
+    /// assert_eq!(scene.wheel_load_n(), 70_000.0); // 70 kN in the file
+    /// ```
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
             path: path.to_path_buf(),
@@ -362,6 +371,15 @@ impl Scene {
     ///
     /// # Errors
     /// [`SceneError`] naming the key and what was expected.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::scene::Scene;
+    /// let scene = Scene::from_toml("[track]\ngauge_mm = 1668.0", "mine", ".".as_ref()).unwrap();
+    /// assert_eq!(scene.layout().gauge_mm(), 1668.0);
+    /// let error = Scene::from_toml("[track]\ngauge_mm = 14350.0", "mine", ".".as_ref());
+    /// assert!(error.unwrap_err().to_string().contains("track.gauge_mm"));
+    /// ```
     pub fn from_toml(text: &str, origin: &str, dir: &Path) -> Result<Scene, SceneError> {
         let raw: RawScene = toml::from_str(text).map_err(|e| SceneError::Syntax {
             path: origin.to_string(),
