@@ -502,7 +502,7 @@ mod tests {
                 "[quasi_elastic]\nmax_step_mm = 0.05",
                 "quasi_elastic.max_step_mm",
             ),
-            // Bounds of issue 16, each naming the key as written.
+            // The bounds of the robustness checks, each naming the key as written.
             ("[material]\npoisson = -0.967", "material.poisson"),
             ("[material]\nrail_poisson = -0.1", "material.rail_poisson"),
             ("[material]\nyoung_GPa = 1e300", "material.young_GPa"),
