@@ -2,9 +2,9 @@
 //! as bytes. Nothing here touches the file system; [`crate::app`] writes the files.
 //!
 //! To add a figure: a variant in [`crate::pipeline::Figure`] (name, stage), a function in
-//! [`figures`] taking that stage's result, a caption in [`caption`], an arm in [`figure`].
+//! `outputs/figures/` (one file per stage) taking that stage's result, a caption in [`caption`], an arm in [`figure`].
 
-pub mod figures;
+mod figures;
 pub mod tables;
 
 use crate::Error;
