@@ -1,11 +1,11 @@
 //! Figures of the quasi-elastic contact search (paper Figs. 4 and 5) and its sensitivity to eps.
 
-use super::rigid::{contact_links, map_chart, rigid_series, with_onsets};
+use super::rigid::{contact_links, left_contacts, map_chart, rigid_series, with_onsets};
 use super::{QE, RIGID, SHIFT};
 use crate::pipeline::EpsilonSweeps;
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::report::{Chart, Figure, Series};
-use crate::rigid::{RigidSweep, Stop};
+use crate::rigid::RigidSweep;
 use crate::track::{Placement, Side};
 
 /// The heaviest quasi-elastic patch moving farther than this between neighbouring
@@ -68,12 +68,7 @@ pub(crate) fn quasi_elastic_map(
     sweep: &RigidSweep,
     q: &QuasiElasticSweep,
 ) -> Figure {
-    let rigid: Vec<(f64, f64, f64)> = sweep
-        .positions
-        .iter()
-        .filter(|p| p.stop == Stop::Converged)
-        .filter_map(|p| p.side(Side::Left).map(|c| (c.s, c.y, c.z)))
-        .collect();
+    let rigid = left_contacts(sweep);
     let qe: Vec<(f64, f64, f64)> = q
         .positions
         .iter()

@@ -203,15 +203,20 @@ pub(super) fn map_chart(placement: &Placement, title: &str) -> Chart {
     .x_range(690.0, 800.0)
 }
 
-/// Profiles with the rigid contact points of the sweep linked wheel to rail (left wheel;
-/// by symmetry the right wheel at -y_ws is the same).
-pub(crate) fn contact_map(placement: &Placement, sweep: &RigidSweep) -> Figure {
-    let pts: Vec<(f64, f64, f64)> = sweep
+/// `(s, y, z)` of the left wheel's rigid contact at every converged position.
+pub(super) fn left_contacts(sweep: &RigidSweep) -> Vec<(f64, f64, f64)> {
+    sweep
         .positions
         .iter()
         .filter(|p| p.stop == Stop::Converged)
         .filter_map(|p| p.side(Side::Left).map(|c| (c.s, c.y, c.z)))
-        .collect();
+        .collect()
+}
+
+/// Profiles with the rigid contact points of the sweep linked wheel to rail (left wheel;
+/// by symmetry the right wheel at -y_ws is the same).
+pub(crate) fn contact_map(placement: &Placement, sweep: &RigidSweep) -> Figure {
+    let pts = left_contacts(sweep);
     Figure::single(
         map_chart(
             placement,
