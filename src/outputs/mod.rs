@@ -2,7 +2,8 @@
 //! as bytes. Nothing here touches the file system; [`crate::app`] writes the files.
 //!
 //! To add a figure: a variant in [`crate::pipeline::Figure`] (name, stage), a function in
-//! `outputs/figures/` (one file per stage) taking that stage's result, a caption in [`caption`], an arm in [`figure`].
+//! `outputs/figures/` (one file per stage) taking that stage's result, a caption in `caption`,
+//! an arm in [`figure`].
 
 mod figures;
 mod page;
@@ -192,7 +193,7 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
 }
 
 /// The caption of a figure in the report.
-pub fn caption(fig: Figure, scene: &Scene) -> String {
+pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
     match fig {
         Figure::Profiles => "Paper Fig. 1: wheel and rail of the left side in their placed positions (centred wheelset resting on the rail, no roll), track frame.".into(),
         Figure::Conicity => "Paper Fig. 1: tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position; the wheel is broken at its section joints. The y axis runs over contact angles from -45° to 74° (tan γ from -1 to 3.5); triangles at the frame mark where the flange back's vertical face and the rail's flanks leave it.".into(),

@@ -18,7 +18,7 @@ pub const DEFAULT_FILTER_WAVELENGTH_MM: f64 = 4.0;
 /// The smoothing parameter (mm^3) whose spline halves waves of `wavelength_mm` in data
 /// spaced `spacing_mm` apart.
 ///
-/// With spacing `h` the sum of squares in [`SmoothingSpline::fit`] is `(1/h)` times an
+/// With spacing `h` the sum of squares in [`SmoothingSpline::fit`](super::SmoothingSpline::fit) is `(1/h)` times an
 /// integral, so the spline minimises `int (y - f)^2 + lambda h int f''^2`: a low-pass filter
 /// with gain `1 / (1 + lambda h omega^4)`, one half at `omega = 2 pi / L`. Hence
 /// `lambda = (L / (2 pi))^4 / h`. A non-positive or non-finite spacing gives 0 (no smoothing).

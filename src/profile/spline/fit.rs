@@ -9,7 +9,7 @@ impl SmoothingSpline {
     /// # Units
     ///
     /// x and y in mm; `lambda` in mm^3 (the penalty integral has units mm^2/mm^4 * mm =
-    /// 1/mm, the sum of squares mm^2). Use [`default_lambda`] for measured profiles, 0 to
+    /// 1/mm, the sum of squares mm^2). Use [`default_lambda`](super::default_lambda) for measured profiles, 0 to
     /// interpolate exact points.
     ///
     /// # Errors
