@@ -625,7 +625,8 @@ mod tests {
                 [0.226 + d, 4.992 + d, 6.26 + d]
             })
             .collect();
-        let sweep = crate::rigid::search(&placement(), &near_jumps, crate::rigid::Solver::Default);
+        let sweep =
+            crate::rigid::search(&placement(), &near_jumps, crate::rigid::Solver::default());
         poses.extend(
             sweep
                 .positions

@@ -133,7 +133,12 @@ pub fn run_gated(
     let mut record = RunRecord::default();
     let placement = record.time(Stage::Profiles, || place(scene))?;
     record.progress = gate(&placement)?;
-    Ok(run_recorded(scene, placement, &needed_stages(scene), record))
+    Ok(run_recorded(
+        scene,
+        placement,
+        &needed_stages(scene),
+        record,
+    ))
 }
 
 /// Runs `stages` (and the stages they depend on, see [`closed_stages`]) of `scene` on a

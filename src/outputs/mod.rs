@@ -299,7 +299,7 @@ fn report_page(
             .positions
             .iter()
             .filter(|p| p.stop != crate::rigid::Stop::Converged)
-            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.name()))
+            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.status_text()))
             .collect();
         if bad.is_empty() {
             summary.push(format!(

@@ -233,7 +233,7 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
         .text(
             "status",
             sweep.positions.iter().map(|p| {
-                let mut s = p.stop.name().to_string();
+                let mut s = p.stop.status_text().to_string();
                 for (k, side) in ["left", "right"].iter().enumerate() {
                     if p.contact[k].is_some_and(|c| c.second.is_some()) {
                         s.push_str(&format!("; two-point contact {side}"));
@@ -358,7 +358,7 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
                 .map(Side::name)
                 .collect();
             if p.rigid_stop != Stop::Converged {
-                format!("rigid search: {}", p.rigid_stop.name())
+                format!("rigid search: {}", p.rigid_stop.status_text())
             } else if !missing.is_empty() {
                 format!(
                     "no patch: {} (wheel not above its rail)",
@@ -403,7 +403,7 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
     }
     let status = rigid.positions.iter().enumerate().map(|(i, p)| {
         if p.stop != Stop::Converged {
-            return format!("rigid search: {}", p.stop.name());
+            return format!("rigid search: {}", p.stop.status_text());
         }
         let missing: Vec<String> = e
             .runs

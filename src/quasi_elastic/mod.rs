@@ -203,7 +203,7 @@ pub struct QuasiElasticSweep {
 /// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::Default);
+/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::default());
 /// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 /// let patch = qe.positions[0].sides[0].main().unwrap();
 /// // Averaging moves the contact point, but stays on the tread near the rigid point.
