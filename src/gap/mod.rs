@@ -10,8 +10,9 @@
 //! The layer both contact searches ([`crate::rigid`], [`crate::quasi_elastic`]) stand on:
 //! the pose and the gap at a wheel point (here), the coarse scans for basins and low
 //! regions (`scan.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
-//! profiles (`tabulated.rs`).
+//! profiles (`tabulated.rs`); and the [`ContactPoint`] both searches report (`contact.rs`).
 
+mod contact;
 mod minimum;
 mod scan;
 mod tabulated;
@@ -21,6 +22,8 @@ mod tests;
 use crate::track::{PlacedWheel, RailPoint, SidePair, WheelPoint};
 use scan::SCAN_BLOCK;
 use tabulated::Tables;
+
+pub use contact::ContactPoint;
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
 /// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].

@@ -23,7 +23,7 @@
 //! * Separate low regions of the gap (tread and flange) are averaged separately: one
 //!   [`Patch`] per local minimum, split where a barrier higher than `eps` separates minima.
 
-use crate::gap::{SideGap, SidePose};
+use crate::gap::{ContactPoint, SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
 use crate::track::{Placement, Side};
 
@@ -129,6 +129,20 @@ pub struct Patch {
 }
 
 impl Patch {
+    /// The averaged contact point: the columns shared with the rigid contact.
+    pub fn point(&self) -> ContactPoint {
+        ContactPoint {
+            s: self.s,
+            y: self.y,
+            z: self.z,
+            r: self.r,
+            gamma: self.gamma,
+            rail_tan_gamma: self.rail_tan_gamma,
+            wheel_curvature: self.wheel_curvature,
+            rail_curvature: self.rail_curvature,
+        }
+    }
+
     /// Whether every number of the patch is finite.
     pub fn is_finite(&self) -> bool {
         [

@@ -39,7 +39,7 @@ use paper::solve_paper;
 use roll::solve_default;
 pub use settings::RollSettings;
 
-use crate::gap::{GapPoint, SideGap};
+use crate::gap::{ContactPoint, GapPoint, SideGap};
 use crate::track::{Placement, Side};
 
 /// Why the roll iteration at one position stopped (shared with [`crate::hertz`]).
@@ -126,6 +126,22 @@ pub struct SideContact {
     /// A second contact point: another local minimum of the gap within
     /// [`TWO_POINT_GAP_TOL_MM`]; `(s, gap)` in mm.
     pub second: Option<(f64, f64)>,
+}
+
+impl SideContact {
+    /// The contact point's columns shared with the quasi-elastic patches.
+    pub fn point(&self) -> ContactPoint {
+        ContactPoint {
+            s: self.s,
+            y: self.y,
+            z: self.z,
+            r: self.r,
+            gamma: self.gamma,
+            rail_tan_gamma: self.rail_tan_gamma,
+            wheel_curvature: self.wheel_curvature,
+            rail_curvature: self.rail_curvature,
+        }
+    }
 }
 
 /// The solution at one lateral position.
