@@ -21,7 +21,12 @@ const LOCAL_MAX_ITER: usize = 100;
 impl SideGap<'_> {
     /// The minimum of the gap in a basin: safeguarded Newton on `dg/ds = 0` inside the
     /// bracket, which slides when the minimum lies beyond it (the basin moved with the pose).
-    pub fn minimum(&self, basin: Basin, start: Option<f64>, pose: &SidePose) -> Option<GapPoint> {
+    pub(crate) fn minimum(
+        &self,
+        basin: Basin,
+        start: Option<f64>,
+        pose: &SidePose,
+    ) -> Option<GapPoint> {
         let (dom_lo, dom_hi) = self.pair.wheel.profile().domain();
         let (mut lo, mut hi) = basin;
         let width = (hi - lo).max(COARSE_STEP_MM);
@@ -47,7 +52,12 @@ impl SideGap<'_> {
 
     /// The minimum of the gap inside `basin` only: `None` when it lies at an end of the
     /// basin with the gap still falling outwards (the minimum has left it).
-    pub fn minimum_within(&self, basin: Basin, start: f64, pose: &SidePose) -> Option<GapPoint> {
+    pub(crate) fn minimum_within(
+        &self,
+        basin: Basin,
+        start: f64,
+        pose: &SidePose,
+    ) -> Option<GapPoint> {
         let (lo, hi) = basin;
         let p = self.newton_in(lo, hi, start.clamp(lo, hi), pose)?;
         let beyond = (p.s <= lo + AT_END_MM && p.dg > 0.0) || (p.s >= hi - AT_END_MM && p.dg < 0.0);

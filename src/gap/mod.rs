@@ -129,7 +129,7 @@ pub struct SideGap<'a> {
 }
 
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
-pub type Basin = (f64, f64);
+pub(crate) type Basin = (f64, f64);
 impl<'a> SideGap<'a> {
     /// Prepares the side with `sign` (+1 left, -1 right).
     pub fn new(pair: &'a SidePair, sign: f64) -> SideGap<'a> {
@@ -185,13 +185,13 @@ impl<'a> SideGap<'a> {
     }
     /// Where the wheel profile's second derivative may jump (joints, spline knots) and the
     /// ends of its domain, increasing (mm).
-    pub fn wheel_breaks(&self) -> &[f64] {
+    pub(crate) fn wheel_breaks(&self) -> &[f64] {
         &self.wheel_breaks
     }
 
     /// Side-frame lateral positions `Y` of the rail profile's breaks (joints, spline knots)
     /// and of the ends of its running surface, increasing (mm).
-    pub fn rail_break_ys(&self) -> &[f64] {
+    pub(crate) fn rail_break_ys(&self) -> &[f64] {
         &self.rail_break_ys
     }
 

@@ -34,7 +34,7 @@ fn record(found: &mut [(f64, usize); 16], count: &mut usize, g: f64, i: usize) {
 impl SideGap<'_> {
     /// Basins of the gap found by the coarse scan: brackets around every sampled local
     /// minimum within [`COARSE_MARGIN_MM`] of the lowest, lowest first.
-    pub fn basins(&self, pose: &SidePose, out: &mut Vec<Basin>) {
+    pub(crate) fn basins(&self, pose: &SidePose, out: &mut Vec<Basin>) {
         out.clear();
         // Only wheel samples that can lie above the rail.
         let (first, last) = self.over_rail(pose);
@@ -146,7 +146,7 @@ impl SideGap<'_> {
     /// Stretches of the wheel (`(s_lo, s_hi)`, increasing, disjoint) where the coarse gap
     /// lies below `threshold` (mm, same reference as [`GapPoint::g`]), each widened by one
     /// coarse step so that the fine gap below the threshold lies inside.
-    pub fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
+    pub(crate) fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
         out.clear();
         let n = self.coarse.len();
         // Samples outside `first..last` cannot lie above the rail (see `basins`): they are

@@ -12,7 +12,7 @@ pub(super) struct Tables {
 impl<'a> SideGap<'a> {
     /// Adds the tables the paper's solver searches: wheel and rail tabulated every
     /// `step_mm`, the rail height between its table points interpolated linearly.
-    pub fn with_tables(mut self, step_mm: f64) -> SideGap<'a> {
+    pub(crate) fn with_tables(mut self, step_mm: f64) -> SideGap<'a> {
         let (lo, hi) = self.pair.wheel.profile().domain();
         let n = ((hi - lo) / step_mm).round().max(1.0) as usize;
         let wheel = (0..=n)
@@ -32,7 +32,7 @@ impl<'a> SideGap<'a> {
     /// The lowest gap over the tabulated wheel points with the tabulated rail (the paper's
     /// discrete minimum): `(s, g, Y)` of the table point, or `None` without tables or
     /// without a wheel point above the rail.
-    pub fn tabulated_minimum(&self, pose: &SidePose) -> Option<(f64, f64, f64)> {
+    pub(crate) fn tabulated_minimum(&self, pose: &SidePose) -> Option<(f64, f64, f64)> {
         let t = self.tabulated.as_ref()?;
         let mut best: Option<(f64, f64, f64)> = None;
         for &[s, yw, zw] in &t.wheel {

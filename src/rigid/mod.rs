@@ -319,7 +319,7 @@ impl RigidSweep {
 pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
 
 /// The contact angle of `side` at `p` (rad), NaN unless it converged with that contact.
-fn contact_angle(p: &Position, side: Side) -> f64 {
+pub(crate) fn contact_angle(p: &Position, side: Side) -> f64 {
     match p.side(side) {
         Some(c) if p.stop == Stop::Converged => c.gamma,
         _ => f64::NAN,
