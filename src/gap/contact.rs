@@ -10,6 +10,19 @@
 /// Millimetres and radians; `y`, `z` and `gamma` in the track frame (y positive to the left,
 /// z up, `gamma` mirrored per side and roll included, positive on tread and flange);
 /// `s` the wheel profile coordinate; curvatures convex positive (1/mm).
+///
+/// # Example
+/// ```
+/// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
+/// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
+/// let placement = pipeline::place(&scene).unwrap();
+/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::default());
+/// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
+/// let a = rigid.positions[0].contact[0].unwrap().point();
+/// let b = qe.positions[0].sides[0].main().unwrap().point();
+/// // The averaged contact lies on the tread near the rigid one (left wheel, y > 0).
+/// assert!(a.y > 700.0 && (a.s - b.s).abs() < 3.0);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactPoint {
     /// Wheel profile coordinate of the contact point (mm).

@@ -22,6 +22,9 @@
 //! * `Paper`: the paper's iteration, `theta += (d_min,r - d_min,l) / (y_min,l - y_min,r)`
 //!   from `theta = 0` at every position, the minima taken over the wheel profile tabulated
 //!   every [`PAPER_TABLE_STEP_MM`], stopping at `|d_min,r - d_min,l| <` 1e-4 mm (its Eq. 4).
+//!
+//! Every [`Position`] says why its iteration stopped ([`Stop`]: `Converged`, `IterationCap`,
+//! `NoContact`, `Stalled`); the outputs flag the others instead of plotting them.
 
 mod continuation;
 mod jumps;
