@@ -286,3 +286,29 @@ impl Iteration {
         };
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Solver, search};
+    use super::*;
+    use crate::scene::Scene;
+
+    /// The settings the solver carries decide where it stops, and the position says why.
+    #[test]
+    fn the_settings_decide_where_the_iteration_stops() {
+        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let default = search(&placement, &[5.0], Solver::default()).positions[0];
+        assert_eq!(default.stop, Stop::Converged);
+        assert!(default.residual <= RollSettings::default().residual_tol_mm);
+        // At 5 mm the start roll (the centre's, 0) is off: the first evaluation is no root.
+        assert!(default.iterations > 1, "{default:?}");
+        let capped = RollSettings {
+            max_iter: 1,
+            ..RollSettings::default()
+        };
+        let p = search(&placement, &[5.0], Solver::Default(capped)).positions[0];
+        assert_eq!((p.stop, p.iterations), (Stop::IterationCap, 1));
+        assert_eq!(p.stop.status_text(), "iteration cap");
+    }
+}
