@@ -29,7 +29,7 @@ fn placement() -> &'static Placement {
 
 fn rigid_sweep() -> &'static RigidSweep {
     static R: OnceLock<RigidSweep> = OnceLock::new();
-    R.get_or_init(|| rigid::search(placement(), scene().sweep_mm(), Solver::Default))
+    R.get_or_init(|| rigid::search(placement(), scene().sweep_mm(), Solver::default()))
 }
 
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
@@ -49,7 +49,7 @@ fn rigid_default() -> RigidSweep {
     rigid::search(
         black_box(placement()),
         scene().sweep_mm(),
-        black_box(Solver::Default),
+        black_box(Solver::default()),
     )
 }
 

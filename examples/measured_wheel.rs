@@ -43,7 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         layout,
     )?;
     let shifts: Vec<f64> = (-8..=8).map(f64::from).collect();
-    let rigid = rigid::search(&placement, &shifts, Solver::Default);
+    let rigid = rigid::search(&placement, &shifts, Solver::default());
     let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 
     // Hertz on the heaviest quasi-elastic patch, 70 kN per wheel, steel on steel.

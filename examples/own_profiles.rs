@@ -26,7 +26,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // Lateral shifts of the wheelset from -10 to 10 mm every 0.1 mm, roll solved.
     let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();
-    let sweep = rigid::search(&placement, &shifts, Solver::Default);
+    let sweep = rigid::search(&placement, &shifts, Solver::default());
     let pair = conicity::assess(&sweep, &conicity::Settings::default());
 
     println!("y_ws_mm, delta_r_mm (every 2 mm)");

@@ -89,6 +89,7 @@ pub mod report;
 pub mod rigid;
 pub mod scene;
 pub mod stage;
+pub mod stop;
 pub mod track;
 #[cfg(feature = "cli")]
 pub mod tradeoff;

@@ -76,7 +76,7 @@ pub fn reference_setting() -> Setting {
     Setting {
         label: "reference".into(),
         profile_step_mm: None,
-        solver: Solver::Default,
+        solver: Solver::default(),
         quasi_elastic: quasi_elastic::Settings {
             cutoff: 60.0,
             quadrature: quasi_elastic::Quadrature::GaussLegendre {
@@ -93,7 +93,7 @@ pub fn default_setting(scene: &Scene) -> Setting {
     Setting {
         label: "default".into(),
         profile_step_mm: None,
-        solver: Solver::Default,
+        solver: Solver::default(),
         quasi_elastic: scene.quasi_elastic,
         hertz: Method::Exact,
     }

@@ -465,7 +465,7 @@ fn run_scene(scene: &Scene) {
             );
         }
     }
-    let _ = Solver::Default;
+    let _ = Solver::default();
 }
 
 const VALID_SCENE: &str = r#"name = "fuzz"

@@ -101,7 +101,7 @@ fn placement(wheel: Profile, rail: Profile, rail_inclination: Inclination) -> Pl
 /// how many positions converged.
 fn check(placement: &Placement, name: &str) -> usize {
     let ys: Vec<f64> = (0..=100).map(|i| -25.0 + 0.5 * f64::from(i)).collect();
-    let sweep = rigid::search(placement, &ys, Solver::Default);
+    let sweep = rigid::search(placement, &ys, Solver::default());
     let qe = quasi_elastic::search(placement, &sweep, &Settings::default());
     let mut converged = 0;
     for (pos, q) in sweep.positions.iter().zip(&qe.positions) {

@@ -47,7 +47,7 @@ use proptest::prelude::*;
 use std::f64::consts::PI;
 use std::path::Path;
 use wheelrail::gap::{SideGap, SidePose};
-use wheelrail::hertz::{self, Contact, Material, Method, StopReason};
+use wheelrail::hertz::{self, Contact, Material, Method};
 use wheelrail::profile::read::{ProfileFormat, parse_str};
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, Settings};
@@ -165,7 +165,7 @@ proptest! {
         }
         prop_assert!((0.0..1.0).contains(&c.eccentricity), "{c:?}");
         if method == Method::Exact {
-            prop_assert_eq!(c.stop, StopReason::Converged);
+            prop_assert_eq!(c.stop, Stop::Converged);
         }
         // Hertz: the shape depends on A/B only, so 8 P doubles a, b and p0 and quadruples
         // the approach; the only error is the rounding of cbrt and the products (1e-14).
@@ -521,7 +521,7 @@ fn check_quasi_elastic(
 
 /// Rigid and quasi-elastic checks over `ys`; returns the sweep.
 fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSweep {
-    let sweep = rigid::search(placement, ys, Solver::Default);
+    let sweep = rigid::search(placement, ys, Solver::default());
     assert_eq!(sweep.positions.len(), ys.len(), "{context}");
     check_rigid(placement, &sweep, context);
     let settings = Settings {

@@ -6,7 +6,7 @@
 use super::{
     DeltaR, EquivalentConicity, Method, equivalent_conicity, supported_default_amplitudes,
 };
-use crate::rigid::{Position, RigidSweep, Stop};
+use crate::rigid::{Position, RigidSweep, contact_angle};
 use crate::track::Side;
 
 pub use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
@@ -259,21 +259,17 @@ pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
         flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
         contact_point_jumps: sweep.jumps.len(),
         delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
-        contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM]
-            .map(|y| interpolate(sweep, y, |p| gamma(p, Side::Left) - gamma(p, Side::Right))),
+        contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| {
+            interpolate(sweep, y, |p| {
+                contact_angle(p, Side::Left) - contact_angle(p, Side::Right)
+            })
+        }),
     };
     PairConicity {
         delta_r,
         klingel,
         regression,
         parameters,
-    }
-}
-
-fn gamma(p: &Position, side: Side) -> f64 {
-    match p.side(side) {
-        Some(c) if p.stop == Stop::Converged => c.gamma,
-        _ => f64::NAN,
     }
 }
 

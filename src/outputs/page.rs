@@ -55,7 +55,7 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
             .positions
             .iter()
             .filter(|p| p.stop != crate::rigid::Stop::Converged)
-            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.name()))
+            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.status_text()))
             .collect();
         if bad.is_empty() {
             summary.push(format!(

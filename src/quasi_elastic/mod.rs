@@ -23,7 +23,7 @@
 //! * Separate low regions of the gap (tread and flange) are averaged separately: one
 //!   [`Patch`] per local minimum, split where a barrier higher than `eps` separates minima.
 
-use crate::gap::{SideGap, SidePose};
+use crate::gap::{ContactPoint, SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
 use crate::track::{Placement, Side};
 
@@ -129,6 +129,20 @@ pub struct Patch {
 }
 
 impl Patch {
+    /// The averaged contact point: the columns shared with the rigid contact.
+    pub fn point(&self) -> ContactPoint {
+        ContactPoint {
+            s: self.s,
+            y: self.y,
+            z: self.z,
+            r: self.r,
+            gamma: self.gamma,
+            rail_tan_gamma: self.rail_tan_gamma,
+            wheel_curvature: self.wheel_curvature,
+            rail_curvature: self.rail_curvature,
+        }
+    }
+
     /// Whether every number of the patch is finite.
     pub fn is_finite(&self) -> bool {
         [
@@ -203,7 +217,7 @@ pub struct QuasiElasticSweep {
 /// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::Default);
+/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::default());
 /// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 /// let patch = qe.positions[0].sides[0].main().unwrap();
 /// // Averaging moves the contact point, but stays on the tread near the rigid point.
@@ -279,6 +293,23 @@ fn fields_of(side: &SideGap, p: &crate::gap::GapPoint) -> [f64; FIELDS] {
     ]
 }
 
+/// One wheel's averaging pass at one position: its gap and pose, the reference the gaps
+/// are measured from, and the weight's width there.
+#[derive(Clone, Copy)]
+struct Pass<'a> {
+    side: &'a SideGap<'a>,
+    pose: SidePose,
+    /// Axle height of the rigid solution (mm): `d = g + axle_height`.
+    axle_height: f64,
+    /// The gap the weights are measured from (mm): the rigid minimum of this wheel.
+    d_min: f64,
+    /// The distance over which the gap rises by eps at the rigid point (mm).
+    width: f64,
+    settings: &'a Settings,
+}
+
+/// The patches of one wheel at one position, heaviest first: the weighted averages over
+/// the low regions of the gap around the rigid contact point `s_rigid`.
 fn side_average(
     side: &SideGap,
     y_ws: f64,
@@ -293,9 +324,6 @@ fn side_average(
     let Some(at_rigid) = side.at(s_rigid, &pose) else {
         return SideResult::default();
     };
-    // Gaps are measured from the rigid minimum of this wheel: one reference for every
-    // region and patch, so that their weights compare.
-    let mut d_min = at_rigid.g + axle_height;
     // The distance over which the gap rises by eps: sqrt(eps / d'') at a smooth minimum,
     // eps / |d'| at a minimum on an end of the surfaces (the rail's running surface ends
     // where it turns steep), where the gap rises linearly and the weight decays within
@@ -311,80 +339,18 @@ fn side_average(
         at_rigid.g + limit + crate::gap::COARSE_MARGIN_MM,
         &mut work.regions,
     );
-    let domain = side.wheel().profile().domain();
-    include_rigid_point(&mut work.regions, s_rigid, domain);
-    let mut patches: Vec<Average<FIELDS>> = Vec::new();
-    let regions = std::mem::take(&mut work.regions);
-    // A rigid point that is not the minimum (the paper's solver stops at residuals of
-    // microns) leaves nodes below the reference; with a small eps their weights
-    // exp(-gap/eps) overflow. Then the pass is repeated from the lowest node (the regions,
-    // found from the rigid reference, hold every node below the cut-off of the lower one).
-    for _reference in 0..2 {
-        patches.clear();
-        for &(lo, hi) in &regions {
-            match settings.quadrature {
-                Quadrature::GaussLegendre { panel_widths } => {
-                    gauss_region(
-                        side,
-                        &pose,
-                        axle_height,
-                        d_min,
-                        width,
-                        settings,
-                        panel_widths,
-                        (lo, hi),
-                        work,
-                        &mut patches,
-                    );
-                }
-                Quadrature::Trapezoid { max_step_mm } => {
-                    // The step is the largest step halved until it resolves the width, and the
-                    // nodes are its multiples: a fixed grid, the same on both sides of a
-                    // symmetric wheelset.
-                    let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
-                    let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
-                    let step = max_step_mm / halvings.exp2();
-                    // Above about 5e307 mm the halvings overflow 2^1023 and the step would be 0
-                    // (an endless grid); the scene refuses such steps, library callers get the
-                    // wanted step itself.
-                    let step = if step.is_normal() { step } else { wanted };
-                    work.nodes.clear();
-                    work.gaps.clear();
-                    work.fields.clear();
-                    let k_lo = (lo / step).floor() as i64;
-                    let k_hi = (hi / step).ceil() as i64;
-                    for k in k_lo..=k_hi {
-                        let s = k as f64 * step;
-                        // The grid is rounded outwards; beyond its domain the profile is clamped
-                        // and a node there would be a phantom point of the wheel.
-                        if !(domain.0..=domain.1).contains(&s) {
-                            continue;
-                        }
-                        let Some(p) = side.at(s, &pose) else { continue };
-                        work.nodes.push(s);
-                        work.gaps.push(p.g + axle_height - d_min);
-                        work.fields.push(fields_of(side, &p));
-                    }
-                    patches.extend(average(
-                        &work.nodes,
-                        &work.gaps,
-                        &work.fields,
-                        eps,
-                        settings.cutoff,
-                    ));
-                }
-            }
-        }
-        let lowest = patches
-            .iter()
-            .map(|a| a.min_gap)
-            .fold(f64::INFINITY, f64::min);
-        if patches.iter().all(Average::is_finite) || lowest >= 0.0 {
-            break;
-        }
-        d_min += lowest;
-    }
-    work.regions = regions;
+    include_rigid_point(&mut work.regions, s_rigid, side.wheel().profile().domain());
+    // Gaps are measured from the rigid minimum of this wheel: one reference for every
+    // region and patch, so that their weights compare.
+    let pass = Pass {
+        side,
+        pose,
+        axle_height,
+        d_min: at_rigid.g + axle_height,
+        width,
+        settings,
+    };
+    let mut patches = average_regions(pass, work);
     if patches.iter().all(|a| a.weight <= 0.0) {
         // The weight is narrower than any node spacing (a minimum at a vertical end of the
         // profile, or eps far below the gap's curvature): the average tends to the value at
@@ -395,10 +361,101 @@ fn side_average(
             min_gap: 0.0,
         }];
     }
-    let total_weight: f64 = patches.iter().map(|a| a.weight).sum();
+    patches_of(side, roll, &patches)
+}
+
+/// The averages over every low region in `work.regions`, split into patches.
+///
+/// A rigid point that is not the minimum (the paper's solver stops at residuals of
+/// microns) leaves nodes below the reference; with a small eps their weights
+/// exp(-gap/eps) overflow. Then the pass is repeated from the lowest node (the regions,
+/// found from the rigid reference, hold every node below the cut-off of the lower one).
+fn average_regions(mut pass: Pass, work: &mut Work) -> Vec<Average<FIELDS>> {
+    let mut patches: Vec<Average<FIELDS>> = Vec::new();
+    let regions = std::mem::take(&mut work.regions);
+    for _reference in 0..2 {
+        patches.clear();
+        for &region in &regions {
+            match pass.settings.quadrature {
+                Quadrature::GaussLegendre { panel_widths } => {
+                    gauss_region(&pass, panel_widths, region, work, &mut patches);
+                }
+                Quadrature::Trapezoid { max_step_mm } => {
+                    trapezoid_region(&pass, max_step_mm, region, work, &mut patches);
+                }
+            }
+        }
+        let lowest = patches
+            .iter()
+            .map(|a| a.min_gap)
+            .fold(f64::INFINITY, f64::min);
+        if patches.iter().all(Average::is_finite) || lowest >= 0.0 {
+            break;
+        }
+        pass.d_min += lowest;
+    }
+    work.regions = regions;
+    patches
+}
+
+/// The trapezoid variant on one region `(lo, hi)`: nodes on a fixed grid, averaged by
+/// [`average`].
+fn trapezoid_region(
+    pass: &Pass,
+    max_step_mm: f64,
+    (lo, hi): (f64, f64),
+    work: &mut Work,
+    patches: &mut Vec<Average<FIELDS>>,
+) {
+    let Pass {
+        side,
+        pose,
+        axle_height,
+        d_min,
+        width,
+        settings,
+    } = *pass;
+    let domain = side.wheel().profile().domain();
+    // The step is the largest step halved until it resolves the width, and the nodes are
+    // its multiples: a fixed grid, the same on both sides of a symmetric wheelset.
+    let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
+    let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
+    let step = max_step_mm / halvings.exp2();
+    // Above about 5e307 mm the halvings overflow 2^1023 and the step would be 0 (an endless
+    // grid); the scene refuses such steps, library callers get the wanted step itself.
+    let step = if step.is_normal() { step } else { wanted };
+    work.nodes.clear();
+    work.gaps.clear();
+    work.fields.clear();
+    let k_lo = (lo / step).floor() as i64;
+    let k_hi = (hi / step).ceil() as i64;
+    for k in k_lo..=k_hi {
+        let s = k as f64 * step;
+        // The grid is rounded outwards; beyond its domain the profile is clamped and a node
+        // there would be a phantom point of the wheel.
+        if !(domain.0..=domain.1).contains(&s) {
+            continue;
+        }
+        let Some(p) = side.at(s, &pose) else { continue };
+        work.nodes.push(s);
+        work.gaps.push(p.g + axle_height - d_min);
+        work.fields.push(fields_of(side, &p));
+    }
+    patches.extend(average(
+        &work.nodes,
+        &work.gaps,
+        &work.fields,
+        settings.epsilon_mm,
+        settings.cutoff,
+    ));
+}
+
+/// The patches of the averages `a` (those with weight), heaviest first.
+fn patches_of(side: &SideGap, roll: f64, averages: &[Average<FIELDS>]) -> SideResult {
+    let total_weight: f64 = averages.iter().map(|a| a.weight).sum();
     let r0 = side.wheel().nominal_radius_mm();
     let phi = side.sign * roll;
-    let mut out: Vec<Patch> = patches
+    let mut out: Vec<Patch> = averages
         .iter()
         .filter(|a| a.weight > 0.0)
         .map(|a| {

@@ -358,7 +358,7 @@ fn outputs(raw: &RawScene) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
 /// The rigid solver, with the roll option.
 fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
     let rigid_solver = match raw.rigid.solver.as_deref() {
-        None => crate::rigid::Solver::Default,
+        None => crate::rigid::Solver::default(),
         Some(name) => crate::rigid::Solver::from_name(name).ok_or_else(|| {
             invalid(
                 "rigid.solver",
@@ -368,7 +368,7 @@ fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
     };
     let rigid_solver = match raw.rigid.roll.as_deref() {
         None | Some("solved") => rigid_solver,
-        Some("none") if rigid_solver == crate::rigid::Solver::Default => {
+        Some("none") if matches!(rigid_solver, crate::rigid::Solver::Default(_)) => {
             crate::rigid::Solver::NoRoll
         }
         Some("none") => {
