@@ -163,10 +163,12 @@ fn quadrature_nodes(
                 + 8.0 * breaks_per_mm * region
         }
         Quadrature::Trapezoid { max_step_mm } => {
-            let wanted = (width / 8.0).max(crate::scene::MIN_TRAPEZOID_STEP_MM);
+            // The trapezoid variant's own step rule (`quasi_elastic::average`).
+            let wanted = (width / crate::quasi_elastic::TRAPEZOID_STEPS_PER_WIDTH)
+                .max(crate::quasi_elastic::MIN_STEP_MM);
             let step = max_step_mm
                 .min(wanted)
-                .max(crate::scene::MIN_TRAPEZOID_STEP_MM / 2.0);
+                .max(crate::quasi_elastic::MIN_STEP_MM / 2.0);
             region / step
         }
     }

@@ -417,9 +417,9 @@ fn check_scene(text: &str) -> Option<Scene> {
     );
     assert!(scene.wheel_load_n().is_finite() && scene.wheel_load_n() > 0.0);
     let qe = scene.quasi_elastic();
-    assert!(qe.epsilon_mm > 0.0 && qe.epsilon_mm <= 1.0);
-    assert!(qe.cutoff.is_finite() && qe.cutoff > 0.0);
-    match qe.quadrature {
+    assert!(qe.epsilon_mm() > 0.0 && qe.epsilon_mm() <= 1.0);
+    assert!(qe.cutoff().is_finite() && qe.cutoff() > 0.0);
+    match qe.quadrature() {
         wheelrail::quasi_elastic::Quadrature::Trapezoid { max_step_mm } => {
             assert!(max_step_mm.is_finite() && max_step_mm >= 1e-4);
         }

@@ -106,11 +106,12 @@ fn quasi_elastic_on_measured_profiles_is_converged() {
         (qe, h)
     };
     let (qe, default) = run(scene.quasi_elastic());
-    let (qe_ref, reference) = run(&Settings {
-        cutoff: 60.0,
-        quadrature: Quadrature::GaussLegendre { panel_widths: 0.1 },
-        ..*scene.quasi_elastic()
-    });
+    let reference_settings = scene
+        .quasi_elastic()
+        .with_cutoff(60.0)
+        .and_then(|s| s.with_quadrature(Quadrature::GaussLegendre { panel_widths: 0.1 }))
+        .unwrap();
+    let (qe_ref, reference) = run(&reference_settings);
     let mut compared = 0;
     for (d, r) in default.iter().zip(&reference) {
         for k in 0..2 {

@@ -18,10 +18,7 @@ fn placement() -> &'static Placement {
 }
 
 fn eps(e: f64) -> Settings {
-    Settings {
-        epsilon_mm: e,
-        ..Settings::default()
-    }
+    Settings::default().with_epsilon(e).unwrap()
 }
 
 #[test]
@@ -99,10 +96,7 @@ fn cutoff_changes_nothing_at_output_precision() {
     let b = quasi_elastic::search(
         placement(),
         &r,
-        &Settings {
-            cutoff: 60.0,
-            ..Settings::default()
-        },
+        &Settings::default().with_cutoff(60.0).unwrap(),
     );
     for (p, q) in a.positions.iter().zip(&b.positions) {
         for side in [Side::Left, Side::Right] {

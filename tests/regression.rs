@@ -29,10 +29,7 @@ fn quasi_elastic_regions_share_the_rigid_minimum() {
     let ys: Vec<f64> = (0..=200).map(|i| 3.0 + 0.02 * f64::from(i)).collect();
     let rigid = rigid::search(&placement, &ys, Solver::default());
     for eps in [1e-3, 3e-3] {
-        let settings = Settings {
-            epsilon_mm: eps,
-            ..Settings::default()
-        };
+        let settings = Settings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, &rigid, &settings);
         for (p, q) in rigid.positions.iter().zip(&qe.positions) {
             assert_eq!(p.stop, Stop::Converged);
@@ -47,7 +44,7 @@ fn quasi_elastic_regions_share_the_rigid_minimum() {
                 assert!(lowest <= 0.1 * eps, "y_ws {}: {side:?} {patches:?}", p.y_ws);
                 for patch in patches {
                     assert!(
-                        patch.gap_above_min - lowest <= settings.cutoff * eps,
+                        patch.gap_above_min - lowest <= settings.cutoff() * eps,
                         "eps {eps}, y_ws {}: {side:?} patch {patch:?} lies above the cut-off",
                         p.y_ws
                     );
@@ -85,10 +82,7 @@ fn s1002_end_of_definition_has_finite_derivatives() {
          [wheelset]\nflange_back_mm = 1355.0\n",
     );
     let rigid = rigid::search(&placement, &[-45.0, 45.0], Solver::default());
-    let settings = Settings {
-        epsilon_mm: 1.0,
-        ..Settings::default()
-    };
+    let settings = Settings::default().with_epsilon(1.0).unwrap();
     let qe = quasi_elastic::search(&placement, &rigid, &settings);
     for q in &qe.positions {
         for side in [Side::Left, Side::Right] {
@@ -118,10 +112,7 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
     let ys: Vec<f64> = (0..=24).map(|i| -6.0 + 0.5 * f64::from(i)).collect();
     let rigid = rigid::search(&placement, &ys, Solver::default());
     for eps in [1e-5, 1e-4] {
-        let settings = Settings {
-            epsilon_mm: eps,
-            ..Settings::default()
-        };
+        let settings = Settings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, &rigid, &settings);
         // The invariant guarded here: a converged rigid contact has a quasi-elastic patch.
         // (With these absurd radii, roll 0.19 rad, the rigid search may also flag a position
@@ -196,10 +187,7 @@ fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
     // The stress suite's sweep: -45..45 mm every 3 mm (continuation reaches 21 mm from it).
     let ys: Vec<f64> = (0..31).map(|i| -45.0 + 3.0 * f64::from(i)).collect();
     let rigid = rigid::search(&placement, &ys, Solver::default());
-    let settings = Settings {
-        epsilon_mm: 1e-5,
-        ..Settings::default()
-    };
+    let settings = Settings::default().with_epsilon(1e-5).unwrap();
     let qe = quasi_elastic::search(&placement, &rigid, &settings);
     let mut checked = 0;
     for (p, q) in rigid.positions.iter().zip(&qe.positions) {

@@ -454,7 +454,8 @@ fn check_quasi_elastic(
     for (pos, q) in sweep.positions.iter().zip(&qe.positions) {
         let at = format!(
             "{context}, eps = {} mm, y_ws = {}",
-            settings.epsilon_mm, pos.y_ws
+            settings.epsilon_mm(),
+            pos.y_ws
         );
         assert_eq!(q.rigid_stop, pos.stop, "{at}");
         for side in [Side::Left, Side::Right] {
@@ -471,7 +472,7 @@ fn check_quasi_elastic(
             // is known to 0.01 mm; the rigid point belongs to it (a minimum sharper than the
             // sampling may have no sample below the cut-off).
             let step = 0.01;
-            let limit = settings.cutoff * settings.epsilon_mm;
+            let limit = settings.cutoff() * settings.epsilon_mm();
             let reference = patches
                 .iter()
                 .map(|p| p.gap_above_min)
@@ -524,10 +525,9 @@ fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSw
     let sweep = rigid::search(placement, ys, Solver::default());
     assert_eq!(sweep.positions.len(), ys.len(), "{context}");
     check_rigid(placement, &sweep, context);
-    let settings = Settings {
-        epsilon_mm: eps_mm,
-        ..Settings::default()
-    };
+    let settings = Settings::default()
+        .with_epsilon(eps_mm)
+        .expect("eps in range");
     check_quasi_elastic(placement, &sweep, &settings, context);
     sweep
 }

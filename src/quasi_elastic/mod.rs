@@ -27,81 +27,21 @@ use crate::gap::{ContactPoint, SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
 use crate::track::{Placement, Side};
 
-/// Default regularisation parameter (mm): the paper's 1e-5 m.
-pub const DEFAULT_EPSILON_MM: f64 = 0.01;
-/// Integrals stop where `(d - d_min) / eps` exceeds this. For a quadratic gap the weight left
-/// out is `erfc(sqrt(25)) = 1.6e-12` of the total, and the integration regions are 18 %
-/// shorter than at 37. On the paper scene the default's error in a and b (2.3e-8 against
-/// the tradeoff study's reference) is the panels'; cut-offs of 15 and 37 give 4e-7 and
-/// 5e-8 (`wheelrail tradeoff`).
-pub const DEFAULT_CUTOFF: f64 = 25.0;
-/// Default panel length of the Gauss-Legendre quadrature in weight widths `sqrt(eps / d'')`.
-/// On the paper scene, against panels of half a width (`wheelrail tradeoff`): a and b err by
-/// 2.3e-8 relative at 3 widths, 1.3e-8 at 2 (17 % slower), 2.9e-7 at 4 (8 % faster).
-pub const DEFAULT_PANEL_WIDTHS: f64 = 3.0;
-/// Largest step of the trapezoid variant in the wheel coordinate (mm).
-pub const DEFAULT_MAX_STEP_MM: f64 = 0.05;
+mod settings;
+
+pub use settings::{
+    CUTOFF_RANGE, DEFAULT_CUTOFF, DEFAULT_EPSILON_MM, DEFAULT_MAX_STEP_MM, DEFAULT_PANEL_WIDTHS,
+    EPSILON_RANGE_MM, PANEL_WIDTHS_RANGE, Quadrature, Settings, SettingsError,
+    TRAPEZOID_STEP_RANGE_MM,
+};
+
 /// Trapezoid steps per weight width `sqrt(eps / d'')` at the rigid contact point.
-const TRAPEZOID_STEPS_PER_WIDTH: f64 = 8.0;
+pub(crate) const TRAPEZOID_STEPS_PER_WIDTH: f64 = 8.0;
 /// Smallest quadrature step wanted (mm): bounds the cost where `eps / d''` is tiny.
-const MIN_STEP_MM: f64 = 1e-4;
+pub(crate) const MIN_STEP_MM: f64 = 1e-4;
 /// Local minima of the gap separated by a barrier lower than `BARRIER_EPS * eps` above the
 /// higher of the two belong to one patch: the weight barely dips between them.
 const BARRIER_EPS: f64 = 1.0;
-
-/// How the weighted integrals are evaluated.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Quadrature {
-    /// 8-point Gauss-Legendre panels on each smooth piece of the integrand: the pieces end
-    /// at the wheel's and the rail's section joints (where curvatures jump) and at the
-    /// barriers between patches. Default.
-    GaussLegendre {
-        /// Panel length in weight widths `sqrt(eps / d'')` ([`DEFAULT_PANEL_WIDTHS`]).
-        panel_widths: f64,
-    },
-    /// Trapezoid sums on a fixed grid in `s`, the step halved from `max_step_mm` until it
-    /// resolves the weight's width (the paper's kind of quadrature on tabulated data): only
-    /// first order where a curvature jumps inside the patch.
-    Trapezoid {
-        /// Largest step (mm).
-        max_step_mm: f64,
-    },
-}
-
-impl Quadrature {
-    /// Name used in scene files and tables.
-    pub fn name(self) -> String {
-        match self {
-            Quadrature::GaussLegendre { panel_widths } => {
-                format!("gauss_legendre {panel_widths} widths")
-            }
-            Quadrature::Trapezoid { max_step_mm } => format!("trapezoid {max_step_mm} mm"),
-        }
-    }
-}
-
-/// Settings of the quasi-elastic search.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Settings {
-    /// Regularisation parameter `eps` (mm).
-    pub epsilon_mm: f64,
-    /// Cut-off of the weight, in units of `eps`.
-    pub cutoff: f64,
-    /// Quadrature.
-    pub quadrature: Quadrature,
-}
-
-impl Default for Settings {
-    fn default() -> Settings {
-        Settings {
-            epsilon_mm: DEFAULT_EPSILON_MM,
-            cutoff: DEFAULT_CUTOFF,
-            quadrature: Quadrature::GaussLegendre {
-                panel_widths: DEFAULT_PANEL_WIDTHS,
-            },
-        }
-    }
-}
 
 /// The weighted average of one patch (one local minimum of the gap).
 #[derive(Debug, Clone, Copy, PartialEq)]

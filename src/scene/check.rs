@@ -3,20 +3,19 @@
 
 use super::raw::{RawConicity, RawQuasiElastic, RawScene, RawSweep};
 use super::{
-    CUTOFF_RANGE, DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_INCLINATION, DEFAULT_NOMINAL_RADIUS_MM,
+    DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_INCLINATION, DEFAULT_NOMINAL_RADIUS_MM,
     DEFAULT_POISSON, DEFAULT_RAIL_PROFILE, DEFAULT_RAIL_PROFILE_INCLINATION,
     DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_SWEEP_MM, DEFAULT_SWEEP_STEP_MM,
     DEFAULT_WHEEL_LOAD_KN, DEFAULT_WHEEL_PROFILE, DEFAULT_YOUNG_GPA, ImageFormat,
-    MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS, MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS,
-    MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N, MIN_EPSILON_MM, MIN_PANEL_WIDTHS, MIN_SWEEP_STEP_MM,
-    MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef,
-    Scene, YOUNG_RANGE_GPA,
+    MAX_EPSILON_SENSITIVITY, MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS, MAX_WHEEL_LOAD_N,
+    MIN_SWEEP_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene,
+    YOUNG_RANGE_GPA,
 };
 use crate::error::Number;
 use crate::hertz::Material;
 use crate::hertz::sweep::Settings as HertzSettings;
 use crate::profile::Profile;
-use crate::quasi_elastic::{Quadrature, Settings as QeSettings};
+use crate::quasi_elastic::{EPSILON_RANGE_MM, Quadrature, Settings as QeSettings, SettingsError};
 use crate::rigid::Solver;
 use crate::stage::Figure;
 use crate::track::{
@@ -30,19 +29,6 @@ pub(super) type Invalid = (&'static str, String);
 
 fn invalid(key: &'static str, message: String) -> Invalid {
     (key, message)
-}
-
-/// `v` (or `default`) if it is positive and finite.
-fn positive(key: &'static str, v: Option<f64>, default: f64) -> Result<f64, Invalid> {
-    let v = v.unwrap_or(default);
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(invalid(
-            key,
-            format!("{} must be a positive finite number", Number(v)),
-        ))
-    }
 }
 
 /// The profiles of the four places (left and right wheel and rail) and the keys they came
@@ -390,39 +376,22 @@ fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
 /// The quasi-elastic settings and the eps values of the sensitivity figure (mm).
 fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
     let qe = &raw.quasi_elastic;
-    let quasi_elastic = crate::quasi_elastic::Settings {
-        epsilon_mm: positive(
-            "quasi_elastic.epsilon_mm",
-            qe.epsilon_mm,
-            crate::quasi_elastic::DEFAULT_EPSILON_MM,
-        )?,
-        cutoff: within(
-            qe.cutoff.unwrap_or(crate::quasi_elastic::DEFAULT_CUTOFF),
-            CUTOFF_RANGE,
-            "eps",
-            "not a useful cut-off of the weight exp(-gap/eps) (exp(-700) is near the smallest double)",
-        )
-        .map_err(|m| invalid("quasi_elastic.cutoff", m))?,
-        quadrature: quadrature(qe).map_err(|(key, message)| invalid(key, message))?,
-    };
-    if quasi_elastic.epsilon_mm < MIN_EPSILON_MM {
-        return Err(invalid(
-            "quasi_elastic.epsilon_mm",
-            format!(
-                "{} mm is below {MIN_EPSILON_MM} mm",
-                quasi_elastic.epsilon_mm
-            ),
-        ));
-    }
-    if quasi_elastic.epsilon_mm > 1.0 {
-        return Err(invalid(
-            "quasi_elastic.epsilon_mm",
-            format!(
-                "{} mm is far beyond any elastic approach (paper: 0.01 to 0.05 mm); expected at most 1 mm",
-                quasi_elastic.epsilon_mm
-            ),
-        ));
-    }
+    let quadrature = quadrature(qe).map_err(|(key, message)| invalid(key, message))?;
+    let quasi_elastic = QeSettings::new(
+        qe.epsilon_mm
+            .unwrap_or(crate::quasi_elastic::DEFAULT_EPSILON_MM),
+        qe.cutoff.unwrap_or(crate::quasi_elastic::DEFAULT_CUTOFF),
+        quadrature,
+    )
+    .map_err(|e| {
+        let key = match e {
+            SettingsError::Epsilon { .. } => "quasi_elastic.epsilon_mm",
+            SettingsError::Cutoff { .. } => "quasi_elastic.cutoff",
+            SettingsError::PanelWidths { .. } => "quasi_elastic.panel_widths",
+            SettingsError::MaxStep { .. } => "quasi_elastic.max_step_mm",
+        };
+        invalid(key, e.to_string())
+    })?;
     let epsilon_sensitivity_mm = qe
         .sensitivity_epsilon_mm
         .clone()
@@ -432,11 +401,14 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
         || epsilon_sensitivity_mm.len() > MAX_EPSILON_SENSITIVITY
         || epsilon_sensitivity_mm
             .iter()
-            .any(|e| !(e.is_finite() && *e >= MIN_EPSILON_MM && *e <= 1.0))
+            .any(|&e| quasi_elastic.with_epsilon(e).is_err())
     {
         return Err(invalid(
             key,
-            format!("expected 1 to {MAX_EPSILON_SENSITIVITY} values from {MIN_EPSILON_MM} to 1 mm"),
+            format!(
+                "expected 1 to {MAX_EPSILON_SENSITIVITY} values from {} to {} mm",
+                EPSILON_RANGE_MM.0, EPSILON_RANGE_MM.1
+            ),
         ));
     }
     for (i, e) in epsilon_sensitivity_mm.iter().enumerate() {
@@ -494,66 +466,21 @@ fn hertz(raw: &RawScene) -> Result<HertzSettings, Invalid> {
 /// The quadrature of `[quasi_elastic]`: its kind and the one step key that kind takes, or
 /// the offending key and a message.
 fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)> {
-    let finite_positive = |key: &'static str, v: f64| {
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            Err((
-                key,
-                format!("{} must be a positive finite number", Number(v)),
-            ))
-        }
-    };
     match (qe.quadrature.as_deref(), qe.max_step_mm, qe.panel_widths) {
         (None | Some("gauss_legendre"), Some(_), _) => Err((
             "quasi_elastic.max_step_mm",
             "applies to quadrature = \"trapezoid\" only".into(),
         )),
-        (None | Some("gauss_legendre"), None, panel_widths) => {
-            let key = "quasi_elastic.panel_widths";
-            let panel_widths = finite_positive(
-                key,
-                panel_widths.unwrap_or(crate::quasi_elastic::DEFAULT_PANEL_WIDTHS),
-            )?;
-            if !(MIN_PANEL_WIDTHS..=MAX_PANEL_WIDTHS).contains(&panel_widths) {
-                return Err((
-                    key,
-                    format!(
-                        "{panel_widths} is outside {MIN_PANEL_WIDTHS} to {MAX_PANEL_WIDTHS} weight widths: shorter panels would take minutes, longer ones no longer resolve the weight"
-                    ),
-                ));
-            }
-            Ok(Quadrature::GaussLegendre { panel_widths })
-        }
+        (None | Some("gauss_legendre"), None, panel_widths) => Ok(Quadrature::GaussLegendre {
+            panel_widths: panel_widths.unwrap_or(crate::quasi_elastic::DEFAULT_PANEL_WIDTHS),
+        }),
         (Some("trapezoid"), _, Some(_)) => Err((
             "quasi_elastic.panel_widths",
             "applies to quadrature = \"gauss_legendre\" only".into(),
         )),
-        (Some("trapezoid"), step, None) => {
-            let key = "quasi_elastic.max_step_mm";
-            let max_step_mm = finite_positive(
-                key,
-                step.unwrap_or(crate::quasi_elastic::DEFAULT_MAX_STEP_MM),
-            )?;
-            if max_step_mm < MIN_TRAPEZOID_STEP_MM {
-                return Err((
-                    key,
-                    format!(
-                        "{max_step_mm} mm is below {MIN_TRAPEZOID_STEP_MM} mm: the quadrature would not finish"
-                    ),
-                ));
-            }
-            if max_step_mm > MAX_TRAPEZOID_STEP_MM {
-                return Err((
-                    key,
-                    format!(
-                        "{} mm is above {MAX_TRAPEZOID_STEP_MM} mm: the step is halved until it resolves the weight, a longer start only adds halvings",
-                        Number(max_step_mm)
-                    ),
-                ));
-            }
-            Ok(Quadrature::Trapezoid { max_step_mm })
-        }
+        (Some("trapezoid"), step, None) => Ok(Quadrature::Trapezoid {
+            max_step_mm: step.unwrap_or(crate::quasi_elastic::DEFAULT_MAX_STEP_MM),
+        }),
         (Some(other), _, _) => Err((
             "quasi_elastic.quadrature",
             format!("unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""),

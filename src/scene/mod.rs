@@ -72,30 +72,9 @@ pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
 /// so a step must be far above that rounding for positions to stay distinct and evenly
 /// spaced; 1e-6 mm (a nanometre) is a thousand roundings and far below any physical use.
 pub const MIN_SWEEP_STEP_MM: f64 = 1e-6;
-/// The cut-off of the quasi-elastic weight, in units of eps: at least 1 (the weight is
-/// cut within one width: the average would no longer be the paper's) and at most 700
-/// (`exp(-700)` is near the smallest double; a larger cut-off cuts nothing and only widens
-/// the regions integrated).
-pub const CUTOFF_RANGE: (f64, f64) = (1.0, 700.0);
-/// The largest starting step of the trapezoid quadrature (mm): the step is halved until it
-/// resolves the weight, so a longer start only adds halvings (and above about 5e307 mm the
-/// number of halvings overflows). 10 mm is wider than any low region of a contact.
-pub const MAX_TRAPEZOID_STEP_MM: f64 = 10.0;
 /// The largest number of values of eps in the sensitivity figure: each is a quasi-elastic
 /// pass over the whole sweep.
 pub const MAX_EPSILON_SENSITIVITY: usize = 16;
-/// The smallest step of the trapezoid quadrature (mm): its nodes cover the low regions
-/// (millimetres wide), so 1e-6 mm would take half a minute per position.
-pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
-/// The shortest Gauss-Legendre panel accepted, in weight widths: the tradeoff study's
-/// reference uses 0.5; 0.05 would already take seconds per sweep.
-pub const MIN_PANEL_WIDTHS: f64 = 0.05;
-/// The longest Gauss-Legendre panel accepted, in weight widths: 8 nodes over 8 widths no
-/// longer resolve the weight (4 widths already err by 3e-7 in a and b on the paper scene).
-pub const MAX_PANEL_WIDTHS: f64 = 8.0;
-/// The smallest regularisation parameter (mm): below it the weight is narrower than the
-/// spacing of double-precision numbers around a contact point.
-pub const MIN_EPSILON_MM: f64 = 1e-6;
 
 /// Default filter wavelength of the spline through profile points read from files (mm): 0,
 /// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
