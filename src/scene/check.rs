@@ -270,8 +270,10 @@ fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Inval
             Err(invalid(
                 key,
                 format!(
-                    "{nu} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
-                    POISSON_RANGE.0, POISSON_RANGE.1
+                    "{} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
+                    Number(nu),
+                    POISSON_RANGE.0,
+                    POISSON_RANGE.1
                 ),
             ))
         }
@@ -418,7 +420,10 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
         {
             return Err(invalid(
                 key,
-                format!("{e} mm is listed twice: each value is one curve of the figure"),
+                format!(
+                    "{} mm is listed twice: each value is one curve of the figure",
+                    Number(*e)
+                ),
             ));
         }
     }
@@ -580,7 +585,7 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
         ("sweep.step_mm", step),
     ] {
         if !v.is_finite() {
-            return Err((key, format!("{v} must be a finite number")));
+            return Err((key, format!("{} must be a finite number", Number(v))));
         }
     }
     if step < MIN_SWEEP_STEP_MM {
@@ -595,14 +600,21 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
     if to < from {
         return Err((
             "sweep.to_mm",
-            format!("{to} is below sweep.from_mm = {from}: the sweep is empty"),
+            format!(
+                "{} is below sweep.from_mm = {}: the sweep is empty",
+                Number(to),
+                Number(from)
+            ),
         ));
     }
     for (key, v) in [("sweep.from_mm", from), ("sweep.to_mm", to)] {
         if v.abs() > 100.0 {
             return Err((
                 key,
-                format!("{v} mm is beyond any flange clearance (expected -100 to 100 mm)"),
+                format!(
+                    "{} mm is beyond any flange clearance (expected -100 to 100 mm)",
+                    Number(v)
+                ),
             ));
         }
     }
@@ -612,8 +624,9 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
         return Err((
             "sweep.step_mm",
             format!(
-                "{step} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
-                n + 1.0
+                "{} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
+                Number(step),
+                Number(n + 1.0)
             ),
         ));
     }
@@ -628,7 +641,8 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
         return Err((
             "sweep.step_mm",
             format!(
-                "{step} mm gives positions that are not strictly increasing after rounding to 1e-9 mm"
+                "{} mm gives positions that are not strictly increasing after rounding to 1e-9 mm",
+                Number(step)
             ),
         ));
     }
