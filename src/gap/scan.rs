@@ -1,6 +1,12 @@
 //! The coarse scans of the wheel against the rail's height table: the basins of the gap
 //! (brackets to refine) and its low regions (what the quasi-elastic pass integrates), with
 //! blocks of samples skipped where a bound shows they cannot matter.
+//!
+//! The height table keeps block maxima in a sparse table, so that a scan can bound the gap
+//! of [`SCAN_BLOCK`] wheel samples at once (their lowest point against the highest rail point
+//! under them) and skip blocks that cannot hold a basin or a low region. The unit tests in
+//! `gap/tests.rs` (`skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan`) check
+//! that the scans find exactly what a full scan finds.
 
 use super::{Basin, COARSE_MARGIN_MM, SideGap, SidePose};
 

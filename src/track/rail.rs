@@ -1,5 +1,14 @@
 //! A rail placed in its side frame: rotated by its inclination, its top at `Z = 0` and its
 //! gauge point at `Y = gauge / 2`, with the tables that make its surface cheap to read.
+//!
+//! Run time is spent evaluating the gap between a wheel point and the rail under it, so the
+//! placement builds these tables once per rail: [`PlacedRail::at`] reads quintic Hermite
+//! pieces of `Z(Y)` every [`SURFACE_TABLE_STEP_MM`] built from exact values and
+//! derivatives; pieces that are steep (slope above [`SURFACE_TABLE_MAX_SLOPE`]), hold a
+//! section joint, or belong to a sampled rail fall back to [`PlacedRail::exact_at`],
+//! Newton's inversion of the profile from a cubic table of `u(Y)`. The unit test
+//! `surface_table_matches_the_exact_inversion` bounds the difference of the two over the
+//! whole head.
 
 use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
