@@ -29,12 +29,12 @@ fn placement() -> &'static Placement {
 
 fn rigid_sweep() -> &'static RigidSweep {
     static R: OnceLock<RigidSweep> = OnceLock::new();
-    R.get_or_init(|| rigid::search(placement(), &scene().sweep_mm, Solver::Default))
+    R.get_or_init(|| rigid::search(placement(), scene().sweep_mm(), Solver::default()))
 }
 
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
     static Q: OnceLock<QuasiElasticSweep> = OnceLock::new();
-    Q.get_or_init(|| quasi_elastic::search(placement(), rigid_sweep(), &scene().quasi_elastic))
+    Q.get_or_init(|| quasi_elastic::search(placement(), rigid_sweep(), scene().quasi_elastic()))
 }
 
 /// Loading and placing the four profiles.
@@ -48,8 +48,8 @@ fn place() -> Placement {
 fn rigid_default() -> RigidSweep {
     rigid::search(
         black_box(placement()),
-        &scene().sweep_mm,
-        black_box(Solver::Default),
+        scene().sweep_mm(),
+        black_box(Solver::default()),
     )
 }
 
@@ -58,7 +58,7 @@ fn rigid_default() -> RigidSweep {
 fn rigid_paper() -> RigidSweep {
     rigid::search(
         black_box(placement()),
-        &scene().sweep_mm,
+        scene().sweep_mm(),
         black_box(Solver::Paper),
     )
 }
@@ -69,7 +69,7 @@ fn quasi_elastic() -> QuasiElasticSweep {
     quasi_elastic::search(
         black_box(placement()),
         rigid_sweep(),
-        &scene().quasi_elastic,
+        scene().quasi_elastic(),
     )
 }
 
@@ -77,12 +77,12 @@ fn quasi_elastic() -> QuasiElasticSweep {
 #[divan::bench]
 fn hertz_sweep() -> Vec<hertz::sweep::Position> {
     let s = scene();
-    let e_star = hertz::effective_modulus(&s.wheel_material, &s.rail_material);
+    let e_star = hertz::effective_modulus(s.wheel_material(), s.rail_material());
     hertz::sweep::sweep(
         black_box(rigid_sweep()),
         Some(quasi_elastic_sweep()),
-        s.wheel_load_n,
+        s.wheel_load_n(),
         e_star,
-        &s.hertz,
+        s.hertz(),
     )
 }

@@ -9,19 +9,21 @@ fn main() {
     divan::main();
 }
 
+fn paper_path() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/paper/scene.toml")
+}
+
 fn paper() -> Scene {
-    Scene::load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/paper/scene.toml")).unwrap()
+    Scene::load(&paper_path()).unwrap()
 }
 
 /// The paper scene's computation for its tables (rigid, quasi-elastic, Hertz; the eps
 /// sensitivity and Hertz accuracy stages left out: they serve one figure each).
 fn compute_only() -> Scene {
-    let mut s = paper();
-    s.figures = vec![
+    paper().with_figures(vec![
         wheelrail::pipeline::Figure::SemiAxes,
         wheelrail::pipeline::Figure::ContactMap,
-    ];
-    s
+    ])
 }
 
 #[divan::bench(sample_count = 20)]
@@ -46,8 +48,7 @@ fn paper_report_rendering(bencher: divan::Bencher) {
 /// The same report with SVG figures only: the ratio of the two is the cost of the PNGs.
 #[divan::bench(sample_count = 10)]
 fn paper_report_rendering_svg_only(bencher: divan::Bencher) {
-    let mut scene = paper();
-    scene.formats = vec![wheelrail::scene::ImageFormat::Svg];
+    let scene = paper().with_formats(vec![wheelrail::scene::ImageFormat::Svg]);
     let results = pipeline::run(&scene).unwrap();
     bencher.bench(|| outputs::render(divan::black_box(&scene), &results, &[]).unwrap());
 }
@@ -56,9 +57,13 @@ fn paper_report_rendering_svg_only(bencher: divan::Bencher) {
 fn batch() -> Vec<Scene> {
     (0..8)
         .map(|i| {
-            let mut s = compute_only();
-            s.nominal_radius_mm = [440.0 + 5.0 * f64::from(i); 2];
-            s
+            let text = std::fs::read_to_string(paper_path()).unwrap().replace(
+                "nominal_radius_mm = 460.0",
+                &format!("nominal_radius_mm = {}.0", 440 + 5 * i),
+            );
+            Scene::from_toml(&text, "batch", Path::new("."))
+                .unwrap()
+                .with_figures(compute_only().figures().to_vec())
         })
         .collect()
 }
@@ -92,11 +97,11 @@ fn batch_of_8_parallel(bencher: divan::Bencher) {
 fn rigid_sweep_two_calls_in_parallel(bencher: divan::Bencher) {
     let scene = paper();
     let placement = pipeline::place(&scene).unwrap();
-    let (a, b) = scene.sweep_mm.split_at(scene.sweep_mm.len() / 2);
+    let (a, b) = scene.sweep_mm().split_at(scene.sweep_mm().len() / 2);
     bencher.bench(|| {
         rayon::join(
-            || wheelrail::rigid::search(&placement, a, scene.rigid_solver),
-            || wheelrail::rigid::search(&placement, b, scene.rigid_solver),
+            || wheelrail::rigid::search(&placement, a, scene.rigid_solver()),
+            || wheelrail::rigid::search(&placement, b, scene.rigid_solver()),
         )
     });
 }
@@ -105,5 +110,5 @@ fn rigid_sweep_two_calls_in_parallel(bencher: divan::Bencher) {
 fn rigid_sweep_one_call(bencher: divan::Bencher) {
     let scene = paper();
     let placement = pipeline::place(&scene).unwrap();
-    bencher.bench(|| wheelrail::rigid::search(&placement, &scene.sweep_mm, scene.rigid_solver));
+    bencher.bench(|| wheelrail::rigid::search(&placement, scene.sweep_mm(), scene.rigid_solver()));
 }

@@ -35,10 +35,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let wheel = Profile::from_points(points, 4.0)?;
 
     let layout = TrackLayout::standard(Inclination::parse("1:40")?);
-    let placement =
-        Placement::symmetric(wheel, 460.0, Profile::uic60e1(), Inclination(0.0), layout)?;
+    let placement = Placement::symmetric(
+        wheel,
+        460.0,
+        Profile::uic60e1(),
+        Inclination::VERTICAL,
+        layout,
+    )?;
     let shifts: Vec<f64> = (-8..=8).map(f64::from).collect();
-    let rigid = rigid::search(&placement, &shifts, Solver::Default);
+    let rigid = rigid::search(&placement, &shifts, Solver::default());
     let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 
     // Hertz on the heaviest quasi-elastic patch, 70 kN per wheel, steel on steel.

@@ -22,11 +22,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // Standard gauge and wheelset, rails inclined 1:40; the rail points are upright.
     let layout = TrackLayout::standard(Inclination::parse("1:40")?);
-    let placement = Placement::symmetric(wheel, 460.0, rail, Inclination(0.0), layout)?;
+    let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
 
     // Lateral shifts of the wheelset from -10 to 10 mm every 0.1 mm, roll solved.
     let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();
-    let sweep = rigid::search(&placement, &shifts, Solver::Default);
+    let sweep = rigid::search(&placement, &shifts, Solver::default());
     let pair = conicity::assess(&sweep, &conicity::Settings::default());
 
     println!("y_ws_mm, delta_r_mm (every 2 mm)");

@@ -66,6 +66,14 @@ impl Estimate {
 /// nodes of every quasi-elastic pass) + the conicity's amplitudes × pieces. The profiles
 /// come from the run's own `placement` (the profile stage, which every run does first), so
 /// that the knots of splines are counted without reading the files again.
+///
+/// # Example
+/// ```
+/// use wheelrail::{cost, pipeline, scene::Scene};
+/// let scene = Scene::from_toml("", "doc", ".".as_ref()).unwrap(); // the paper's case
+/// let estimate = cost::estimate(&scene, &pipeline::place(&scene).unwrap());
+/// assert!(estimate.within_budget(), "{}", estimate.describe());
+/// ```
 pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     let stages = pipeline::needed_stages(scene);
     let positions = scene.sweep_mm.len() as f64;
@@ -155,10 +163,12 @@ fn quadrature_nodes(
                 + 8.0 * breaks_per_mm * region
         }
         Quadrature::Trapezoid { max_step_mm } => {
-            let wanted = (width / 8.0).max(crate::scene::MIN_TRAPEZOID_STEP_MM);
+            // The trapezoid variant's own step rule (`quasi_elastic::average`).
+            let wanted = (width / crate::quasi_elastic::TRAPEZOID_STEPS_PER_WIDTH)
+                .max(crate::quasi_elastic::MIN_STEP_MM);
             let step = max_step_mm
                 .min(wanted)
-                .max(crate::scene::MIN_TRAPEZOID_STEP_MM / 2.0);
+                .max(crate::quasi_elastic::MIN_STEP_MM / 2.0);
             region / step
         }
     }

@@ -17,6 +17,34 @@
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
 //!
+//! # Quick start
+//!
+//! Profiles from your own points (here S1002 and 60E1 sampled every 0.5 mm, in their side
+//! frames), a standard-gauge track with rails inclined 1:40, a rigid sweep, and the
+//! equivalent conicity of EN 15302 (`examples/own_profiles.rs` prints more):
+//!
+//! ```
+//! use wheelrail::profile::{Profile, ProfileKind, read::PointProfile};
+//! use wheelrail::track::{Inclination, Placement, TrackLayout};
+//! use wheelrail::{conicity, rigid};
+//!
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! let points = |p: Profile| p.sample(0.5).iter().map(|r| [r[0], r[1]]).collect();
+//! let wheel = PointProfile::from_points(ProfileKind::Wheel, "my wheel", points(Profile::s1002()))?;
+//! let rail = PointProfile::from_points(ProfileKind::Rail, "my rail", points(Profile::uic60e1()))?;
+//! let (wheel, rail) = (Profile::from_points(wheel, 0.0)?, Profile::from_points(rail, 0.0)?);
+//!
+//! let layout = TrackLayout::standard(Inclination::parse("1:40")?);
+//! let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
+//! let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect(); // mm
+//! let sweep = rigid::search(&placement, &shifts, rigid::Solver::default());
+//! let pair = conicity::assess(&sweep, &conicity::Settings::default());
+//! let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
+//! assert!((0.1..0.3).contains(&tan_gamma_e_3mm));
+//! # Ok(())
+//! # }
+//! ```
+//!
 //! # Units
 //!
 //! Millimetres, newtons, megapascals (N/mm²) and radians everywhere inside and in every output.
@@ -42,7 +70,8 @@
 //!   positive on the conical tread and on the flange (about +0.03 rad on the tread, +1.22 rad
 //!   on the S1002 flank); `tan(gamma) = -dF/ds` for the wheel, `dz/dy` for the rail.
 //!
-//! The full statement lives in `ARCHITECTURE.md`; every CSV header repeats it.
+//! This is the full statement: the types that carry a frame restate it, and every CSV header
+//! repeats it.
 
 #[cfg(feature = "cli")]
 pub mod app;
@@ -61,6 +90,7 @@ pub mod report;
 pub mod rigid;
 pub mod scene;
 pub mod stage;
+pub mod stop;
 pub mod track;
 #[cfg(feature = "cli")]
 pub mod tradeoff;

@@ -18,7 +18,7 @@ use crate::profile::ProfileKind;
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep};
 use crate::scene::Scene;
-use crate::track::{PlacedRail, PlacedWheel, Placement, Side, SidePair};
+use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, SidePair};
 use std::time::Instant;
 
 pub use crate::stage::{Figure, Stage};
@@ -112,10 +112,25 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
         .collect()
 }
 
-/// Runs the stages `scene`'s outputs need.
+/// Runs the stages `scene`'s outputs need (and only those: see [`needed_stages`]).
 ///
 /// # Errors
 /// [`crate::Error`] when a profile cannot be read or placed.
+///
+/// # Example
+/// ```
+/// use wheelrail::{pipeline, scene::Scene};
+/// let scene = Scene::from_toml(
+///     "[sweep]\nfrom_mm = 0.0\nto_mm = 1.0\nstep_mm = 0.5\n[outputs]\nfigures = [\"semi_axes\"]",
+///     "doc",
+///     ".".as_ref(),
+/// )
+/// .unwrap();
+/// let results = pipeline::run(&scene).unwrap();
+/// let hertz = results.hertz.unwrap(); // semi_axes draws the Hertz stage
+/// assert_eq!(hertz.len(), 3);
+/// assert!(results.conicity.is_none()); // not needed by the figures
+/// ```
 pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
     run_gated(scene, |_| Ok(false))
 }
@@ -269,11 +284,7 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
 }
 
 /// The error of placing the profile of `key`.
-fn placement_error(
-    scene: &Scene,
-    key: &'static str,
-    e: crate::track::PlacementError,
-) -> crate::Error {
+fn placement_error(scene: &Scene, key: &'static str, e: PlacementError) -> crate::Error {
     crate::scene::SceneError::Profile {
         path: scene.path.clone(),
         key,
@@ -328,9 +339,10 @@ pub fn place_rails(scene: &Scene) -> Result<[PlacedRail; 2], crate::Error> {
     Ok([left, right])
 }
 
-/// The placement of placed wheels and rails `[left, right]` on `scene`'s track, checked: a
-/// wheel that lies nowhere above its rail with the wheelset centred is an error. A fleet
-/// places its shared rails (or wheels) once and assembles each pair from them.
+/// The placement of placed wheels and rails `[left, right]` on `scene`'s track, checked by
+/// [`Placement::new`] (a wheel that lies nowhere above its rail with the wheelset centred
+/// is an error naming its key). A fleet places its shared rails (or wheels) once and
+/// assembles each pair from them.
 ///
 /// # Errors
 /// [`crate::Error::Scene`] naming the wheel's profile key.
@@ -339,40 +351,18 @@ pub fn assemble(
     wheels: [PlacedWheel; 2],
     rails: [PlacedRail; 2],
 ) -> Result<Placement, crate::Error> {
+    let wheel_keys = scene.wheel_profile_keys;
     let [left_wheel, right_wheel] = wheels;
     let [left_rail, right_rail] = rails;
-    let placement = Placement {
-        layout: scene.layout.clone(),
-        left: SidePair {
-            wheel: left_wheel,
-            rail: left_rail,
-        },
-        right: SidePair {
-            wheel: right_wheel,
-            rail: right_rail,
-        },
-    };
-    let wheel_keys = scene.wheel_profile_keys;
-    // A wheel that lies nowhere above its rail with the wheelset centred cannot touch it in
-    // any sweep of a few centimetres: a unit mistake or a wrong profile, not a result.
-    for (side, key) in [(Side::Left, wheel_keys[0]), (Side::Right, wheel_keys[1])] {
-        let pair = placement.side(side);
-        let (s_lo, s_hi) = pair.wheel.profile().domain();
-        let (y_lo, y_hi) = pair.rail.y_range();
-        let taping = pair.wheel.taping_line_mm();
-        if taping + s_hi < y_lo || taping + s_lo > y_hi {
-            return Err(crate::scene::SceneError::Profile {
-                path: scene.path.clone(),
-                key,
-                message: format!(
-                    "the {} wheel and rail do not overlap laterally with the wheelset centred (wheel {}, rail {}): check the profiles' lateral origins and units",
-                    side.name(),
-                    placement.side(side).wheel.profile().name(),
-                    placement.side(side).rail.profile().name()
-                ),
-            }
-            .into());
-        }
-    }
-    Ok(placement)
+    let left = SidePair::new(left_wheel, left_rail);
+    let right = SidePair::new(right_wheel, right_rail);
+    Placement::new(scene.layout.clone(), left, right).map_err(|e| {
+        let key = match e {
+            PlacementError::NoOverlap {
+                side: Side::Right, ..
+            } => wheel_keys[1],
+            _ => wheel_keys[0],
+        };
+        placement_error(scene, key, e)
+    })
 }

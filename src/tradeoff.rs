@@ -76,7 +76,7 @@ pub fn reference_setting() -> Setting {
     Setting {
         label: "reference".into(),
         profile_step_mm: None,
-        solver: Solver::Default,
+        solver: Solver::default(),
         quasi_elastic: quasi_elastic::Settings {
             cutoff: 60.0,
             quadrature: quasi_elastic::Quadrature::GaussLegendre {
@@ -93,7 +93,7 @@ pub fn default_setting(scene: &Scene) -> Setting {
     Setting {
         label: "default".into(),
         profile_step_mm: None,
-        solver: Solver::Default,
+        solver: Solver::default(),
         quasi_elastic: scene.quasi_elastic,
         hertz: Method::Exact,
     }
@@ -209,11 +209,8 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
         )
         .map_err(|e| crate::Error::Other(e.to_string()))
     };
-    Ok(Placement {
-        layout: scene.layout.clone(),
-        left: side(0)?,
-        right: side(1)?,
-    })
+    Placement::new(scene.layout.clone(), side(0)?, side(1)?)
+        .map_err(|e| crate::Error::Other(e.to_string()))
 }
 
 /// One run of the pipeline's stages (placement included, as a report runs them) under

@@ -77,7 +77,7 @@ fn no_legend_of_a_committed_report_covers_data_or_labels() {
     for path in &scenes {
         let scene = Scene::load(path).unwrap();
         let results = pipeline::run(&scene).unwrap();
-        for &fig in &scene.figures {
+        for &fig in scene.figures() {
             let figure = outputs::figure(fig, &results).unwrap();
             checked += layout(&figure)
                 .unwrap()
@@ -182,7 +182,7 @@ fn no_legend_of_the_fleet_charts_covers_data_or_labels() {
         files.push(root.join("tests/data/profiles").join(name));
     }
     let template = Scene::load(&root.join("reports/fleet/scene.toml")).unwrap();
-    let limit = template.fleet.conicity_limit;
+    let limit = template.fleet().conicity_limit;
     assert!(limit.is_some(), "the default fleet scene sets a limit");
     let items = fleet::items_of_files(&files, false);
     let fleet = Fleet::new(template, Inputs::Wheels, &items, false).unwrap();

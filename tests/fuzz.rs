@@ -401,25 +401,25 @@ fn scene_text() -> impl Strategy<Value = String> {
 /// The scene parser's contract; returns the scene when accepted.
 fn check_scene(text: &str) -> Option<Scene> {
     let scene = Scene::from_toml(text, "fuzz.toml", Path::new(".")).ok()?;
-    assert!(!scene.sweep_mm.is_empty());
+    assert!(!scene.sweep_mm().is_empty());
     assert!(
         scene
-            .sweep_mm
+            .sweep_mm()
             .iter()
             .all(|y| y.is_finite() && y.abs() <= 100.0)
     );
-    assert!(scene.sweep_mm.windows(2).all(|w| w[1] > w[0]));
+    assert!(scene.sweep_mm().windows(2).all(|w| w[1] > w[0]));
     assert!(
         scene
-            .nominal_radius_mm
+            .nominal_radius_mm()
             .iter()
             .all(|r| (100.0..=1000.0).contains(r))
     );
-    assert!(scene.wheel_load_n.is_finite() && scene.wheel_load_n > 0.0);
-    let qe = scene.quasi_elastic;
-    assert!(qe.epsilon_mm > 0.0 && qe.epsilon_mm <= 1.0);
-    assert!(qe.cutoff.is_finite() && qe.cutoff > 0.0);
-    match qe.quadrature {
+    assert!(scene.wheel_load_n().is_finite() && scene.wheel_load_n() > 0.0);
+    let qe = scene.quasi_elastic();
+    assert!(qe.epsilon_mm() > 0.0 && qe.epsilon_mm() <= 1.0);
+    assert!(qe.cutoff().is_finite() && qe.cutoff() > 0.0);
+    match qe.quadrature() {
         wheelrail::quasi_elastic::Quadrature::Trapezoid { max_step_mm } => {
             assert!(max_step_mm.is_finite() && max_step_mm >= 1e-4);
         }
@@ -427,9 +427,9 @@ fn check_scene(text: &str) -> Option<Scene> {
             assert!((0.05..=8.0).contains(&panel_widths));
         }
     }
-    let layout = &scene.layout;
-    assert!(layout.gauge_mm.is_finite() && layout.flange_back_mm < layout.gauge_mm);
-    assert!((0.0..=0.2).contains(&layout.inclination.0));
+    let layout = &scene.layout();
+    assert!(layout.gauge_mm().is_finite() && layout.flange_back_mm() < layout.gauge_mm());
+    assert!((0.0..=0.2).contains(&layout.inclination().radians()));
     Some(scene)
 }
 
@@ -438,21 +438,22 @@ fn check_scene(text: &str) -> Option<Scene> {
 fn run_scene(scene: &Scene) {
     let built_in =
         |r: &wheelrail::scene::ProfileRef| matches!(r, wheelrail::scene::ProfileRef::BuiltIn(_));
-    if !(scene.wheel_profiles.iter().all(built_in) && scene.rail_profiles.iter().all(built_in)) {
+    if !(scene.wheel_profiles().iter().all(built_in) && scene.rail_profiles().iter().all(built_in))
+    {
         return;
     }
     let Ok(placement) = wheelrail::pipeline::place(scene) else {
         return;
     };
-    let n = scene.sweep_mm.len();
+    let n = scene.sweep_mm().len();
     let ys = [
-        scene.sweep_mm[0],
-        scene.sweep_mm[n / 2],
-        scene.sweep_mm[n - 1],
+        scene.sweep_mm()[0],
+        scene.sweep_mm()[n / 2],
+        scene.sweep_mm()[n - 1],
     ];
     let mut ys = ys.to_vec();
     ys.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
-    let sweep = rigid::search(&placement, &ys, scene.rigid_solver);
+    let sweep = rigid::search(&placement, &ys, scene.rigid_solver());
     for p in &sweep.positions {
         if p.stop == Stop::Converged {
             assert!(p.roll.is_finite() && p.axle_height.is_finite(), "{p:?}");
@@ -464,7 +465,7 @@ fn run_scene(scene: &Scene) {
             );
         }
     }
-    let _ = Solver::Default;
+    let _ = Solver::default();
 }
 
 const VALID_SCENE: &str = r#"name = "fuzz"

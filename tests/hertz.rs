@@ -4,8 +4,8 @@
 use proptest::prelude::*;
 use std::f64::consts::PI;
 use wheelrail::hertz::{
-    Contact, Ellipse, HertzError, Material, Method, NotHertzianReason, PrincipalCurvatures,
-    StopReason, accuracy, ellipse, relative_curvatures,
+    Contact, Ellipse, HertzError, Material, Method, NotHertzianReason, PrincipalCurvatures, Stop,
+    accuracy, ellipse, relative_curvatures,
 };
 
 /// Steel on steel, E = 210 GPa, ν = 0.3: E* = E / (2 (1 - ν²)).
@@ -34,7 +34,7 @@ fn exact_matches_mpmath_references() {
     for line in data.lines().filter(|l| !l.starts_with('#')).skip(1) {
         let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
         let c = solve(v[0], v[1], v[2], v[3], Method::Exact);
-        assert_eq!(c.stop, StopReason::Converged);
+        assert_eq!(c.stop, Stop::Converged);
         let got = [c.a_mm, c.b_mm, c.p0_mpa, c.approach_mm];
         for (col, name) in ["a", "b", "p0", "approach"].iter().enumerate() {
             let err = rel(got[col], v[4 + col]);
@@ -107,7 +107,7 @@ fn sphere_on_plane_closed_form() {
         assert!(rel(c.p0_mpa, 3.0 * load / (2.0 * PI * a * a)) <= 1e-14);
         assert!(rel(c.mean_pressure_mpa, load / (PI * a * a)) <= 1e-14);
         assert!(c.eccentricity.abs() <= 1e-15);
-        assert_eq!((c.iterations, c.stop), (0, StopReason::Converged));
+        assert_eq!((c.iterations, c.stop), (0, Stop::Converged));
     }
 }
 
@@ -131,7 +131,7 @@ fn extreme_ratios_stay_finite_and_monotonic() {
     let mut last_ratio = f64::INFINITY;
     for k in 0..=300 {
         let c = solve(10f64.powi(-k), 1.0, 1.0, 1.0, Method::Exact);
-        assert_eq!(c.stop, StopReason::Converged);
+        assert_eq!(c.stop, Stop::Converged);
         let g = c.b_mm / c.a_mm;
         assert!(
             g > 0.0 && g < last_ratio || k == 0,
@@ -390,6 +390,6 @@ fn paper_error_table() {
     );
     // Near the circle the truncated series make the update leave the domain (e² < 0): the
     // result is flagged, and b/a, being close to 1 anyway, is off by < 1e-3.
-    assert_eq!(at(1.0).3, StopReason::LeftDomain);
+    assert_eq!(at(1.0).3, Stop::LeftDomain);
     assert!(at(1.0).1.abs() < 1e-3);
 }

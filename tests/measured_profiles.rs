@@ -88,22 +88,20 @@ fn measured(name: &str, kind: ProfileKind) -> Profile {
 
 fn placement(wheel: Profile, rail: Profile, rail_inclination: Inclination) -> Placement {
     let layout = layout();
-    let pair = || SidePair {
-        wheel: PlacedWheel::place(wheel.clone(), 460.0, &layout).unwrap(),
-        rail: PlacedRail::place(rail.clone(), rail_inclination, &layout).unwrap(),
+    let pair = || {
+        SidePair::new(
+            PlacedWheel::place(wheel.clone(), 460.0, &layout).unwrap(),
+            PlacedRail::place(rail.clone(), rail_inclination, &layout).unwrap(),
+        )
     };
-    Placement {
-        left: pair(),
-        right: pair(),
-        layout,
-    }
+    Placement::new(layout.clone(), pair(), pair()).unwrap()
 }
 
 /// Finite-or-flagged checks of a sweep (the plausibility bounds of `tests/stress.rs`); returns
 /// how many positions converged.
 fn check(placement: &Placement, name: &str) -> usize {
     let ys: Vec<f64> = (0..=100).map(|i| -25.0 + 0.5 * f64::from(i)).collect();
-    let sweep = rigid::search(placement, &ys, Solver::Default);
+    let sweep = rigid::search(placement, &ys, Solver::default());
     let qe = quasi_elastic::search(placement, &sweep, &Settings::default());
     let mut converged = 0;
     for (pos, q) in sweep.positions.iter().zip(&qe.positions) {
@@ -136,7 +134,7 @@ fn check(placement: &Placement, name: &str) -> usize {
             let sign = side.sign();
             let gap = SideGap::new(placement.side(side), sign);
             let pose = SidePose::new(sign, pos.y_ws, pos.roll);
-            let (lo, hi) = placement.side(side).wheel.profile().domain();
+            let (lo, hi) = placement.side(side).wheel().profile().domain();
             let n = ((hi - lo) / 0.05).ceil() as usize;
             for i in 0..=n {
                 let s = (lo + 0.05 * i as f64).min(hi);
@@ -168,7 +166,7 @@ fn measured_wheels_run_on_uic60() {
         let placement = placement(
             measured(name, ProfileKind::Wheel),
             Profile::uic60e1(),
-            Inclination(0.0),
+            Inclination::VERTICAL,
         );
         let converged = check(&placement, name);
         println!("{name} on UIC60 1:40: {converged} of 101 positions converged");

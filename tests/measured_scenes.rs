@@ -92,19 +92,26 @@ fn quasi_elastic_on_measured_profiles_is_converged() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/measured_average/scene.toml");
     let scene = Scene::load(&path).unwrap();
     let placement = pipeline::place(&scene).unwrap();
-    let rigid = wheelrail::rigid::search(&placement, &scene.sweep_mm, Default::default());
-    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+    let rigid = wheelrail::rigid::search(&placement, scene.sweep_mm(), Default::default());
+    let e_star = hertz::effective_modulus(scene.wheel_material(), scene.rail_material());
     let run = |settings: &Settings| {
         let qe = quasi_elastic::search(&placement, &rigid, settings);
-        let h = hertz::sweep::sweep(&rigid, Some(&qe), scene.wheel_load_n, e_star, &scene.hertz);
+        let h = hertz::sweep::sweep(
+            &rigid,
+            Some(&qe),
+            scene.wheel_load_n(),
+            e_star,
+            scene.hertz(),
+        );
         (qe, h)
     };
-    let (qe, default) = run(&scene.quasi_elastic);
-    let (qe_ref, reference) = run(&Settings {
-        cutoff: 60.0,
-        quadrature: Quadrature::GaussLegendre { panel_widths: 0.1 },
-        ..scene.quasi_elastic
-    });
+    let (qe, default) = run(scene.quasi_elastic());
+    let reference_settings = scene
+        .quasi_elastic()
+        .with_cutoff(60.0)
+        .and_then(|s| s.with_quadrature(Quadrature::GaussLegendre { panel_widths: 0.1 }))
+        .unwrap();
+    let (qe_ref, reference) = run(&reference_settings);
     let mut compared = 0;
     for (d, r) in default.iter().zip(&reference) {
         for k in 0..2 {

@@ -42,7 +42,8 @@ fn inclined_uic60_matches_the_manchester_benchmark_file() {
     // head. Distances are taken normal to the surface (|dz| cos(angle)): on the flank a
     // vertical difference magnifies a lateral one by the slope (up to 40).
     let points = read_profile(&data("MBench_UIC60_v3.prr"), ProfileKind::Rail).unwrap();
-    let rail = PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+    let rail =
+        PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
     let top = rail.top();
     let mut worst: f64 = 0.0;
     let mut compared = 0;

@@ -18,10 +18,7 @@ fn placement() -> &'static Placement {
 }
 
 fn eps(e: f64) -> Settings {
-    Settings {
-        epsilon_mm: e,
-        ..Settings::default()
-    }
+    Settings::default().with_epsilon(e).unwrap()
 }
 
 #[test]
@@ -94,15 +91,12 @@ fn cutoff_changes_nothing_at_output_precision() {
     // sweep. The cut-off moves the ends of the integration regions and so the quadrature
     // panels: the results differ by the quadrature's own error, about 1e-12 mm (measured).
     let sweep: Vec<f64> = (0..=30).map(|i| -15.0 + f64::from(i)).collect();
-    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let r = rigid::search(placement(), &sweep, Solver::default());
     let a = quasi_elastic::search(placement(), &r, &Settings::default());
     let b = quasi_elastic::search(
         placement(),
         &r,
-        &Settings {
-            cutoff: 60.0,
-            ..Settings::default()
-        },
+        &Settings::default().with_cutoff(60.0).unwrap(),
     );
     for (p, q) in a.positions.iter().zip(&b.positions) {
         for side in [Side::Left, Side::Right] {
@@ -125,7 +119,7 @@ fn converges_to_rigid_as_eps_decreases() {
     // 0.0034 mm; the weight is a Gaussian of width sqrt(eps / d'') whose skew from the third
     // derivative of the gap shifts its mean in proportion to eps).
     let sweep = [-12.0, -8.0, -3.0, 2.0, 3.5, 9.0, 13.0];
-    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let r = rigid::search(placement(), &sweep, Solver::default());
     let errs: Vec<f64> = [0.01, 0.001, 0.0001]
         .iter()
         .map(|&e| {
@@ -159,7 +153,7 @@ fn smooths_the_rigid_jumps() {
     // from the tread patch to the flange-root patch instead. The flange onset (6.26 mm) is
     // excluded: there the flange is a new body in contact.
     let sweep: Vec<f64> = (0..=60).map(|i| 0.1 * f64::from(i)).collect();
-    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let r = rigid::search(placement(), &sweep, Solver::default());
     let q = quasi_elastic::search(placement(), &r, &Settings::default());
     let mut rigid_max: f64 = 0.0;
     for (a, b) in r.positions.iter().zip(&r.positions[1..]) {
@@ -196,7 +190,7 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(16))]
     #[test]
     fn mirror_symmetry(y in 0.0f64..15.0) {
-        let r = rigid::search(placement(), &[-y, y], Solver::Default);
+        let r = rigid::search(placement(), &[-y, y], Solver::default());
         let q = quasi_elastic::search(placement(), &r, &Settings::default());
         let (m, p) = (&q.positions[0], &q.positions[1]);
         let pairs = [(m.side(Side::Left), p.side(Side::Right)), (m.side(Side::Right), p.side(Side::Left))];
@@ -222,9 +216,9 @@ fn weight_shares_match_an_independent_integration() {
     // curvature jumps: below 1e-4 of the share, measured).
     use wheelrail::gap::{SideGap, SidePose};
     let sweep: Vec<f64> = (0..=30).map(|i| 3.5 + 0.1 * f64::from(i)).collect();
-    let r = rigid::search(placement(), &sweep, Solver::Default);
+    let r = rigid::search(placement(), &sweep, Solver::default());
     let q = quasi_elastic::search(placement(), &r, &Settings::default());
-    let side = SideGap::new(&placement().left, 1.0);
+    let side = SideGap::new(placement().left(), 1.0);
     let mut checked = 0;
     for (rp, qp) in r.positions.iter().zip(&q.positions) {
         let patches = &qp.side(Side::Left).patches;

@@ -27,12 +27,9 @@ fn place(toml: &str) -> wheelrail::track::Placement {
 fn quasi_elastic_regions_share_the_rigid_minimum() {
     let placement = place("");
     let ys: Vec<f64> = (0..=200).map(|i| 3.0 + 0.02 * f64::from(i)).collect();
-    let rigid = rigid::search(&placement, &ys, Solver::Default);
+    let rigid = rigid::search(&placement, &ys, Solver::default());
     for eps in [1e-3, 3e-3] {
-        let settings = Settings {
-            epsilon_mm: eps,
-            ..Settings::default()
-        };
+        let settings = Settings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, &rigid, &settings);
         for (p, q) in rigid.positions.iter().zip(&qe.positions) {
             assert_eq!(p.stop, Stop::Converged);
@@ -47,7 +44,7 @@ fn quasi_elastic_regions_share_the_rigid_minimum() {
                 assert!(lowest <= 0.1 * eps, "y_ws {}: {side:?} {patches:?}", p.y_ws);
                 for patch in patches {
                     assert!(
-                        patch.gap_above_min - lowest <= settings.cutoff * eps,
+                        patch.gap_above_min - lowest <= settings.cutoff() * eps,
                         "eps {eps}, y_ws {}: {side:?} patch {patch:?} lies above the cut-off",
                         p.y_ws
                     );
@@ -84,11 +81,8 @@ fn s1002_end_of_definition_has_finite_derivatives() {
          [track]\ngauge_mm = 1430.0\ngauge_point_depth_mm = 10.0\n\
          [wheelset]\nflange_back_mm = 1355.0\n",
     );
-    let rigid = rigid::search(&placement, &[-45.0, 45.0], Solver::Default);
-    let settings = Settings {
-        epsilon_mm: 1.0,
-        ..Settings::default()
-    };
+    let rigid = rigid::search(&placement, &[-45.0, 45.0], Solver::default());
+    let settings = Settings::default().with_epsilon(1.0).unwrap();
     let qe = quasi_elastic::search(&placement, &rigid, &settings);
     for q in &qe.positions {
         for side in [Side::Left, Side::Right] {
@@ -116,12 +110,9 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
          [wheelset]\nflange_back_mm = 1355.0\n",
     );
     let ys: Vec<f64> = (0..=24).map(|i| -6.0 + 0.5 * f64::from(i)).collect();
-    let rigid = rigid::search(&placement, &ys, Solver::Default);
+    let rigid = rigid::search(&placement, &ys, Solver::default());
     for eps in [1e-5, 1e-4] {
-        let settings = Settings {
-            epsilon_mm: eps,
-            ..Settings::default()
-        };
+        let settings = Settings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, &rigid, &settings);
         // The invariant guarded here: a converged rigid contact has a quasi-elastic patch.
         // (With these absurd radii, roll 0.19 rad, the rigid search may also flag a position
@@ -161,7 +152,7 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
 #[test]
 fn scene_rejects_values_that_overflow_on_conversion() {
     let scene = Scene::from_toml("[load]\nwheel_load_kN = 1e306\n", "t", Path::new("."));
-    assert!(scene.is_err(), "{:?}", scene.map(|s| s.wheel_load_n));
+    assert!(scene.is_err(), "{:?}", scene.map(|s| s.wheel_load_n()));
 }
 
 /// Found while fuzzing scenes: any positive `quasi_elastic.max_step_mm` is accepted, but the
@@ -195,11 +186,8 @@ fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
     );
     // The stress suite's sweep: -45..45 mm every 3 mm (continuation reaches 21 mm from it).
     let ys: Vec<f64> = (0..31).map(|i| -45.0 + 3.0 * f64::from(i)).collect();
-    let rigid = rigid::search(&placement, &ys, Solver::Default);
-    let settings = Settings {
-        epsilon_mm: 1e-5,
-        ..Settings::default()
-    };
+    let rigid = rigid::search(&placement, &ys, Solver::default());
+    let settings = Settings::default().with_epsilon(1e-5).unwrap();
     let qe = quasi_elastic::search(&placement, &rigid, &settings);
     let mut checked = 0;
     for (p, q) in rigid.positions.iter().zip(&qe.positions) {
@@ -238,14 +226,14 @@ fn rigid_converges_at_a_contact_on_the_end_of_the_rail_surface() {
     let scene = Scene::load(&path).unwrap();
     let placement = wheelrail::pipeline::place(&scene).unwrap();
     let sweep: Vec<f64> = (-40..=40).map(|i| f64::from(3 * i) / 10.0).collect();
-    let r = rigid::search(&placement, &sweep, Solver::Default);
+    let r = rigid::search(&placement, &sweep, Solver::default());
     let at = r
         .positions
         .iter()
         .find(|p| (p.y_ws + 8.4).abs() < 1e-12)
         .unwrap();
     assert_eq!(at.stop, Stop::Converged, "{at:?}");
-    assert!(at.residual <= rigid::ROLL_RESIDUAL_TOL_MM);
+    assert!(at.residual <= rigid::RollSettings::default().residual_tol_mm);
     for p in &r.positions {
         assert_eq!(p.stop, Stop::Converged, "y_ws {}: {:?}", p.y_ws, p.stop);
     }

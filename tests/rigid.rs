@@ -22,7 +22,11 @@ fn paper_sweep(solver: Solver) -> &'static rigid::RigidSweep {
     static D: OnceLock<rigid::RigidSweep> = OnceLock::new();
     static P: OnceLock<rigid::RigidSweep> = OnceLock::new();
     let sweep: Vec<f64> = (0..=300).map(|i| -15.0 + 0.1 * f64::from(i)).collect();
-    let cell = if solver == Solver::Default { &D } else { &P };
+    let cell = if matches!(solver, Solver::Default(_)) {
+        &D
+    } else {
+        &P
+    };
     cell.get_or_init(|| rigid::search(paper_placement(), &sweep, solver))
 }
 
@@ -46,7 +50,7 @@ fn every_position_converges_touches_and_does_not_penetrate() {
     // sampled wheel lies within 0.005 mm of the contact point, where the gap grows at most
     // quadratically: 1/2 * 0.2 1/mm * 0.005^2 = 2.5e-6 mm; flank contact with a slope
     // mismatch makes it linear: 0.005 mm * 3 = 0.015 mm).
-    for pos in &paper_sweep(Solver::Default).positions {
+    for pos in &paper_sweep(Solver::default()).positions {
         assert_eq!(pos.stop, Stop::Converged, "y_ws = {}", pos.y_ws);
         assert!(
             pos.residual <= 1e-9,
@@ -91,8 +95,8 @@ fn paper_solver_touches_within_its_tolerance() {
 fn brute_force(y_ws: f64) -> (f64, [f64; 2]) {
     let placement = paper_placement();
     let sides = [
-        SideGap::new(&placement.left, 1.0),
-        SideGap::new(&placement.right, -1.0),
+        SideGap::new(placement.left(), 1.0),
+        SideGap::new(placement.right(), -1.0),
     ];
     let min = |k: usize, roll: f64| -> (f64, f64) {
         let sign = sides[k].sign;
@@ -147,7 +151,7 @@ fn default_solver_agrees_with_brute_force() {
     let shifts = [
         -12.3, -7.7, -3.3, -1.05, 0.0, 0.55, 2.7, 4.4, 5.6, 8.9, 14.2,
     ];
-    let solved = rigid::search(paper_placement(), &shifts, Solver::Default);
+    let solved = rigid::search(paper_placement(), &shifts, Solver::default());
     for pos in &solved.positions {
         let (roll, s) = brute_force(pos.y_ws);
         assert!(
@@ -171,7 +175,7 @@ fn default_solver_agrees_with_brute_force() {
 
 #[test]
 fn known_features_of_s1002_on_uic60_at_1_in_40() {
-    let sweep = paper_sweep(Solver::Default);
+    let sweep = paper_sweep(Solver::default());
     let left_jumps: Vec<_> = sweep
         .jumps
         .iter()
@@ -226,7 +230,7 @@ fn paper_solver_error_against_default_is_bounded() {
     // Measured, not assumed: the paper's tabulated minimum puts the contact point on its
     // 0.1 mm table, so away from the jumps its error is at most half a table step (0.05 mm)
     // plus the motion its 1e-4 mm residual allows; roll error below 1e-6 rad.
-    let d = paper_sweep(Solver::Default);
+    let d = paper_sweep(Solver::default());
     let p = paper_sweep(Solver::Paper);
     let near_jump = |y: f64| d.jumps.iter().any(|j| (y - j.y_from).abs() < 0.15);
     let mut worst_s: f64 = 0.0;
@@ -255,7 +259,7 @@ proptest! {
     fn mirror_symmetry(y in 0.0f64..15.0) {
         // A symmetric scene: results at -y equal those at +y with sides swapped and roll
         // flipped, to 1e-9 (both solves converge to 1e-11 mm residual).
-        let s = rigid::search(paper_placement(), &[-y, y], Solver::Default);
+        let s = rigid::search(paper_placement(), &[-y, y], Solver::default());
         let (m, p) = (&s.positions[0], &s.positions[1]);
         prop_assert!((m.roll + p.roll).abs() < 1e-9);
         prop_assert!((m.axle_height - p.axle_height).abs() < 1e-9);
@@ -281,16 +285,14 @@ fn resampled_placement(step: f64) -> Placement {
         let points = parse_str(&text, ProfileFormat::Csv, p.kind(), "resampled").unwrap();
         Profile::from_points(points, 0.0).unwrap()
     };
-    let layout = paper_placement().layout.clone();
-    let pair = || SidePair {
-        wheel: PlacedWheel::place(sampled(Profile::s1002()), 460.0, &layout).unwrap(),
-        rail: PlacedRail::place(sampled(Profile::uic60e1()), Inclination(0.0), &layout).unwrap(),
+    let layout = paper_placement().layout().clone();
+    let pair = || {
+        SidePair::new(
+            PlacedWheel::place(sampled(Profile::s1002()), 460.0, &layout).unwrap(),
+            PlacedRail::place(sampled(Profile::uic60e1()), Inclination::VERTICAL, &layout).unwrap(),
+        )
     };
-    Placement {
-        layout: layout.clone(),
-        left: pair(),
-        right: pair(),
-    }
+    Placement::new(layout.clone(), pair(), pair()).unwrap()
 }
 
 #[test]
@@ -303,8 +305,8 @@ fn contact_positions_converge_with_profile_resolution() {
     // Measured: 2.5e-3 mm in position; 3.6e-6 rad in roll, growing towards the flange onset
     // where the roll changes by 7e-3 rad per mm of shift (ill-conditioned there).
     let sweep: Vec<f64> = (0..=300).map(|i| -15.0 + 0.1 * f64::from(i)).collect();
-    let exact = paper_sweep(Solver::Default);
-    let resampled = rigid::search(&resampled_placement(0.1), &sweep, Solver::Default);
+    let exact = paper_sweep(Solver::default());
+    let resampled = rigid::search(&resampled_placement(0.1), &sweep, Solver::default());
     let near_jump = |y: f64| exact.jumps.iter().any(|j| (y - j.y_from).abs() < 0.3);
     let mut worst_s: f64 = 0.0;
     let mut worst_roll: f64 = 0.0;

@@ -43,8 +43,9 @@ fn trapezoid_step_at_the_largest_double_is_refused_not_aborted() {
     assert_refused(&o, &["quasi_elastic.max_step_mm", "10 mm"]);
 }
 
-/// The library path of the same abort: `quasi_elastic::search` with the largest step
-/// terminates and gives the same result as the wanted step itself (the fallback).
+/// The library path of the same abort: settings with a step beyond the accepted range are
+/// refused by their constructor, and `quasi_elastic::search` with the largest accepted step
+/// terminates with a patch at every position.
 #[test]
 fn trapezoid_search_with_the_largest_step_terminates() {
     let scene = Scene::from_toml(
@@ -54,13 +55,15 @@ fn trapezoid_search_with_the_largest_step_terminates() {
     )
     .unwrap();
     let placement = wheelrail::pipeline::place(&scene).unwrap();
-    let rigid = wheelrail::rigid::search(&placement, &scene.sweep_mm, scene.rigid_solver);
-    let settings = Settings {
-        quadrature: Quadrature::Trapezoid {
-            max_step_mm: f64::MAX,
-        },
-        ..Settings::default()
+    let rigid = wheelrail::rigid::search(&placement, scene.sweep_mm(), scene.rigid_solver());
+    let huge = Quadrature::Trapezoid {
+        max_step_mm: f64::MAX,
     };
+    assert!(Settings::default().with_quadrature(huge).is_err());
+    let largest = Quadrature::Trapezoid {
+        max_step_mm: wheelrail::quasi_elastic::TRAPEZOID_STEP_RANGE_MM.1,
+    };
+    let settings = Settings::default().with_quadrature(largest).unwrap();
     let q = quasi_elastic::search(&placement, &rigid, &settings);
     assert_eq!(q.positions.len(), 5);
     for p in &q.positions {

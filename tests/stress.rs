@@ -47,7 +47,7 @@ use proptest::prelude::*;
 use std::f64::consts::PI;
 use std::path::Path;
 use wheelrail::gap::{SideGap, SidePose};
-use wheelrail::hertz::{self, Contact, Material, Method, StopReason};
+use wheelrail::hertz::{self, Contact, Material, Method};
 use wheelrail::profile::read::{ProfileFormat, parse_str};
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, Settings};
@@ -165,7 +165,7 @@ proptest! {
         }
         prop_assert!((0.0..1.0).contains(&c.eccentricity), "{c:?}");
         if method == Method::Exact {
-            prop_assert_eq!(c.stop, StopReason::Converged);
+            prop_assert_eq!(c.stop, Stop::Converged);
         }
         // Hertz: the shape depends on A/B only, so 8 P doubles a, b and p0 and quadruples
         // the approach; the only error is the rounding of cbrt and the products (1e-14).
@@ -316,15 +316,18 @@ fn place(
 ) -> Placement {
     let [wl, wr] = wheels;
     let [rl, rr] = rails;
-    let pair = |w: Profile, r: Profile, r0: f64| SidePair {
-        wheel: PlacedWheel::place(w, r0, layout).expect("a wheel"),
-        rail: PlacedRail::place(r, Inclination(0.0), layout).expect("a rail with a gauge point"),
+    let pair = |w: Profile, r: Profile, r0: f64| {
+        SidePair::new(
+            PlacedWheel::place(w, r0, layout).expect("a wheel"),
+            PlacedRail::place(r, Inclination::VERTICAL, layout).expect("a rail with a gauge point"),
+        )
     };
-    Placement {
-        layout: layout.clone(),
-        left: pair(wl, rl, radii_mm[0]),
-        right: pair(wr, rr, radii_mm[1]),
-    }
+    Placement::new(
+        layout.clone(),
+        pair(wl, rl, radii_mm[0]),
+        pair(wr, rr, radii_mm[1]),
+    )
+    .expect("the sides overlap")
 }
 
 /// `count` shifts in `[-reach, reach]` (both ends, 0 and the flange region included).
@@ -359,7 +362,7 @@ const S1002_VALUE_JUMP_MM: f64 = 1.2e-4;
 /// The penetration tolerated on `side`: [`PENETRATION_TOL_MM`], or the value jump of an
 /// analytic profile with joints.
 fn penetration_tol(placement: &Placement, side: Side) -> f64 {
-    if placement.side(side).wheel.profile().joints().is_empty() {
+    if placement.side(side).wheel().profile().joints().is_empty() {
         PENETRATION_TOL_MM
     } else {
         S1002_VALUE_JUMP_MM
@@ -373,7 +376,7 @@ fn gaps(placement: &Placement, side: Side, pos: &Position, step: f64) -> Vec<(f6
     let sign = side.sign();
     let gap = SideGap::new(placement.side(side), sign);
     let pose = SidePose::new(sign, pos.y_ws, pos.roll);
-    let (lo, hi) = placement.side(side).wheel.profile().domain();
+    let (lo, hi) = placement.side(side).wheel().profile().domain();
     let n = ((hi - lo) / step).ceil() as usize;
     (0..=n)
         .filter_map(|i| {
@@ -392,7 +395,8 @@ fn check_rigid(placement: &Placement, sweep: &RigidSweep, context: &str) -> usiz
             continue;
         }
         converged += 1;
-        let radii = [Side::Left, Side::Right].map(|s| placement.side(s).wheel.nominal_radius_mm());
+        let radii =
+            [Side::Left, Side::Right].map(|s| placement.side(s).wheel().nominal_radius_mm());
         let max_roll = MAX_ROLL_RAD + (radii[0] - radii[1]).abs() / 1500.0;
         assert!(
             pos.roll.is_finite() && pos.roll.abs() < max_roll,
@@ -450,7 +454,8 @@ fn check_quasi_elastic(
     for (pos, q) in sweep.positions.iter().zip(&qe.positions) {
         let at = format!(
             "{context}, eps = {} mm, y_ws = {}",
-            settings.epsilon_mm, pos.y_ws
+            settings.epsilon_mm(),
+            pos.y_ws
         );
         assert_eq!(q.rigid_stop, pos.stop, "{at}");
         for side in [Side::Left, Side::Right] {
@@ -467,7 +472,7 @@ fn check_quasi_elastic(
             // is known to 0.01 mm; the rigid point belongs to it (a minimum sharper than the
             // sampling may have no sample below the cut-off).
             let step = 0.01;
-            let limit = settings.cutoff * settings.epsilon_mm;
+            let limit = settings.cutoff() * settings.epsilon_mm();
             let reference = patches
                 .iter()
                 .map(|p| p.gap_above_min)
@@ -517,13 +522,12 @@ fn check_quasi_elastic(
 
 /// Rigid and quasi-elastic checks over `ys`; returns the sweep.
 fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSweep {
-    let sweep = rigid::search(placement, ys, Solver::Default);
+    let sweep = rigid::search(placement, ys, Solver::default());
     assert_eq!(sweep.positions.len(), ys.len(), "{context}");
     check_rigid(placement, &sweep, context);
-    let settings = Settings {
-        epsilon_mm: eps_mm,
-        ..Settings::default()
-    };
+    let settings = Settings::default()
+        .with_epsilon(eps_mm)
+        .expect("eps in range");
     check_quasi_elastic(placement, &sweep, &settings, context);
     sweep
 }

@@ -6,7 +6,7 @@
 use super::{
     DeltaR, EquivalentConicity, Method, equivalent_conicity, supported_default_amplitudes,
 };
-use crate::rigid::{Position, RigidSweep, Stop};
+use crate::rigid::{Position, RigidSweep, contact_angle};
 use crate::track::Side;
 
 pub use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
@@ -224,7 +224,21 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     })
 }
 
-/// The equivalent conicity and parameters of the pair swept by `sweep`.
+/// The equivalent conicity and parameters of the pair swept by `sweep`: its Δr function
+/// (jumps as steps, [`delta_r_of`]), tan γe by both methods at the settings' amplitudes
+/// (mm), and the [`Parameters`] (tan γe at 2, 3 and 4 mm, nonlinearity, flange-contact
+/// shifts, jumps). Amplitudes the sweep cannot support give NaN with their status, not an
+/// error.
+///
+/// # Example
+/// ```
+/// use wheelrail::{conicity, pipeline, rigid, scene::Scene};
+/// let scene = Scene::from_toml("[sweep]\nfrom_mm = -10.0\nto_mm = 10.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
+/// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), scene.sweep_mm(), rigid::Solver::default());
+/// let pair = conicity::assess(&sweep, &conicity::Settings::default());
+/// let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
+/// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
+/// ```
 pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
     let delta_r = delta_r_of(sweep);
     let amplitudes = amplitudes(settings, &delta_r);
@@ -277,15 +291,11 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Para
         flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
         contact_point_jumps: sweep.jumps.len(),
         delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
-        contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM]
-            .map(|y| interpolate(sweep, y, |p| gamma(p, Side::Left) - gamma(p, Side::Right))),
-    }
-}
-
-fn gamma(p: &Position, side: Side) -> f64 {
-    match p.side(side) {
-        Some(c) if p.stop == Stop::Converged => c.gamma,
-        _ => f64::NAN,
+        contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| {
+            interpolate(sweep, y, |p| {
+                contact_angle(p, Side::Left) - contact_angle(p, Side::Right)
+            })
+        }),
     }
 }
 
@@ -323,7 +333,7 @@ mod tests {
         )
         .unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
-        let sweep = search(&placement, &scene.sweep_mm, Solver::Default);
+        let sweep = search(&placement, &scene.sweep_mm, Solver::default());
         for method in [Method::Klingel, Method::Regression] {
             let settings = Settings {
                 method,

@@ -14,7 +14,7 @@
 //! ```
 //!
 //! numbers in shortest round-trip form, `e` the eccentricity, `stop` the solver's
-//! [`StopReason`](super::StopReason) (`converged`, `iteration_cap`, `left_domain`), so that a
+//! [`Stop`](super::Stop) (`converged`, `iteration_cap`, `left_domain`), so that a
 //! non-converged paper solve is visible.
 //!
 //! A non-Hertzian case (`A + B <= 0`, `A <= 0` or `B <= 0`) is a result, not an error: the row

@@ -18,7 +18,7 @@
 //! range Greenwood's start alone is used and Newton takes 3-5 steps. The fit only chooses the
 //! starting point: the accuracy of the result comes from the Newton stop either way.
 
-use super::StopReason;
+use super::Stop;
 use super::elliptic::{Integrals, integrals};
 
 /// Newton stops once a step in `ln g` is at most this. Convergence is quadratic with
@@ -158,7 +158,7 @@ pub(crate) struct Shape {
     /// Newton steps taken (0 for the circle).
     pub iterations: u32,
     /// Why Newton stopped.
-    pub stop: StopReason,
+    pub stop: Stop,
 }
 
 /// Solves `A/B = g² D/D'` for `g`, given `ratio = A/B ∈ [0, 1]` and `ln_ratio = ln(A/B)`
@@ -175,7 +175,7 @@ pub(crate) fn shape(ratio: f64, ln_ratio: f64) -> Shape {
             k: i.k,
             d: i.d,
             iterations: 0,
-            stop: StopReason::Converged,
+            stop: Stop::Converged,
         };
     }
     let mut u = start(ln_ratio);
@@ -199,7 +199,7 @@ pub(crate) fn shape(ratio: f64, ln_ratio: f64) -> Shape {
                 k: k - dp * step,
                 d: d - w * step,
                 iterations,
-                stop: StopReason::Converged,
+                stop: Stop::Converged,
             };
         }
         if iterations >= NEWTON_ITERATION_CAP || !step.is_finite() {
@@ -208,7 +208,7 @@ pub(crate) fn shape(ratio: f64, ln_ratio: f64) -> Shape {
                 k,
                 d,
                 iterations,
-                stop: StopReason::IterationCap,
+                stop: Stop::IterationCap,
             };
         }
         // The root has g ≤ 1; an overshoot past the circle is pulled back onto it.
@@ -229,7 +229,7 @@ mod tests {
         for k in 0..=300 {
             let ln_ratio = -(k as f64) * std::f64::consts::LN_10;
             let s = shape(ln_ratio);
-            assert_eq!(s.stop, StopReason::Converged, "A/B = 1e-{k}");
+            assert_eq!(s.stop, Stop::Converged, "A/B = 1e-{k}");
             // 5: measured maximum, see NEWTON_ITERATION_CAP.
             assert!(s.iterations <= 5, "A/B = 1e-{k}: {} steps", s.iterations);
             assert!(s.g > 0.0 && s.g <= 1.0);

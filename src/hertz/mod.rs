@@ -49,7 +49,7 @@
 //! elongated contacts the fixed point jumps from `e = 0.5` to within 10⁻³ of its limit in two
 //! updates, so the loose `|Δe|` stop is not the limiting factor there. Near the circle the
 //! truncated series make the update leave `0 < e < 1` and the result is flagged
-//! [`StopReason::LeftDomain`], although `b/a` is then within 10⁻³. The exact method is
+//! [`Stop::LeftDomain`], although `b/a` is then within 10⁻³. The exact method is
 //! 1.7-6.4 times faster than the paper's (medians of `cargo bench --bench hertz`: 135-212 ns
 //! per solve against 227-1357 ns for `A/B` from 0.5 to 1e-3; 37 ns against 159 ns at the
 //! circle).
@@ -77,6 +77,9 @@ pub mod sweep;
 
 use std::f64::consts::PI;
 use std::fmt;
+
+/// Why the shape solve stopped (shared with [`crate::rigid`]).
+pub use crate::stop::Stop;
 
 /// An isotropic linear-elastic material.
 ///
@@ -258,30 +261,6 @@ impl fmt::Display for Method {
     }
 }
 
-/// Why an iterative solve stopped. Anything but [`StopReason::Converged`] means the numbers
-/// did not meet the method's own tolerance and should be flagged, not plotted as valid.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum StopReason {
-    /// The step fell below the method's tolerance (or no iteration was needed: the circle).
-    Converged,
-    /// The iteration cap was reached first.
-    IterationCap,
-    /// The paper's fixed-point update would have left `0 < e < 1` or produced a non-finite
-    /// value; the last valid iterate is reported. Happens near the circle with the paper's
-    /// truncated series.
-    LeftDomain,
-}
-
-impl fmt::Display for StopReason {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            StopReason::Converged => "converged",
-            StopReason::IterationCap => "iteration_cap",
-            StopReason::LeftDomain => "left_domain",
-        })
-    }
-}
-
 /// Why a contact is not Hertzian: the gap between the bodies is not a positive-definite
 /// quadratic form, so there is no elliptic contact patch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -334,7 +313,7 @@ pub struct Ellipse {
     /// Iterations of the shape solve (Newton steps or fixed-point updates; 0 for the circle).
     pub iterations: u32,
     /// Why the shape solve stopped.
-    pub stop: StopReason,
+    pub stop: Stop,
     /// The method that produced these numbers.
     pub method: Method,
 }

@@ -16,9 +16,9 @@
 //!
 //! Where an update would leave `0 < e < 1` (it does near the circle, because the truncated
 //! series make `(E - (1 - e²)K)/(K - E)` exceed 1) or produce a non-finite value, the
-//! iteration stops with [`StopReason::LeftDomain`] and keeps the last valid `e`.
+//! iteration stops with [`Stop::LeftDomain`] and keeps the last valid `e`.
 
-use super::StopReason;
+use super::Stop;
 use std::f64::consts::FRAC_PI_2;
 
 /// The paper's thresholds; [`Default`] gives the values the paper states.
@@ -122,7 +122,7 @@ pub struct PaperShape {
     /// Fixed-point updates attempted.
     pub iterations: u32,
     /// Why the iteration stopped.
-    pub stop: StopReason,
+    pub stop: Stop,
 }
 
 /// The paper's fixed-point iteration for the eccentricity at the curvature ratio
@@ -135,10 +135,10 @@ pub struct PaperShape {
 /// # Example
 ///
 /// ```
-/// use wheelrail::hertz::StopReason;
+/// use wheelrail::hertz::Stop;
 /// use wheelrail::hertz::paper::{PaperSettings, eccentricity};
 /// let s = eccentricity(0.1, &PaperSettings::default());
-/// assert_eq!(s.stop, StopReason::Converged);
+/// assert_eq!(s.stop, Stop::Converged);
 /// // The exact b/a at A/B = 0.1 is 0.222250 (mpmath); the paper lands within 3 %.
 /// let g = (1.0 - s.eccentricity * s.eccentricity).sqrt();
 /// assert!((g / 0.222_250 - 1.0).abs() < 0.03);
@@ -151,26 +151,26 @@ pub fn eccentricity(ratio: f64, settings: &PaperSettings) -> PaperShape {
     let mut iterations = 0;
     let stop = loop {
         if iterations >= settings.max_iterations {
-            break StopReason::IterationCap;
+            break Stop::IterationCap;
         }
         iterations += 1;
         let radicand = 1.0 - ratio * (e_int - (1.0 - e * e) * k) / (k - e_int);
         // `!(x > 0 && x < 1)` also catches NaN.
         if !(radicand > 0.0 && radicand < 1.0) {
-            break StopReason::LeftDomain;
+            break Stop::LeftDomain;
         }
         let e_new = radicand.sqrt();
         let k_new = series_k(e_new, tol);
         let e_int_new = series_e(e_new, tol);
         if !(k_new - e_int_new > 0.0 && k_new.is_finite()) {
-            break StopReason::LeftDomain;
+            break Stop::LeftDomain;
         }
         let step = (e_new - e).abs();
         e = e_new;
         k = k_new;
         e_int = e_int_new;
         if step <= settings.step_tol {
-            break StopReason::Converged;
+            break Stop::Converged;
         }
     };
     PaperShape {

@@ -117,7 +117,7 @@ pub fn sweep(
         .map(|(i, p)| {
             let sides = [0, 1].map(|k| {
                 if p.stop != Stop::Converged {
-                    return missing(format!("rigid search: {}", p.stop.name()));
+                    return missing(format!("rigid search: {}", p.stop.status_text()));
                 }
                 // (r, gamma, wheel curvature, rail curvature, weight share, patches)
                 let contact = match settings.source {
@@ -157,7 +157,7 @@ pub fn sweep(
                 let (contact, mut status) = match ellipse(a, b, load, e_star_mpa, settings.method) {
                     Ok(c @ Contact::Hertzian(e)) => {
                         let status = match e.stop {
-                            super::StopReason::Converged => "ok".to_string(),
+                            super::Stop::Converged => "ok".to_string(),
                             other => format!("ellipse: {other}"),
                         };
                         (Some(c), status)

@@ -2,16 +2,17 @@
 //! as bytes. Nothing here touches the file system; [`crate::app`] writes the files.
 //!
 //! To add a figure: a variant in [`crate::pipeline::Figure`] (name, stage), a function in
-//! [`figures`] taking that stage's result, a caption in [`caption`], an arm in [`figure`].
+//! `outputs/figures/` (one file per stage) taking that stage's result, a caption in `caption`,
+//! an arm in [`figure`].
 
-pub mod figures;
+mod figures;
 pub mod fleet;
+mod page;
 pub mod tables;
 
 use crate::Error;
 use crate::pipeline::{Figure, Results};
-use crate::profile::read::sha256_hex;
-use crate::report::{self, FigureEntry, ReportPage, Table, TableEntry};
+use crate::report::{self, FigureEntry, Table};
 use crate::scene::{ImageFormat, Scene};
 use crate::track::Side;
 
@@ -193,7 +194,7 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
 }
 
 /// The caption of a figure in the report.
-pub fn caption(fig: Figure, scene: &Scene) -> String {
+pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
     match fig {
         Figure::Profiles => "Paper Fig. 1: wheel and rail of the left side in their placed positions (centred wheelset resting on the rail, no roll), track frame.".into(),
         Figure::Conicity => "Paper Fig. 1: tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position; the wheel is broken at its section joints. The y axis runs over contact angles from -45° to 74° (tan γ from -1 to 3.5); triangles at the frame mark where the flange back's vertical face and the rail's flanks leave it.".into(),
@@ -269,194 +270,12 @@ pub fn render(
         entries.push(entry);
     }
     entries.extend_from_slice(extra);
-    let page = report_page(scene, results, &tables, entries);
+    let page = page::report_page(scene, results, &tables, entries);
     files.push(OutputFile {
         name: "index.html".into(),
         bytes: report::render_html(&page).into_bytes(),
     });
     Ok(files)
-}
-
-fn report_page(
-    scene: &Scene,
-    results: &Results,
-    tables: &[NamedTable],
-    figures: Vec<FigureEntry>,
-) -> ReportPage {
-    // The stages, not their times: the page is reproducible (`--timings` prints the times).
-    let mut summary = vec![format!(
-        "Stages run: {}.",
-        results
-            .record
-            .stages
-            .iter()
-            .map(|(s, _)| s.name())
-            .collect::<Vec<_>>()
-            .join(", ")
-    )];
-    let mut notes = Vec::new();
-    if let Some(r) = &results.rigid {
-        let bad: Vec<String> = r
-            .positions
-            .iter()
-            .filter(|p| p.stop != crate::rigid::Stop::Converged)
-            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.name()))
-            .collect();
-        if bad.is_empty() {
-            summary.push(format!(
-                "Rigid search ({} solver): all {} positions converged; {} contact-point jumps.",
-                r.solver.name(),
-                r.positions.len(),
-                r.jumps.len()
-            ));
-        } else {
-            notes.push(format!(
-                "Rigid positions not converged (left out of the figures): {}.",
-                bad.join(", ")
-            ));
-        }
-        for (y, label) in figures::flange_onsets(r) {
-            summary.push(format!("{label} from y_ws = {y} mm."));
-        }
-    }
-    if let Some(h) = &results.hertz {
-        let flagged = h
-            .iter()
-            .flat_map(|p| p.sides.iter())
-            .filter(|s| s.status != "ok")
-            .count();
-        if flagged > 0 {
-            notes.push(format!("{flagged} wheel contacts carry a Hertz status other than ok (see the status columns of hertz.csv)."));
-        }
-        summary.push(format!(
-            "Hertz: {} method, {} contact, normal load {}.",
-            scene.hertz.method,
-            scene.hertz.source.name(),
-            scene.hertz.normal_load.name()
-        ));
-    }
-    let l = &scene.layout;
-    let parameters = vec![
-        ("scene".into(), scene.path.clone()),
-        ("gauge_mm".into(), l.gauge_mm.to_string()),
-        (
-            "gauge_point_depth_mm".into(),
-            l.gauge_point_depth_mm.to_string(),
-        ),
-        (
-            "rail inclination (rad)".into(),
-            format!("{:.7}", l.inclination.0),
-        ),
-        ("flange_back_mm".into(), l.flange_back_mm.to_string()),
-        (
-            "nominal_radius_mm (left, right)".into(),
-            format!(
-                "{}, {}",
-                scene.nominal_radius_mm[0], scene.nominal_radius_mm[1]
-            ),
-        ),
-        (
-            "wheel_load_kN".into(),
-            (scene.wheel_load_n / 1000.0).to_string(),
-        ),
-        (
-            "E (GPa) and nu, wheel".into(),
-            format!(
-                "{}, {}",
-                scene.wheel_material.young_mpa / 1000.0,
-                scene.wheel_material.poisson
-            ),
-        ),
-        (
-            "E (GPa) and nu, rail".into(),
-            format!(
-                "{}, {}",
-                scene.rail_material.young_mpa / 1000.0,
-                scene.rail_material.poisson
-            ),
-        ),
-        (
-            "sweep (mm)".into(),
-            format!(
-                "{} to {}, {} positions",
-                scene.sweep_mm.first().copied().unwrap_or(f64::NAN),
-                scene.sweep_mm.last().copied().unwrap_or(f64::NAN),
-                scene.sweep_mm.len()
-            ),
-        ),
-        ("rigid solver".into(), scene.rigid_solver.name().into()),
-        (
-            "quasi-elastic eps (mm)".into(),
-            scene.quasi_elastic.epsilon_mm.to_string(),
-        ),
-    ];
-    let p = &results.placement;
-    let profile_row = |label: &str, profile: &crate::profile::Profile| -> (String, String) {
-        let hash = match profile.source() {
-            crate::profile::Source::File { sha256, .. } => sha256.clone(),
-            crate::profile::Source::Definition(_) => {
-                // Built-in: the hash of its sampled table, which changes with the definition.
-                let rows = profile.sample(tables::PROFILE_TABLE_STEP_MM);
-                let text: String = rows
-                    .iter()
-                    .map(|r| format!("{:.12e},{:.12e}\n", r[0], r[1]))
-                    .collect();
-                format!("{} (of the sampled profile)", sha256_hex(text.as_bytes()))
-            }
-        };
-        (
-            label.to_string(),
-            format!("{} — sha256 {hash}", profile.source()),
-        )
-    };
-    let provenance = vec![
-        (
-            "wheelrail".into(),
-            format!("version {}", env!("CARGO_PKG_VERSION")),
-        ),
-        profile_row("left wheel", p.left.wheel.profile()),
-        profile_row("right wheel", p.right.wheel.profile()),
-        profile_row("left rail", p.left.rail.profile()),
-        profile_row("right rail", p.right.rail.profile()),
-        (
-            "conventions".into(),
-            "mm, N, MPa, rad; track frame y left, z up; see every CSV header".into(),
-        ),
-    ];
-    let key_results = results.conicity.as_ref().map_or_else(Vec::new, |c| {
-        c.parameters
-            .rows()
-            .into_iter()
-            .map(|r| {
-                let value = if r.value.is_nan() {
-                    "—".to_string()
-                } else if r.unit == "count" {
-                    format!("{}", r.value)
-                } else {
-                    format!("{:.4}", r.value)
-                };
-                [r.name.to_string(), value, r.unit.to_string(), r.definition]
-            })
-            .collect()
-    });
-    ReportPage {
-        title: scene.title.clone(),
-        key_results,
-        summary,
-        parameters,
-        provenance,
-        figures,
-        tables: tables
-            .iter()
-            .map(|t| TableEntry {
-                name: t.file.trim_end_matches(".csv").to_string(),
-                file: t.file.clone(),
-                description: t.description.clone(),
-            })
-            .collect(),
-        data_tables: Vec::new(),
-        notes,
-    }
 }
 
 /// The tradeoff study's files: `tradeoff.csv` and its chart in `formats`, and the page entry

@@ -2,10 +2,11 @@
 //! comment lines above the header, and every column name carries its unit.
 
 use crate::conicity::pair::ParameterRow;
+use crate::gap::ContactPoint;
 use crate::hertz::accuracy::HertzAccuracy;
 use crate::pipeline::EpsilonSweeps;
 use crate::quasi_elastic::QuasiElasticSweep;
-use crate::report::{Table, TableError};
+use crate::report::{Table, TableBuilder, TableError};
 use crate::rigid::{RigidSweep, Stop};
 use crate::track::{PlacedRail, PlacedWheel, Side};
 
@@ -135,7 +136,6 @@ const NO_CENTRED_CONTACT: &str = "; no contact at y_ws = 0: z_ws, epsilon, sigma
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
-    let n = sweep.positions.len();
     let l0 = sweep.l0_mm();
     // Without a contact on both wheels of the centred wheelset (very unequal radii, say)
     // z_ws and l0 have no reference: their columns are NaN and the status says so.
@@ -150,61 +150,14 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
         .numeric("roll_rad", converged(sweep, |p| p.roll))
         .numeric("z_ws_mm", converged(sweep, |p| sweep.z_ws(p)));
     for side in [Side::Left, Side::Right] {
-        let name = side.name();
-        let get = |f: &dyn Fn(&crate::rigid::SideContact) -> f64| -> Vec<f64> {
-            sweep
-                .positions
-                .iter()
-                .map(|p| match p.side(side) {
-                    Some(c) if p.stop == Stop::Converged => f(c),
-                    _ => f64::NAN,
-                })
-                .collect()
-        };
-        t = t
-            .numeric(format!("{name}_s_mm"), get(&|c| c.s))
-            .numeric(format!("{name}_y_mm"), get(&|c| c.y))
-            .numeric(format!("{name}_z_mm"), get(&|c| c.z))
-            .numeric(format!("{name}_r_mm"), get(&|c| c.r))
-            .numeric(format!("{name}_gamma_rad"), get(&|c| c.gamma))
-            .numeric(format!("{name}_rail_tan_gamma"), get(&|c| c.rail_tan_gamma))
-            .numeric(
-                format!("{name}_wheel_curvature_per_mm"),
-                get(&|c| c.wheel_curvature),
-            )
-            .numeric(
-                format!("{name}_rail_curvature_per_mm"),
-                get(&|c| c.rail_curvature),
-            )
-            .numeric(
-                format!("{name}_second_s_mm"),
-                get(&|c| c.second.map_or(f64::NAN, |s| s.0)),
-            )
-            .numeric(
-                format!("{name}_jump_after"),
-                (0..n)
-                    .map(|i| {
-                        let y0 = sweep.positions[i].y_ws;
-                        let y1 = sweep.positions.get(i + 1).map_or(f64::INFINITY, |p| p.y_ws);
-                        let jumps = sweep
-                            .jumps
-                            .iter()
-                            .any(|j| j.side == side && j.y_from >= y0 && j.y_to <= y1);
-                        if jumps { 1.0 } else { 0.0 }
-                    })
-                    .collect::<Vec<_>>(),
-            );
+        t = rigid_side_columns(t, sweep, side);
     }
-    let wickens: Vec<_> = sweep.positions.iter().map(|p| sweep.wickens(p)).collect();
-    t = t
-        .numeric(
-            "delta_r_mm",
-            sweep
-                .positions
-                .iter()
-                .map(|p| p.delta_r())
-                .collect::<Vec<_>>(),
-        )
+    let positions = &sweep.positions;
+    let wickens: Vec<_> = positions.iter().map(|p| sweep.wickens(p)).collect();
+    let column = |f: &dyn Fn(&crate::rigid::Position) -> f64| -> Vec<f64> {
+        positions.iter().map(f).collect()
+    };
+    t.numeric("delta_r_mm", column(&|p| p.delta_r()))
         .numeric(
             "lambda",
             wickens.iter().map(|w| w.lambda).collect::<Vec<_>>(),
@@ -214,40 +167,106 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
             wickens.iter().map(|w| w.epsilon).collect::<Vec<_>>(),
         )
         .numeric("sigma", wickens.iter().map(|w| w.sigma).collect::<Vec<_>>())
-        .numeric(
-            "iterations",
-            sweep
-                .positions
-                .iter()
-                .map(|p| p.iterations as f64)
-                .collect::<Vec<_>>(),
-        )
-        .numeric(
-            "residual_mm",
-            sweep
-                .positions
-                .iter()
-                .map(|p| p.residual)
-                .collect::<Vec<_>>(),
-        )
+        .numeric("iterations", column(&|p| p.iterations as f64))
+        .numeric("residual_mm", column(&|p| p.residual))
         .text(
             "status",
-            sweep.positions.iter().map(|p| {
-                let mut s = p.stop.name().to_string();
-                for (k, side) in ["left", "right"].iter().enumerate() {
-                    if p.contact[k].is_some_and(|c| c.second.is_some()) {
-                        s.push_str(&format!("; two-point contact {side}"));
-                    }
-                }
-                if p.y_ws.abs() < crate::rigid::WICKENS_CENTRE_MM {
-                    s.push_str("; y_ws = 0: lambda, epsilon, sigma undefined");
-                } else if p.stop == Stop::Converged && !centred_reference {
-                    s.push_str(NO_CENTRED_CONTACT);
-                }
-                s
-            }),
+            positions.iter().map(|p| rigid_status(p, centred_reference)),
+        )
+        .build()
+}
+
+/// The columns of one wheel in `rigid.csv`: its contact point (with the rail's contact
+/// angle), the second contact point and the jump flag.
+fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableBuilder {
+    let name = side.name();
+    let contact = |p: &crate::rigid::Position| match p.side(side) {
+        Some(c) if p.stop == Stop::Converged => Some(*c),
+        _ => None,
+    };
+    let points: Vec<ContactPoint> = sweep
+        .positions
+        .iter()
+        .map(|p| contact(p).map_or(ContactPoint::NAN, |c| c.point()))
+        .collect();
+    let jump_after = (0..sweep.positions.len()).map(|i| {
+        let y0 = sweep.positions[i].y_ws;
+        let y1 = sweep.positions.get(i + 1).map_or(f64::INFINITY, |p| p.y_ws);
+        let jumps = sweep
+            .jumps
+            .iter()
+            .any(|j| j.side == side && j.y_from >= y0 && j.y_to <= y1);
+        if jumps { 1.0 } else { 0.0 }
+    });
+    contact_columns(t, side, &points, RailSlopeColumn::Written)
+        .numeric(
+            format!("{name}_second_s_mm"),
+            sweep
+                .positions
+                .iter()
+                .map(|p| contact(p).and_then(|c| c.second).map_or(f64::NAN, |s| s.0))
+                .collect::<Vec<_>>(),
+        )
+        .numeric(format!("{name}_jump_after"), jump_after.collect::<Vec<_>>())
+}
+
+/// The `status` of one position in `rigid.csv`: the stop reason in words, two-point
+/// contacts, and why Wickens' parameters are undefined where they are.
+fn rigid_status(p: &crate::rigid::Position, centred_reference: bool) -> String {
+    let mut s = p.stop.status_text().to_string();
+    for (k, side) in ["left", "right"].iter().enumerate() {
+        if p.contact[k].is_some_and(|c| c.second.is_some()) {
+            s.push_str(&format!("; two-point contact {side}"));
+        }
+    }
+    if p.y_ws.abs() < crate::rigid::WICKENS_CENTRE_MM {
+        s.push_str("; y_ws = 0: lambda, epsilon, sigma undefined");
+    } else if p.stop == Stop::Converged && !centred_reference {
+        s.push_str(NO_CENTRED_CONTACT);
+    }
+    s
+}
+
+/// Whether [`contact_columns`] writes the rail's contact angle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum RailSlopeColumn {
+    /// `{side}_rail_tan_gamma` after `gamma_rad` (`rigid.csv`).
+    Written,
+    /// Not written (`quasi_elastic.csv`).
+    Omitted,
+}
+
+/// The contact-point columns of one wheel, one row per point (NaN rows where there is no
+/// contact): `{side}_s_mm, _y_mm, _z_mm, _r_mm, _gamma_rad`, then `_rail_tan_gamma` where
+/// written, then `_wheel_curvature_per_mm, _rail_curvature_per_mm`.
+fn contact_columns(
+    t: TableBuilder,
+    side: Side,
+    points: &[ContactPoint],
+    rail_slope: RailSlopeColumn,
+) -> TableBuilder {
+    let name = side.name();
+    let column = |f: fn(&ContactPoint) -> f64| points.iter().map(f).collect::<Vec<_>>();
+    let mut t = t
+        .numeric(format!("{name}_s_mm"), column(|c| c.s))
+        .numeric(format!("{name}_y_mm"), column(|c| c.y))
+        .numeric(format!("{name}_z_mm"), column(|c| c.z))
+        .numeric(format!("{name}_r_mm"), column(|c| c.r))
+        .numeric(format!("{name}_gamma_rad"), column(|c| c.gamma));
+    if rail_slope == RailSlopeColumn::Written {
+        t = t.numeric(
+            format!("{name}_rail_tan_gamma"),
+            column(|c| c.rail_tan_gamma),
         );
-    t.build()
+    }
+    t.numeric(
+        format!("{name}_wheel_curvature_per_mm"),
+        column(|c| c.wheel_curvature),
+    )
+    .numeric(
+        format!("{name}_rail_curvature_per_mm"),
+        column(|c| c.rail_curvature),
+    )
 }
 
 fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::Position) -> f64) -> Vec<f64> {
@@ -312,20 +331,12 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
                 .map(|p| p.side(side).second().map_or(f64::NAN, f))
                 .collect()
         };
-        t = t
-            .numeric(format!("{name}_s_mm"), main(&|c| c.s))
-            .numeric(format!("{name}_y_mm"), main(&|c| c.y))
-            .numeric(format!("{name}_z_mm"), main(&|c| c.z))
-            .numeric(format!("{name}_r_mm"), main(&|c| c.r))
-            .numeric(format!("{name}_gamma_rad"), main(&|c| c.gamma))
-            .numeric(
-                format!("{name}_wheel_curvature_per_mm"),
-                main(&|c| c.wheel_curvature),
-            )
-            .numeric(
-                format!("{name}_rail_curvature_per_mm"),
-                main(&|c| c.rail_curvature),
-            )
+        let points: Vec<ContactPoint> = q
+            .positions
+            .iter()
+            .map(|p| p.side(side).main().map_or(ContactPoint::NAN, |c| c.point()))
+            .collect();
+        t = contact_columns(t, side, &points, RailSlopeColumn::Omitted)
             .numeric(format!("{name}_weight_share"), main(&|c| c.weight_share))
             .numeric(
                 format!("{name}_patches"),
@@ -358,7 +369,7 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
                 .map(Side::name)
                 .collect();
             if p.rigid_stop != Stop::Converged {
-                format!("rigid search: {}", p.rigid_stop.name())
+                format!("rigid search: {}", p.rigid_stop.status_text())
             } else if !missing.is_empty() {
                 format!(
                     "no patch: {} (wheel not above its rail)",
@@ -403,7 +414,7 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
     }
     let status = rigid.positions.iter().enumerate().map(|(i, p)| {
         if p.stop != Stop::Converged {
-            return format!("rigid search: {}", p.stop.name());
+            return format!("rigid search: {}", p.stop.status_text());
         }
         let missing: Vec<String> = e
             .runs

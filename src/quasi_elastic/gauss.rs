@@ -1,7 +1,7 @@
 //! The Gauss-Legendre integration of the weighted averages over one low region: panels of
 //! a few weight widths on the smooth pieces between joints, 8 nodes (4 on short pieces).
 
-use super::{Average, BARRIER_EPS, FIELDS, Settings, Work, barrier_maxima, fields_of};
+use super::{Average, BARRIER_EPS, FIELDS, Pass, Work, barrier_maxima, fields_of};
 use crate::gap::{SideGap, SidePose};
 
 /// Nodes of the 8-point Gauss-Legendre rule on [-1, 1] (positive half; symmetric).
@@ -41,19 +41,22 @@ const WIDTH_BOUNDS_MM: (f64, f64) = (1e-3, 1.0);
 /// The barriers are found from the gaps at the quadrature nodes themselves (8 per panel of
 /// 3 weight widths by default): most regions have none, and are integrated once. A region with a barrier
 /// is integrated again with the refined barriers as patch boundaries.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn gauss_region(
-    side: &SideGap,
-    pose: &SidePose,
-    axle_height: f64,
-    d_min: f64,
-    width: f64,
-    settings: &Settings,
+    pass: &Pass,
     panel_widths: f64,
     (lo, hi): (f64, f64),
     work: &mut Work,
     patches: &mut Vec<Average<FIELDS>>,
 ) {
+    let Pass {
+        side,
+        pose,
+        axle_height,
+        d_min,
+        width,
+        settings,
+    } = *pass;
+    let pose = &pose;
     let eps = settings.epsilon_mm;
     let width = width.clamp(WIDTH_BOUNDS_MM.0, WIDTH_BOUNDS_MM.1);
     // Breaks: (s, separates patches).

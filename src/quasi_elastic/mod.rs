@@ -23,85 +23,25 @@
 //! * Separate low regions of the gap (tread and flange) are averaged separately: one
 //!   [`Patch`] per local minimum, split where a barrier higher than `eps` separates minima.
 
-use crate::gap::{SideGap, SidePose};
+use crate::gap::{ContactPoint, SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
 use crate::track::{Placement, Side};
 
-/// Default regularisation parameter (mm): the paper's 1e-5 m.
-pub const DEFAULT_EPSILON_MM: f64 = 0.01;
-/// Integrals stop where `(d - d_min) / eps` exceeds this. For a quadratic gap the weight left
-/// out is `erfc(sqrt(25)) = 1.6e-12` of the total, and the integration regions are 18 %
-/// shorter than at 37. On the paper scene the default's error in a and b (2.3e-8 against
-/// the tradeoff study's reference) is the panels'; cut-offs of 15 and 37 give 4e-7 and
-/// 5e-8 (`wheelrail tradeoff`).
-pub const DEFAULT_CUTOFF: f64 = 25.0;
-/// Default panel length of the Gauss-Legendre quadrature in weight widths `sqrt(eps / d'')`.
-/// On the paper scene, against panels of half a width (`wheelrail tradeoff`): a and b err by
-/// 2.3e-8 relative at 3 widths, 1.3e-8 at 2 (17 % slower), 2.9e-7 at 4 (8 % faster).
-pub const DEFAULT_PANEL_WIDTHS: f64 = 3.0;
-/// Largest step of the trapezoid variant in the wheel coordinate (mm).
-pub const DEFAULT_MAX_STEP_MM: f64 = 0.05;
+mod settings;
+
+pub use settings::{
+    CUTOFF_RANGE, DEFAULT_CUTOFF, DEFAULT_EPSILON_MM, DEFAULT_MAX_STEP_MM, DEFAULT_PANEL_WIDTHS,
+    EPSILON_RANGE_MM, PANEL_WIDTHS_RANGE, Quadrature, Settings, SettingsError,
+    TRAPEZOID_STEP_RANGE_MM,
+};
+
 /// Trapezoid steps per weight width `sqrt(eps / d'')` at the rigid contact point.
-const TRAPEZOID_STEPS_PER_WIDTH: f64 = 8.0;
+pub(crate) const TRAPEZOID_STEPS_PER_WIDTH: f64 = 8.0;
 /// Smallest quadrature step wanted (mm): bounds the cost where `eps / d''` is tiny.
-const MIN_STEP_MM: f64 = 1e-4;
+pub(crate) const MIN_STEP_MM: f64 = 1e-4;
 /// Local minima of the gap separated by a barrier lower than `BARRIER_EPS * eps` above the
 /// higher of the two belong to one patch: the weight barely dips between them.
 const BARRIER_EPS: f64 = 1.0;
-
-/// How the weighted integrals are evaluated.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Quadrature {
-    /// 8-point Gauss-Legendre panels on each smooth piece of the integrand: the pieces end
-    /// at the wheel's and the rail's section joints (where curvatures jump) and at the
-    /// barriers between patches. Default.
-    GaussLegendre {
-        /// Panel length in weight widths `sqrt(eps / d'')` ([`DEFAULT_PANEL_WIDTHS`]).
-        panel_widths: f64,
-    },
-    /// Trapezoid sums on a fixed grid in `s`, the step halved from `max_step_mm` until it
-    /// resolves the weight's width (the paper's kind of quadrature on tabulated data): only
-    /// first order where a curvature jumps inside the patch.
-    Trapezoid {
-        /// Largest step (mm).
-        max_step_mm: f64,
-    },
-}
-
-impl Quadrature {
-    /// Name used in scene files and tables.
-    pub fn name(self) -> String {
-        match self {
-            Quadrature::GaussLegendre { panel_widths } => {
-                format!("gauss_legendre {panel_widths} widths")
-            }
-            Quadrature::Trapezoid { max_step_mm } => format!("trapezoid {max_step_mm} mm"),
-        }
-    }
-}
-
-/// Settings of the quasi-elastic search.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Settings {
-    /// Regularisation parameter `eps` (mm).
-    pub epsilon_mm: f64,
-    /// Cut-off of the weight, in units of `eps`.
-    pub cutoff: f64,
-    /// Quadrature.
-    pub quadrature: Quadrature,
-}
-
-impl Default for Settings {
-    fn default() -> Settings {
-        Settings {
-            epsilon_mm: DEFAULT_EPSILON_MM,
-            cutoff: DEFAULT_CUTOFF,
-            quadrature: Quadrature::GaussLegendre {
-                panel_widths: DEFAULT_PANEL_WIDTHS,
-            },
-        }
-    }
-}
 
 /// The weighted average of one patch (one local minimum of the gap).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -129,6 +69,20 @@ pub struct Patch {
 }
 
 impl Patch {
+    /// The averaged contact point: the columns shared with the rigid contact.
+    pub fn point(&self) -> ContactPoint {
+        ContactPoint {
+            s: self.s,
+            y: self.y,
+            z: self.z,
+            r: self.r,
+            gamma: self.gamma,
+            rail_tan_gamma: self.rail_tan_gamma,
+            wheel_curvature: self.wheel_curvature,
+            rail_curvature: self.rail_curvature,
+        }
+    }
+
     /// Whether every number of the patch is finite.
     pub fn is_finite(&self) -> bool {
         [
@@ -203,7 +157,7 @@ pub struct QuasiElasticSweep {
 /// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::Default);
+/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::default());
 /// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 /// let patch = qe.positions[0].sides[0].main().unwrap();
 /// // Averaging moves the contact point, but stays on the tread near the rigid point.
@@ -279,6 +233,23 @@ fn fields_of(side: &SideGap, p: &crate::gap::GapPoint) -> [f64; FIELDS] {
     ]
 }
 
+/// One wheel's averaging pass at one position: its gap and pose, the reference the gaps
+/// are measured from, and the weight's width there.
+#[derive(Clone, Copy)]
+struct Pass<'a> {
+    side: &'a SideGap<'a>,
+    pose: SidePose,
+    /// Axle height of the rigid solution (mm): `d = g + axle_height`.
+    axle_height: f64,
+    /// The gap the weights are measured from (mm): the rigid minimum of this wheel.
+    d_min: f64,
+    /// The distance over which the gap rises by eps at the rigid point (mm).
+    width: f64,
+    settings: &'a Settings,
+}
+
+/// The patches of one wheel at one position, heaviest first: the weighted averages over
+/// the low regions of the gap around the rigid contact point `s_rigid`.
 fn side_average(
     side: &SideGap,
     y_ws: f64,
@@ -293,9 +264,6 @@ fn side_average(
     let Some(at_rigid) = side.at(s_rigid, &pose) else {
         return SideResult::default();
     };
-    // Gaps are measured from the rigid minimum of this wheel: one reference for every
-    // region and patch, so that their weights compare.
-    let mut d_min = at_rigid.g + axle_height;
     // The distance over which the gap rises by eps: sqrt(eps / d'') at a smooth minimum,
     // eps / |d'| at a minimum on an end of the surfaces (the rail's running surface ends
     // where it turns steep), where the gap rises linearly and the weight decays within
@@ -311,80 +279,18 @@ fn side_average(
         at_rigid.g + limit + crate::gap::COARSE_MARGIN_MM,
         &mut work.regions,
     );
-    let domain = side.wheel().profile().domain();
-    include_rigid_point(&mut work.regions, s_rigid, domain);
-    let mut patches: Vec<Average<FIELDS>> = Vec::new();
-    let regions = std::mem::take(&mut work.regions);
-    // A rigid point that is not the minimum (the paper's solver stops at residuals of
-    // microns) leaves nodes below the reference; with a small eps their weights
-    // exp(-gap/eps) overflow. Then the pass is repeated from the lowest node (the regions,
-    // found from the rigid reference, hold every node below the cut-off of the lower one).
-    for _reference in 0..2 {
-        patches.clear();
-        for &(lo, hi) in &regions {
-            match settings.quadrature {
-                Quadrature::GaussLegendre { panel_widths } => {
-                    gauss_region(
-                        side,
-                        &pose,
-                        axle_height,
-                        d_min,
-                        width,
-                        settings,
-                        panel_widths,
-                        (lo, hi),
-                        work,
-                        &mut patches,
-                    );
-                }
-                Quadrature::Trapezoid { max_step_mm } => {
-                    // The step is the largest step halved until it resolves the width, and the
-                    // nodes are its multiples: a fixed grid, the same on both sides of a
-                    // symmetric wheelset.
-                    let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
-                    let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
-                    let step = max_step_mm / halvings.exp2();
-                    // Above about 5e307 mm the halvings overflow 2^1023 and the step would be 0
-                    // (an endless grid); the scene refuses such steps, library callers get the
-                    // wanted step itself.
-                    let step = if step.is_normal() { step } else { wanted };
-                    work.nodes.clear();
-                    work.gaps.clear();
-                    work.fields.clear();
-                    let k_lo = (lo / step).floor() as i64;
-                    let k_hi = (hi / step).ceil() as i64;
-                    for k in k_lo..=k_hi {
-                        let s = k as f64 * step;
-                        // The grid is rounded outwards; beyond its domain the profile is clamped
-                        // and a node there would be a phantom point of the wheel.
-                        if !(domain.0..=domain.1).contains(&s) {
-                            continue;
-                        }
-                        let Some(p) = side.at(s, &pose) else { continue };
-                        work.nodes.push(s);
-                        work.gaps.push(p.g + axle_height - d_min);
-                        work.fields.push(fields_of(side, &p));
-                    }
-                    patches.extend(average(
-                        &work.nodes,
-                        &work.gaps,
-                        &work.fields,
-                        eps,
-                        settings.cutoff,
-                    ));
-                }
-            }
-        }
-        let lowest = patches
-            .iter()
-            .map(|a| a.min_gap)
-            .fold(f64::INFINITY, f64::min);
-        if patches.iter().all(Average::is_finite) || lowest >= 0.0 {
-            break;
-        }
-        d_min += lowest;
-    }
-    work.regions = regions;
+    include_rigid_point(&mut work.regions, s_rigid, side.wheel().profile().domain());
+    // Gaps are measured from the rigid minimum of this wheel: one reference for every
+    // region and patch, so that their weights compare.
+    let pass = Pass {
+        side,
+        pose,
+        axle_height,
+        d_min: at_rigid.g + axle_height,
+        width,
+        settings,
+    };
+    let mut patches = average_regions(pass, work);
     if patches.iter().all(|a| a.weight <= 0.0) {
         // The weight is narrower than any node spacing (a minimum at a vertical end of the
         // profile, or eps far below the gap's curvature): the average tends to the value at
@@ -395,10 +301,101 @@ fn side_average(
             min_gap: 0.0,
         }];
     }
-    let total_weight: f64 = patches.iter().map(|a| a.weight).sum();
+    patches_of(side, roll, &patches)
+}
+
+/// The averages over every low region in `work.regions`, split into patches.
+///
+/// A rigid point that is not the minimum (the paper's solver stops at residuals of
+/// microns) leaves nodes below the reference; with a small eps their weights
+/// exp(-gap/eps) overflow. Then the pass is repeated from the lowest node (the regions,
+/// found from the rigid reference, hold every node below the cut-off of the lower one).
+fn average_regions(mut pass: Pass, work: &mut Work) -> Vec<Average<FIELDS>> {
+    let mut patches: Vec<Average<FIELDS>> = Vec::new();
+    let regions = std::mem::take(&mut work.regions);
+    for _reference in 0..2 {
+        patches.clear();
+        for &region in &regions {
+            match pass.settings.quadrature {
+                Quadrature::GaussLegendre { panel_widths } => {
+                    gauss_region(&pass, panel_widths, region, work, &mut patches);
+                }
+                Quadrature::Trapezoid { max_step_mm } => {
+                    trapezoid_region(&pass, max_step_mm, region, work, &mut patches);
+                }
+            }
+        }
+        let lowest = patches
+            .iter()
+            .map(|a| a.min_gap)
+            .fold(f64::INFINITY, f64::min);
+        if patches.iter().all(Average::is_finite) || lowest >= 0.0 {
+            break;
+        }
+        pass.d_min += lowest;
+    }
+    work.regions = regions;
+    patches
+}
+
+/// The trapezoid variant on one region `(lo, hi)`: nodes on a fixed grid, averaged by
+/// [`average`].
+fn trapezoid_region(
+    pass: &Pass,
+    max_step_mm: f64,
+    (lo, hi): (f64, f64),
+    work: &mut Work,
+    patches: &mut Vec<Average<FIELDS>>,
+) {
+    let Pass {
+        side,
+        pose,
+        axle_height,
+        d_min,
+        width,
+        settings,
+    } = *pass;
+    let domain = side.wheel().profile().domain();
+    // The step is the largest step halved until it resolves the width, and the nodes are
+    // its multiples: a fixed grid, the same on both sides of a symmetric wheelset.
+    let wanted = (width / TRAPEZOID_STEPS_PER_WIDTH).max(MIN_STEP_MM);
+    let halvings = (max_step_mm / wanted).log2().ceil().max(0.0);
+    let step = max_step_mm / halvings.exp2();
+    // Above about 5e307 mm the halvings overflow 2^1023 and the step would be 0 (an endless
+    // grid); the scene refuses such steps, library callers get the wanted step itself.
+    let step = if step.is_normal() { step } else { wanted };
+    work.nodes.clear();
+    work.gaps.clear();
+    work.fields.clear();
+    let k_lo = (lo / step).floor() as i64;
+    let k_hi = (hi / step).ceil() as i64;
+    for k in k_lo..=k_hi {
+        let s = k as f64 * step;
+        // The grid is rounded outwards; beyond its domain the profile is clamped and a node
+        // there would be a phantom point of the wheel.
+        if !(domain.0..=domain.1).contains(&s) {
+            continue;
+        }
+        let Some(p) = side.at(s, &pose) else { continue };
+        work.nodes.push(s);
+        work.gaps.push(p.g + axle_height - d_min);
+        work.fields.push(fields_of(side, &p));
+    }
+    patches.extend(average(
+        &work.nodes,
+        &work.gaps,
+        &work.fields,
+        settings.epsilon_mm,
+        settings.cutoff,
+    ));
+}
+
+/// The patches of the averages `a` (those with weight), heaviest first.
+fn patches_of(side: &SideGap, roll: f64, averages: &[Average<FIELDS>]) -> SideResult {
+    let total_weight: f64 = averages.iter().map(|a| a.weight).sum();
     let r0 = side.wheel().nominal_radius_mm();
     let phi = side.sign * roll;
-    let mut out: Vec<Patch> = patches
+    let mut out: Vec<Patch> = averages
         .iter()
         .filter(|a| a.weight > 0.0)
         .map(|a| {

@@ -231,15 +231,7 @@ fn key_value_table(out: &mut String, (key, value): (&str, &str), rows: &[(String
 
 /// Escapes `&`, `<`, `>`, `"` and `'` so that `text` is safe in element content and in quoted
 /// attribute values.
-///
-/// # Examples
-///
-/// ```
-/// use wheelrail::report::html::escape_html;
-///
-/// assert_eq!(escape_html(r#"<a href="x">'&'</a>"#), "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;");
-/// ```
-pub fn escape_html(text: &str) -> String {
+fn escape_html(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
@@ -300,6 +292,14 @@ mod tests {
             "javascript%3Aalert%281%29"
         );
         assert_eq!(encode_path("sub/dir/é.png"), "sub/dir/%C3%A9.png");
+    }
+
+    #[test]
+    fn markup_characters_are_escaped() {
+        assert_eq!(
+            escape_html(r#"<a href="x">'&'</a>"#),
+            "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;"
+        );
     }
 
     #[test]

@@ -1,4 +1,6 @@
-//! Start values of the roll along a sweep (continuation from the converged positions).
+//! Start values of the roll along a sweep (continuation from the converged positions): a
+//! quadratic predictor through the last three converged rolls (on the paper sweep the first
+//! residual is about 1e-6 mm instead of 1e-3 mm).
 
 use super::{JUMP_SCREEN_MM, Position, Stop};
 

@@ -1,4 +1,6 @@
-//! Contact-point jumps of a sweep, located to [`JUMP_REFINE_MM`](super::JUMP_REFINE_MM).
+//! Contact-point jumps of a sweep, located to [`JUMP_REFINE_MM`](super::JUMP_REFINE_MM): the
+//! interval of a jump is shrunk by the secant root of the difference of the two competing
+//! minima, with bisection as the fallback.
 
 use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, side_index};
 use crate::gap::{self, SideGap, SidePose};

@@ -17,32 +17,37 @@
 //!   (bisection when a Newton step leaves it: `F` has kinks where the contact point jumps),
 //!   continuation from the previous position, minima refined exactly inside basins found by
 //!   one coarse scan per position and re-verified by a scan at the solution. Stops at
-//!   `|F| <=` [`ROLL_RESIDUAL_TOL_MM`].
+//!   `|F| <=` [`RollSettings::residual_tol_mm`] (1e-11 mm by default); its tolerances and
+//!   caps are the [`RollSettings`] the variant carries.
 //! * `Paper`: the paper's iteration, `theta += (d_min,r - d_min,l) / (y_min,l - y_min,r)`
 //!   from `theta = 0` at every position, the minima taken over the wheel profile tabulated
 //!   every [`PAPER_TABLE_STEP_MM`], stopping at `|d_min,r - d_min,l| <` 1e-4 mm (its Eq. 4).
+//!
+//! Every [`Position`] says why its iteration stopped ([`Stop`]: `Converged`, `IterationCap`,
+//! `NoContact`, `Stalled`); the outputs flag the others instead of plotting them.
 
 mod continuation;
 mod jumps;
+mod level;
+mod minima;
 mod paper;
 mod roll;
+mod settings;
 
 use continuation::Continuation;
 use jumps::find_jumps;
+use level::solve_no_roll;
+use minima::Scratch;
 use paper::solve_paper;
-use roll::{Scratch, solve_default, solve_no_roll};
+use roll::solve_default;
+pub use settings::RollSettings;
 
-use crate::gap::{GapPoint, SideGap};
+use crate::gap::{ContactPoint, GapPoint, SideGap};
 use crate::track::{Placement, Side};
 
-/// Residual `|m_L - m_R|` at which the default solver stops (mm). The issue asks for 1e-9;
-/// Newton reaches 1e-12 in one more step, so the margin costs nothing.
-pub const ROLL_RESIDUAL_TOL_MM: f64 = 1e-11;
-/// Residual accepted when the bracket on the roll has collapsed to the last bit (mm): the
-/// issue's requirement on the default solver, 100 times the normal tolerance.
-pub const COLLAPSED_RESIDUAL_MM: f64 = 1e-9;
-/// Iteration cap of the default solver; 3-6 iterations are typical, flange onset up to ~15.
-pub const DEFAULT_MAX_ITER: usize = 60;
+/// Why the roll iteration at one position stopped (shared with [`crate::hertz`]).
+pub use crate::stop::Stop;
+
 /// The paper's tolerance on `|d_min,r - d_min,l|` (its Eq. 4: "1e-4 is enough"), mm.
 pub const PAPER_TOL_MM: f64 = 1e-4;
 /// Iteration cap of the paper's solver (it states none; 1000 as for its Hertz iteration).
@@ -55,13 +60,15 @@ pub const PAPER_TABLE_STEP_MM: f64 = 0.1;
 /// separation is within the elastic approach of a loaded contact.
 pub const TWO_POINT_GAP_TOL_MM: f64 = 0.01;
 
-/// Which rigid solver to run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// Which rigid solver to run, with its settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Solver {
-    /// Newton with the exact derivative, continuation, exact minima (the project's).
-    #[default]
-    Default,
-    /// The paper's semi-analytical iteration on tabulated profiles.
+    /// Newton with the exact derivative, continuation, exact minima (the project's), with
+    /// its tolerances and caps.
+    Default(RollSettings),
+    /// The paper's semi-analytical iteration on tabulated profiles, with the paper's
+    /// tolerance ([`PAPER_TOL_MM`]), a cap ([`PAPER_MAX_ITER`]) and table step
+    /// ([`PAPER_TABLE_STEP_MM`]): reproduced as stated, not tuned.
     Paper,
     /// No roll: each wheel is shifted with the wheelset and lowered onto its own rail, the
     /// wheelset held level (scene key `[rigid] roll = "none"`). This is how the Δr
@@ -71,48 +78,29 @@ pub enum Solver {
     NoRoll,
 }
 
+impl Default for Solver {
+    /// The project's solver with its default settings.
+    fn default() -> Solver {
+        Solver::Default(RollSettings::default())
+    }
+}
+
 impl Solver {
     /// Name used in scene files and tables.
     pub fn name(self) -> &'static str {
         match self {
-            Solver::Default => "default",
+            Solver::Default(_) => "default",
             Solver::Paper => "paper",
             Solver::NoRoll => "no_roll",
         }
     }
 
-    /// The solver of a scene-file name.
+    /// The solver of a scene-file name (the default one with its default settings).
     pub fn from_name(name: &str) -> Option<Solver> {
         match name {
-            "default" => Some(Solver::Default),
+            "default" => Some(Solver::default()),
             "paper" => Some(Solver::Paper),
             _ => None,
-        }
-    }
-}
-
-/// Why the roll iteration at one position stopped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Stop {
-    /// The residual fell below the solver's tolerance.
-    Converged,
-    /// The iteration cap was hit; the position is flagged and not plotted.
-    IterationCap,
-    /// A wheel is nowhere above its rail (shift beyond the rail head).
-    NoContact,
-    /// The bracket on the roll collapsed without the residual falling below the tolerance
-    /// (the gap minima were not found consistently); flagged, not plotted.
-    Stalled,
-}
-
-impl Stop {
-    /// Text for the `status` column.
-    pub fn name(self) -> &'static str {
-        match self {
-            Stop::Converged => "converged",
-            Stop::IterationCap => "iteration cap",
-            Stop::NoContact => "no contact",
-            Stop::Stalled => "stalled",
         }
     }
 }
@@ -141,6 +129,22 @@ pub struct SideContact {
     /// A second contact point: another local minimum of the gap within
     /// [`TWO_POINT_GAP_TOL_MM`]; `(s, gap)` in mm.
     pub second: Option<(f64, f64)>,
+}
+
+impl SideContact {
+    /// The contact point's columns shared with the quasi-elastic patches.
+    pub fn point(&self) -> ContactPoint {
+        ContactPoint {
+            s: self.s,
+            y: self.y,
+            z: self.z,
+            r: self.r,
+            gamma: self.gamma,
+            rail_tan_gamma: self.rail_tan_gamma,
+            wheel_curvature: self.wheel_curvature,
+            rail_curvature: self.rail_curvature,
+        }
+    }
 }
 
 /// The solution at one lateral position.
@@ -289,7 +293,7 @@ impl RigidSweep {
     /// ```
     /// use wheelrail::{pipeline, rigid, scene::Scene};
     /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
-    /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), &[2.0], rigid::Solver::Default);
+    /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), &[2.0], rigid::Solver::default());
     /// let w = sweep.wickens(&sweep.positions[0]);
     /// // S1002 on UIC60 1:40 at 2 mm: a conicity of about 0.2.
     /// assert!(w.lambda > 0.1 && w.lambda < 0.3);
@@ -318,7 +322,7 @@ impl RigidSweep {
 pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
 
 /// The contact angle of `side` at `p` (rad), NaN unless it converged with that contact.
-fn contact_angle(p: &Position, side: Side) -> f64 {
+pub(crate) fn contact_angle(p: &Position, side: Side) -> f64 {
     match p.side(side) {
         Some(c) if p.stop == Stop::Converged => c.gamma,
         _ => f64::NAN,
@@ -356,7 +360,7 @@ fn side_index(side: Side) -> usize {
 /// use wheelrail::{scene::Scene, pipeline, rigid};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let sweep = rigid::search(&placement, &[0.0, 3.0], rigid::Solver::Default);
+/// let sweep = rigid::search(&placement, &[0.0, 3.0], rigid::Solver::default());
 /// // A symmetric wheelset at y_ws = 0 does not roll.
 /// assert!(sweep.positions[0].roll.abs() < 1e-12);
 /// // Shifted to the left it rolls to lift the left wheel (positive roll, crate docs).
@@ -370,9 +374,10 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     if solver == Solver::Paper {
         sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
     }
+    // The settings are read by reference from here: one copy per sweep.
     let mut scratch = Scratch::default();
-    let solve = |y: f64, theta0: f64, scratch: &mut Scratch| match solver {
-        Solver::Default => solve_default(&sides, y, theta0, scratch),
+    let solve = |y: f64, theta0: f64, scratch: &mut Scratch| match &solver {
+        Solver::Default(settings) => solve_default(&sides, settings, y, theta0, scratch),
         Solver::Paper => solve_paper(&sides, y),
         Solver::NoRoll => solve_no_roll(&sides, y, scratch),
     };

@@ -1,263 +1,314 @@
 //! The default roll solver: safeguarded Newton on `F = m_L - m_R` with the exact slope,
-//! minima followed in their basins and verified by a scan at the solution; and the level
-//! wheelset (no roll) of EN 15302 Annex E.
+//! minima followed in their basins and verified by a scan at the solution.
+//!
+//! Laid out as an argmin-style solver: [`Iteration::evaluate`] computes `F` at the current
+//! roll, [`Iteration::check`] (the termination check) says whether and why to stop,
+//! [`Iteration::step`] moves the roll; the [`Bracket`] is their shared safeguard.
 
-use super::{
-    COLLAPSED_RESIDUAL_MM, DEFAULT_MAX_ITER, Position, ROLL_RESIDUAL_TOL_MM, Stop,
-    TWO_POINT_GAP_TOL_MM, finish, no_contact,
-};
-use crate::gap::{self, Basin, GapPoint, SideGap, SidePose};
+use super::minima::{Scratch, side_minimum};
+use super::{Position, RollSettings, Stop, finish, no_contact};
+use crate::gap::{GapPoint, SideGap, SidePose};
 
-/// Buffers reused across positions (no allocation per position). The basins of the last
-/// solution start the next position (continuation): its scan at the solution verifies them.
-#[derive(Debug, Default)]
-pub(super) struct Scratch {
-    pub(super) basins: [Vec<Basin>; 2],
-    /// The minima found in `basins` at the current pose, reused after a verification scan
-    /// at that same pose for the basins that contain them.
-    minima: [Vec<GapPoint>; 2],
-    /// Whether `basins` holds the basins of a previous solution.
-    pub(super) warm: bool,
+/// The envelope-theorem slope gives way to the secant of the last two iterates where the
+/// residual fell by less than this factor in one step (slow, linear convergence: a minimum
+/// held at the end of the rail's running surface, measured 0.66 per step).
+const SLOW_RATIO: f64 = 0.5;
+/// The secant step is held to this many times the last step.
+const SECANT_STEP_LIMIT: f64 = 4.0;
+/// Slope `dF/dtheta` assumed without a bracket and without a useful slope (mm/rad): the
+/// tread's lever arm, 2 x 750 mm.
+const FALLBACK_SLOPE_MM: f64 = 1500.0;
+
+/// The bracket on the roll: `F < 0` at `lo`, `F > 0` at `hi` (infinite while unknown).
+#[derive(Debug, Clone, Copy)]
+struct Bracket {
+    lo: f64,
+    hi: f64,
 }
 
-/// The lowest minimum of one side over its basins, and a second one within the two-point
-/// tolerance in another basin. Each basin is re-centred on its minimum, so that the next
-/// call (a nearby pose) starts there; a basin whose minimum another basin already found is
-/// dropped.
-///
-/// `minima` holds on entry the minima already known at this very pose (or nothing); a basin
-/// that contains one of them takes it instead of searching again. On return it holds the
-/// minima of the basins.
-fn side_minimum(
-    side: &SideGap,
-    pose: &SidePose,
-    basins: &mut Vec<Basin>,
-    minima: &mut Vec<GapPoint>,
-) -> Option<(GapPoint, Option<GapPoint>)> {
-    let mut best: Option<GapPoint> = None;
-    let mut second: Option<GapPoint> = None;
-    let mut kept = 0;
-    let known = minima.len();
-    for i in 0..basins.len() {
-        let b = basins[i];
-        let reuse = minima[..known]
-            .iter()
-            .find(|q| (b.0..=b.1).contains(&q.s))
-            .copied();
-        let Some(p) = reuse.or_else(|| side.minimum(b, None, pose)) else {
-            continue;
-        };
-        minima.push(p);
-        let duplicate = basins[..kept]
-            .iter()
-            .any(|k| (0.5 * (k.0 + k.1) - p.s).abs() <= SAME_MINIMUM_MM);
-        if !duplicate {
-            let half = 0.5 * (b.1 - b.0);
-            basins[kept] = (p.s - half, p.s + half);
-            kept += 1;
-        }
-        match best {
-            Some(q) if p.g >= q.g => {
-                if (p.s - q.s).abs() > gap::SAME_BASIN_MM && second.is_none_or(|r| p.g < r.g) {
-                    second = Some(p);
-                }
-            }
-            _ => {
-                if let Some(q) = best.filter(|q| (p.s - q.s).abs() > gap::SAME_BASIN_MM) {
-                    second = Some(q);
-                }
-                best = Some(p);
-            }
+impl Bracket {
+    const OPEN: Bracket = Bracket {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
+
+    /// Narrows the bracket with the sign of `F(theta) = f`.
+    #[inline]
+    fn narrow(&mut self, theta: f64, f: f64) {
+        if f > 0.0 {
+            self.hi = self.hi.min(theta);
+        } else {
+            self.lo = self.lo.max(theta);
         }
     }
-    basins.truncate(kept);
-    minima.drain(..known);
-    best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
+
+    /// Whether the bracket has shrunk to the last bits of a roll near `theta`.
+    #[inline]
+    fn collapsed(&self, theta: f64, settings: &RollSettings) -> bool {
+        self.hi - self.lo <= settings.bracket_collapse_rad * theta.abs().max(1.0)
+    }
 }
 
-/// Two basins whose minima lie this close have slid onto the same minimum; one is dropped
-/// (mm). Far above the local tolerance (1e-11 mm), far below any distance between two
-/// distinct minima of a profile (joints are millimetres apart).
-const SAME_MINIMUM_MM: f64 = 1e-6;
-/// A bracket on the roll narrower than this has collapsed (rad).
-const BRACKET_COLLAPSE_RAD: f64 = 1e-15;
+/// What the termination check decided.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Verdict {
+    /// Stop, for this reason.
+    Stop(Stop),
+    /// A root on basins not scanned at this pose: scan there and evaluate again, keeping the
+    /// bracket only when it collapsed (it pins this roll).
+    Verify { keep_bracket: bool },
+    /// Take a step.
+    Step,
+}
+
+/// `F` and the minima it comes from at one roll.
+struct Evaluation {
+    poses: [SidePose; 2],
+    mins: [(GapPoint, Option<GapPoint>); 2],
+    /// `F = m_L - m_R` (mm).
+    f: f64,
+}
+
+/// The state of the roll iteration at one lateral position.
+struct Iteration {
+    y_ws: f64,
+    theta: f64,
+    iterations: usize,
+    bracket: Bracket,
+    /// Whether the next evaluation scans for basins.
+    scan: bool,
+    /// Whether the last evaluation scanned (its basins hold the lowest gap at its pose).
+    fresh: bool,
+    /// Whether the next evaluation re-examines the previous pose after a verification scan
+    /// (the minima found there are reused).
+    verify: bool,
+    /// Whether the wheelset was already tried unrolled after losing contact.
+    retried_level: bool,
+    /// The roll at which the basins were last scanned (warm basins: about the start roll).
+    scanned_theta: f64,
+    /// The previous iterate `(theta, F)` on the same basins, for the secant slope.
+    previous: Option<(f64, f64)>,
+}
 
 /// Newton on the roll with the exact derivative of `F = m_L - m_R`, safeguarded by a
 /// bracket. The minima are followed in the basins of the previous solution (or of a scan
 /// at `theta0` when there are none); a root is accepted only when a scan at that very pose
 /// found the basins it was computed from (the global check), otherwise the scan is made
 /// there and the iteration goes on with its basins.
-/// Roll change after which the default solver scans for basins again (rad): wheel points
-/// move by about r0 * 5e-4 = 0.25 mm, one coarse step; smaller moves are followed by the
-/// basins themselves. Large-roll wheelsets (very unequal radii) need it.
-const RESCAN_ROLL_RAD: f64 = 5e-4;
-
 pub(super) fn solve_default(
     sides: &[SideGap; 2],
+    settings: &RollSettings,
     y_ws: f64,
     theta0: f64,
     scratch: &mut Scratch,
 ) -> Position {
-    let poses = |theta: f64| {
-        [
-            SidePose::new(1.0, y_ws, theta),
-            SidePose::new(-1.0, y_ws, theta),
-        ]
+    let mut it = Iteration {
+        y_ws,
+        theta: theta0,
+        iterations: 0,
+        bracket: Bracket::OPEN,
+        scan: !scratch.warm,
+        fresh: false,
+        verify: false,
+        retried_level: false,
+        scanned_theta: theta0,
+        previous: None,
     };
-    let mut theta = theta0;
-    let mut scan = !scratch.warm;
-    let mut retried_level = false;
-    // The roll at which the basins were last scanned (warm basins: about the start roll).
-    let mut scanned_theta = theta0;
-    // Whether this iteration re-examines the previous pose after a verification scan.
-    let mut verify = false;
-    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    let mut iterations = 0;
-    // The previous iterate `(theta, F)`, for the secant slope.
-    let mut previous: Option<(f64, f64)> = None;
     loop {
-        iterations += 1;
-        let p = poses(theta);
-        if (theta - scanned_theta).abs() > RESCAN_ROLL_RAD {
-            // The wheel has turned so far that its points moved by more than the basins can
-            // follow (r0 * RESCAN_ROLL_RAD = 0.25 mm): scan again, and drop the bracket,
-            // which may rest on minima of basins that no longer hold the lowest gap.
-            scan = true;
-            (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
-        }
-        let fresh = scan;
-        if scan {
-            for k in 0..2 {
-                sides[k].basins(&p[k], &mut scratch.basins[k]);
+        it.iterations += 1;
+        let Some(e) = it.evaluate(sides, settings, scratch) else {
+            if it.recover_contact() {
+                continue;
             }
-            scan = false;
-            scanned_theta = theta;
+            scratch.warm = false;
+            return no_contact(y_ws, it.theta, it.iterations);
+        };
+        it.observe(&e, settings);
+        match it.check(&e, settings) {
+            Verdict::Stop(stop) => {
+                scratch.warm = stop == Stop::Converged;
+                let mut pos = finish(sides, y_ws, it.theta, e.mins, it.iterations, e.f);
+                pos.stop = stop;
+                return pos;
+            }
+            Verdict::Verify { keep_bracket } => {
+                it.scan = true;
+                it.verify = true;
+                if !keep_bracket {
+                    it.bracket = Bracket::OPEN;
+                }
+            }
+            Verdict::Step => it.step(&e),
+        }
+    }
+}
+
+impl Iteration {
+    /// `F` at the current roll from the minima of both wheels, scanning for basins first
+    /// when asked to or when the roll moved past [`RollSettings::rescan_roll_rad`]; `None`
+    /// when a wheel has no minimum above its rail.
+    fn evaluate(
+        &mut self,
+        sides: &[SideGap; 2],
+        settings: &RollSettings,
+        scratch: &mut Scratch,
+    ) -> Option<Evaluation> {
+        let poses = [
+            SidePose::new(1.0, self.y_ws, self.theta),
+            SidePose::new(-1.0, self.y_ws, self.theta),
+        ];
+        if (self.theta - self.scanned_theta).abs() > settings.rescan_roll_rad {
+            // The wheel has turned so far that its points moved by more than the basins can
+            // follow (r0 * rescan_roll_rad = 0.25 mm): scan again, and drop the bracket,
+            // which may rest on minima of basins that no longer hold the lowest gap.
+            self.scan = true;
+            self.bracket = Bracket::OPEN;
+        }
+        self.fresh = self.scan;
+        if self.scan {
+            for k in 0..2 {
+                sides[k].basins(&poses[k], &mut scratch.basins[k]);
+            }
+            self.scan = false;
+            self.scanned_theta = self.theta;
         }
         let [b0, b1] = &mut scratch.basins;
         let [m0, m1] = &mut scratch.minima;
-        if !verify {
+        if !self.verify {
             // The pose changed: nothing is known at it.
             m0.clear();
             m1.clear();
         }
-        let mins = [
-            side_minimum(&sides[0], &p[0], b0, m0),
-            side_minimum(&sides[1], &p[1], b1, m1),
-        ];
-        verify = false;
-        let (Some(left), Some(right)) = (mins[0], mins[1]) else {
-            if !fresh {
-                // The warm basins may have slid off the rail: scan before giving up.
-                scan = true;
-                continue;
-            }
-            if !retried_level {
-                // A start roll extrapolated across a jump of the roll can turn the wheels
-                // off their rails; no contact is declared only for the wheelset unrolled.
-                retried_level = true;
-                theta = 0.0;
-                scan = true;
-                (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
-                continue;
-            }
-            scratch.warm = false;
-            return no_contact(y_ws, theta, iterations);
-        };
-        let f = left.0.g - right.0.g;
-        let done = |stop: Stop| {
-            let mut pos = finish(sides, y_ws, theta, [left, right], iterations, f);
-            pos.stop = stop;
-            pos
-        };
-        let within = f.abs() <= ROLL_RESIDUAL_TOL_MM;
-        if !within {
-            if f > 0.0 {
-                hi = hi.min(theta);
-            } else {
-                lo = lo.max(theta);
-            }
+        let same = settings.same_minimum_mm;
+        let left = side_minimum(&sides[0], &poses[0], b0, m0, same);
+        let right = side_minimum(&sides[1], &poses[1], b1, m1, same);
+        self.verify = false;
+        let (left, right) = (left?, right?);
+        Some(Evaluation {
+            poses,
+            mins: [left, right],
+            f: left.0.g - right.0.g,
+        })
+    }
+
+    /// After an evaluation without contact: whether to try again (rescanned, or unrolled).
+    fn recover_contact(&mut self) -> bool {
+        if !self.fresh {
+            // The warm basins may have slid off the rail: scan before giving up.
+            self.scan = true;
+            return true;
         }
+        if !self.retried_level {
+            // A start roll extrapolated across a jump of the roll can turn the wheels off
+            // their rails; no contact is declared only for the wheelset unrolled.
+            self.retried_level = true;
+            self.theta = 0.0;
+            self.scan = true;
+            self.bracket = Bracket::OPEN;
+            return true;
+        }
+        false
+    }
+
+    /// Narrows the bracket with the evaluation, unless it is already a root.
+    fn observe(&mut self, e: &Evaluation, settings: &RollSettings) {
+        let within = e.f.abs() <= settings.residual_tol_mm;
+        if !within {
+            self.bracket.narrow(self.theta, e.f);
+        }
+    }
+
+    /// The termination check: converged (on freshly scanned basins), verify a root found on
+    /// followed basins, the iteration cap, a stalled bracket, or go on.
+    fn check(&self, e: &Evaluation, settings: &RollSettings) -> Verdict {
+        let within = e.f.abs() <= settings.residual_tol_mm;
         // A bracket collapsed to the last bit of the roll: where rounding of the gaps (about
         // 1e-13 mm each at |g| ~ 450 mm) keeps |F| just above the tolerance, the root is found
-        // as well as doubles allow, and accepted within the promised COLLAPSED_RESIDUAL_MM.
-        let collapsed = !within && hi - lo <= BRACKET_COLLAPSE_RAD * theta.abs().max(1.0);
-        if within || (collapsed && f.abs() <= COLLAPSED_RESIDUAL_MM) {
-            if fresh {
-                scratch.warm = true;
-                return done(Stop::Converged);
+        // as well as doubles allow, and accepted within `collapsed_residual_mm`.
+        let collapsed = !within && self.bracket.collapsed(self.theta, settings);
+        if within || (collapsed && e.f.abs() <= settings.collapsed_residual_mm) {
+            if self.fresh {
+                return Verdict::Stop(Stop::Converged);
             }
             // Verify against a scan at the solution: a basin that was not a coarse minimum
             // where the basins were found may hold the lowest gap now. A bracket built on the
             // old basins is dropped (a collapsed one is kept: it pins this roll).
-            scan = true;
-            verify = true;
-            if within {
-                (lo, hi) = (f64::NEG_INFINITY, f64::INFINITY);
-            }
-            continue;
+            return Verdict::Verify {
+                keep_bracket: !within,
+            };
         }
-        if iterations >= DEFAULT_MAX_ITER {
-            scratch.warm = false;
-            return done(Stop::IterationCap);
+        if self.iterations >= settings.max_iter {
+            return Verdict::Stop(Stop::IterationCap);
         }
         if collapsed {
-            scratch.warm = false;
-            return done(Stop::Stalled);
+            return Verdict::Stop(Stop::Stalled);
         }
+        Verdict::Step
+    }
+
+    /// The next roll: Newton with the envelope-theorem slope (or the secant where that
+    /// converges slowly) inside the bracket, bisection when the step leaves it.
+    fn step(&mut self, e: &Evaluation) {
+        let (theta, f) = (self.theta, e.f);
         // dF/dtheta = dm_L/dphi_L + dm_R/dphi_R (phi_R = -theta): envelope theorem.
-        let mut slope = left.0.dg_dphi(&p[0]) + right.0.dg_dphi(&p[1]);
+        let [(left, _), (right, _)] = e.mins;
+        let mut slope = left.dg_dphi(&e.poses[0]) + right.dg_dphi(&e.poses[1]);
         // The envelope theorem holds at a smooth minimum; a minimum held at the end of the
         // rail's running surface moves with the roll in another way, and Newton with that
         // slope only gains a constant factor per step (0.66 measured: 60 iterations were not
-        // enough). Where the residual fell by less than half, the secant slope of the last
-        // two iterates (positive: F increases) takes over.
+        // enough). Where the residual fell by less than SLOW_RATIO, the secant slope of the
+        // last two iterates (positive: F increases) takes over.
         // Only iterates on the same basins compare (a scan may have changed them), and the
-        // secant step is held to four times the last one.
-        if fresh {
-            previous = None;
+        // secant step is held to SECANT_STEP_LIMIT times the last one.
+        if self.fresh {
+            self.previous = None;
         }
-        if let Some((t0, f0)) = previous
-            && f.abs() > 0.5 * f0.abs()
+        if let Some((t0, f0)) = self.previous
+            && f.abs() > SLOW_RATIO * f0.abs()
             && f.signum() == f0.signum()
             && (theta - t0).abs() > 0.0
         {
             let secant = (f - f0) / (theta - t0);
-            if secant > 0.0 && (f / secant).abs() <= 4.0 * (theta - t0).abs() {
+            if secant > 0.0 && (f / secant).abs() <= SECANT_STEP_LIMIT * (theta - t0).abs() {
                 slope = secant;
             }
         }
-        previous = Some((theta, f));
+        self.previous = Some((theta, f));
         let newton = theta - f / slope;
-        theta = if slope > 0.0 && newton > lo && newton < hi {
+        let Bracket { lo, hi } = self.bracket;
+        self.theta = if slope > 0.0 && newton > lo && newton < hi {
             newton
         } else if lo.is_finite() && hi.is_finite() {
             0.5 * (lo + hi)
         } else {
-            // No bracket yet and a useless slope: step by the tread's lever arm, 2 x 750 mm.
-            theta - f / 1500.0
+            // No bracket yet and a useless slope: step by the tread's lever arm.
+            theta - f / FALLBACK_SLOPE_MM
         };
     }
 }
 
-/// Each wheel at roll 0 on its own rail: the global minimum of each side's gap over a fresh
-/// scan of its basins. The axle height is the mean of the two wheels' own heights.
-pub(super) fn solve_no_roll(sides: &[SideGap; 2], y_ws: f64, scratch: &mut Scratch) -> Position {
-    let p = [
-        SidePose::new(1.0, y_ws, 0.0),
-        SidePose::new(-1.0, y_ws, 0.0),
-    ];
-    for k in 0..2 {
-        sides[k].basins(&p[k], &mut scratch.basins[k]);
-        scratch.minima[k].clear();
-    }
-    let [b0, b1] = &mut scratch.basins;
-    let [m0, m1] = &mut scratch.minima;
-    let mins = [
-        side_minimum(&sides[0], &p[0], b0, m0),
-        side_minimum(&sides[1], &p[1], b1, m1),
-    ];
-    match mins {
-        [Some(left), Some(right)] => finish(sides, y_ws, 0.0, [left, right], 1, 0.0),
-        _ => no_contact(y_ws, 0.0, 1),
+#[cfg(test)]
+mod tests {
+    use super::super::{Solver, search};
+    use super::*;
+    use crate::scene::Scene;
+
+    /// The settings the solver carries decide where it stops, and the position says why.
+    #[test]
+    fn the_settings_decide_where_the_iteration_stops() {
+        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let default = search(&placement, &[5.0], Solver::default()).positions[0];
+        assert_eq!(default.stop, Stop::Converged);
+        assert!(default.residual <= RollSettings::default().residual_tol_mm);
+        // At 5 mm the start roll (the centre's, 0) is off: the first evaluation is no root.
+        assert!(default.iterations > 1, "{default:?}");
+        let capped = RollSettings {
+            max_iter: 1,
+            ..RollSettings::default()
+        };
+        let p = search(&placement, &[5.0], Solver::Default(capped)).positions[0];
+        assert_eq!((p.stop, p.iterations), (Stop::IterationCap, 1));
+        assert_eq!(p.stop.status_text(), "iteration cap");
     }
 }

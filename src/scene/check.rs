@@ -3,22 +3,25 @@
 
 use super::raw::{RawConicity, RawFleet, RawQuasiElastic, RawScene, RawSweep};
 use super::{
-    CUTOFF_RANGE, DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_NOMINAL_RADIUS_MM, DEFAULT_POISSON,
-    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_WHEEL_LOAD_KN, DEFAULT_YOUNG_GPA, FleetSettings,
-    GAUGE_RANGE_MM, ImageFormat, MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_PANEL_WIDTHS,
-    MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS, MAX_TRAPEZOID_STEP_MM, MAX_WHEEL_LOAD_N,
-    MIN_EPSILON_MM, MIN_PANEL_WIDTHS, MIN_SWEEP_STEP_MM, MIN_TRAPEZOID_STEP_MM, MIN_WHEEL_LOAD_N,
-    MPA_PER_GPA, N_PER_KN, NOMINAL_RADIUS_RANGE_MM, POISSON_RANGE, ProfileRef, Scene,
-    YOUNG_RANGE_GPA,
+    DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_INCLINATION, DEFAULT_NOMINAL_RADIUS_MM,
+    DEFAULT_POISSON, DEFAULT_RAIL_PROFILE, DEFAULT_RAIL_PROFILE_INCLINATION,
+    DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_SWEEP_MM, DEFAULT_SWEEP_STEP_MM,
+    DEFAULT_WHEEL_LOAD_KN, DEFAULT_WHEEL_PROFILE, DEFAULT_YOUNG_GPA, FleetSettings, ImageFormat,
+    MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS,
+    MAX_WHEEL_LOAD_N, MIN_SWEEP_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE,
+    ProfileRef, Scene, YOUNG_RANGE_GPA,
 };
 use crate::error::Number;
 use crate::hertz::Material;
 use crate::hertz::sweep::Settings as HertzSettings;
 use crate::profile::Profile;
-use crate::quasi_elastic::{Quadrature, Settings as QeSettings};
+use crate::quasi_elastic::{EPSILON_RANGE_MM, Quadrature, Settings as QeSettings, SettingsError};
 use crate::rigid::Solver;
 use crate::stage::Figure;
-use crate::track::{Inclination, TrackLayout};
+use crate::track::{
+    GAUGE_POINT_DEPTH_MM, Inclination, LayoutError, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
+    TrackLayout,
+};
 use std::path::Path;
 
 /// A failed check: the key as written and what is wrong with its value.
@@ -26,19 +29,6 @@ pub(super) type Invalid = (&'static str, String);
 
 fn invalid(key: &'static str, message: String) -> Invalid {
     (key, message)
-}
-
-/// `v` (or `default`) if it is positive and finite.
-fn positive(key: &'static str, v: Option<f64>, default: f64) -> Result<f64, Invalid> {
-    let v = v.unwrap_or(default);
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(invalid(
-            key,
-            format!("{} must be a positive finite number", Number(v)),
-        ))
-    }
 }
 
 /// The profiles of the four places (left and right wheel and rail) and the keys they came
@@ -121,7 +111,11 @@ fn profile_refs(raw: &RawScene, dir: &Path) -> ProfileRefs {
             ProfileRef::File(dir.join(text))
         }
     };
-    let wheel = raw.wheel.profile.as_deref().unwrap_or("S1002");
+    let wheel = raw
+        .wheel
+        .profile
+        .as_deref()
+        .unwrap_or(DEFAULT_WHEEL_PROFILE);
     let wheel_profiles = [
         profile_ref(raw.wheel.left_profile.as_deref().unwrap_or(wheel)),
         profile_ref(raw.wheel.right_profile.as_deref().unwrap_or(wheel)),
@@ -150,7 +144,7 @@ fn profile_refs(raw: &RawScene, dir: &Path) -> ProfileRefs {
             "rail.profile",
         ),
     ];
-    let rail = raw.rail.profile.as_deref().unwrap_or("UIC60E1");
+    let rail = raw.rail.profile.as_deref().unwrap_or(DEFAULT_RAIL_PROFILE);
     let rail_profiles = [
         profile_ref(raw.rail.left_profile.as_deref().unwrap_or(rail)),
         profile_ref(raw.rail.right_profile.as_deref().unwrap_or(rail)),
@@ -177,13 +171,8 @@ fn nominal_radii(raw: &RawScene) -> Result<[f64; 2], Invalid> {
         .map(|(r, (k, v))| (r, k, v))
     {
         let (key, v) = written(own_key, own, "wheel.nominal_radius_mm", w.nominal_radius_mm);
-        *r = within(
-            v.unwrap_or(DEFAULT_NOMINAL_RADIUS_MM),
-            NOMINAL_RADIUS_RANGE_MM,
-            "mm",
-            "not a railway wheel radius",
-        )
-        .map_err(|m| invalid(key, m))?;
+        *r = crate::track::check_nominal_radius(v.unwrap_or(DEFAULT_NOMINAL_RADIUS_MM))
+            .map_err(|e| invalid(key, e.to_string()))?;
     }
     Ok(nominal_radius_mm)
 }
@@ -191,15 +180,20 @@ fn nominal_radii(raw: &RawScene) -> Result<[f64; 2], Invalid> {
 /// The track layout, the inclination the rail data already has and the smoothing
 /// wavelengths of wheel and rail files (mm).
 fn track(raw: &RawScene) -> Result<(TrackLayout, Inclination, [f64; 2]), Invalid> {
-    let inclination = Inclination::parse(raw.rail.inclination.as_deref().unwrap_or("1:40"))
-        .map_err(|m| invalid("rail.inclination", m))?;
+    let inclination = Inclination::parse(
+        raw.rail
+            .inclination
+            .as_deref()
+            .unwrap_or(DEFAULT_INCLINATION),
+    )
+    .map_err(|e| invalid("rail.inclination", e.to_string()))?;
     let rail_profile_inclination = Inclination::parse(
         raw.rail
             .profile_inclination
             .as_deref()
-            .unwrap_or("vertical"),
+            .unwrap_or(DEFAULT_RAIL_PROFILE_INCLINATION),
     )
-    .map_err(|m| invalid("rail.profile_inclination", m))?;
+    .map_err(|e| invalid("rail.profile_inclination", e.to_string()))?;
     let smoothing = |key: &'static str, v: Option<f64>| -> Result<f64, Invalid> {
         let v = v.unwrap_or(DEFAULT_SMOOTHING_WAVELENGTH_MM);
         within(
@@ -221,47 +215,27 @@ fn track(raw: &RawScene) -> Result<(TrackLayout, Inclination, [f64; 2]), Invalid
         )?,
     ];
 
-    let gauge_mm = within(
+    let layout = TrackLayout::new(
+        raw.track.gauge_mm.unwrap_or(STANDARD_GAUGE_MM),
         raw.track
-            .gauge_mm
-            .unwrap_or(crate::track::STANDARD_GAUGE_MM),
-        GAUGE_RANGE_MM,
-        "mm",
-        "not a railway gauge",
-    )
-    .map_err(|m| invalid("track.gauge_mm", m))?;
-    let gauge_point_depth_mm = positive(
-        "track.gauge_point_depth_mm",
-        raw.track.gauge_point_depth_mm,
-        crate::track::GAUGE_POINT_DEPTH_MM,
-    )?;
-    if gauge_point_depth_mm > 30.0 {
-        return Err(invalid(
-            "track.gauge_point_depth_mm",
-            format!(
-                "{gauge_point_depth_mm} mm is below the rail head (expected 0 to 30 mm, usually 14)"
-            ),
-        ));
-    }
-    let flange_back_mm = positive(
-        "wheelset.flange_back_mm",
-        raw.wheelset.flange_back_mm,
-        crate::track::STANDARD_FLANGE_BACK_MM,
-    )?;
-    if !(0.8 * gauge_mm..gauge_mm).contains(&flange_back_mm) {
-        return Err(invalid(
-            "wheelset.flange_back_mm",
-            format!(
-                "{flange_back_mm} mm does not fit a {gauge_mm} mm gauge (expected between 80 % of the gauge and the gauge)"
-            ),
-        ));
-    }
-    let layout = TrackLayout {
-        gauge_mm,
-        gauge_point_depth_mm,
+            .gauge_point_depth_mm
+            .unwrap_or(GAUGE_POINT_DEPTH_MM),
+        raw.wheelset
+            .flange_back_mm
+            .unwrap_or(STANDARD_FLANGE_BACK_MM),
         inclination,
-        flange_back_mm,
-    };
+    )
+    .map_err(|e| {
+        let key = match e {
+            LayoutError::Gauge { .. } => "track.gauge_mm",
+            LayoutError::GaugePointDepth { .. } => "track.gauge_point_depth_mm",
+            LayoutError::FlangeBack { .. } => "wheelset.flange_back_mm",
+            LayoutError::InclinationText { .. } | LayoutError::InclinationOutOfRange { .. } => {
+                "rail.inclination"
+            }
+        };
+        invalid(key, e.to_string())
+    })?;
     Ok((layout, rail_profile_inclination, smoothing_wavelength_mm))
 }
 
@@ -298,8 +272,10 @@ fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Inval
             Err(invalid(
                 key,
                 format!(
-                    "{nu} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
-                    POISSON_RANGE.0, POISSON_RANGE.1
+                    "{} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
+                    Number(nu),
+                    POISSON_RANGE.0,
+                    POISSON_RANGE.1
                 ),
             ))
         }
@@ -372,7 +348,7 @@ fn outputs(raw: &RawScene) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
 /// The rigid solver, with the roll option.
 fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
     let rigid_solver = match raw.rigid.solver.as_deref() {
-        None => crate::rigid::Solver::Default,
+        None => crate::rigid::Solver::default(),
         Some(name) => crate::rigid::Solver::from_name(name).ok_or_else(|| {
             invalid(
                 "rigid.solver",
@@ -382,7 +358,7 @@ fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
     };
     let rigid_solver = match raw.rigid.roll.as_deref() {
         None | Some("solved") => rigid_solver,
-        Some("none") if rigid_solver == crate::rigid::Solver::Default => {
+        Some("none") if matches!(rigid_solver, crate::rigid::Solver::Default(_)) => {
             crate::rigid::Solver::NoRoll
         }
         Some("none") => {
@@ -404,39 +380,22 @@ fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
 /// The quasi-elastic settings and the eps values of the sensitivity figure (mm).
 fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
     let qe = &raw.quasi_elastic;
-    let quasi_elastic = crate::quasi_elastic::Settings {
-        epsilon_mm: positive(
-            "quasi_elastic.epsilon_mm",
-            qe.epsilon_mm,
-            crate::quasi_elastic::DEFAULT_EPSILON_MM,
-        )?,
-        cutoff: within(
-            qe.cutoff.unwrap_or(crate::quasi_elastic::DEFAULT_CUTOFF),
-            CUTOFF_RANGE,
-            "eps",
-            "not a useful cut-off of the weight exp(-gap/eps) (exp(-700) is near the smallest double)",
-        )
-        .map_err(|m| invalid("quasi_elastic.cutoff", m))?,
-        quadrature: quadrature(qe).map_err(|(key, message)| invalid(key, message))?,
-    };
-    if quasi_elastic.epsilon_mm < MIN_EPSILON_MM {
-        return Err(invalid(
-            "quasi_elastic.epsilon_mm",
-            format!(
-                "{} mm is below {MIN_EPSILON_MM} mm",
-                quasi_elastic.epsilon_mm
-            ),
-        ));
-    }
-    if quasi_elastic.epsilon_mm > 1.0 {
-        return Err(invalid(
-            "quasi_elastic.epsilon_mm",
-            format!(
-                "{} mm is far beyond any elastic approach (paper: 0.01 to 0.05 mm); expected at most 1 mm",
-                quasi_elastic.epsilon_mm
-            ),
-        ));
-    }
+    let quadrature = quadrature(qe).map_err(|(key, message)| invalid(key, message))?;
+    let quasi_elastic = QeSettings::new(
+        qe.epsilon_mm
+            .unwrap_or(crate::quasi_elastic::DEFAULT_EPSILON_MM),
+        qe.cutoff.unwrap_or(crate::quasi_elastic::DEFAULT_CUTOFF),
+        quadrature,
+    )
+    .map_err(|e| {
+        let key = match e {
+            SettingsError::Epsilon { .. } => "quasi_elastic.epsilon_mm",
+            SettingsError::Cutoff { .. } => "quasi_elastic.cutoff",
+            SettingsError::PanelWidths { .. } => "quasi_elastic.panel_widths",
+            SettingsError::MaxStep { .. } => "quasi_elastic.max_step_mm",
+        };
+        invalid(key, e.to_string())
+    })?;
     let epsilon_sensitivity_mm = qe
         .sensitivity_epsilon_mm
         .clone()
@@ -446,11 +405,14 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
         || epsilon_sensitivity_mm.len() > MAX_EPSILON_SENSITIVITY
         || epsilon_sensitivity_mm
             .iter()
-            .any(|e| !(e.is_finite() && *e >= MIN_EPSILON_MM && *e <= 1.0))
+            .any(|&e| quasi_elastic.with_epsilon(e).is_err())
     {
         return Err(invalid(
             key,
-            format!("expected 1 to {MAX_EPSILON_SENSITIVITY} values from {MIN_EPSILON_MM} to 1 mm"),
+            format!(
+                "expected 1 to {MAX_EPSILON_SENSITIVITY} values from {} to {} mm",
+                EPSILON_RANGE_MM.0, EPSILON_RANGE_MM.1
+            ),
         ));
     }
     for (i, e) in epsilon_sensitivity_mm.iter().enumerate() {
@@ -460,7 +422,10 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
         {
             return Err(invalid(
                 key,
-                format!("{e} mm is listed twice: each value is one curve of the figure"),
+                format!(
+                    "{} mm is listed twice: each value is one curve of the figure",
+                    Number(*e)
+                ),
             ));
         }
     }
@@ -508,66 +473,21 @@ fn hertz(raw: &RawScene) -> Result<HertzSettings, Invalid> {
 /// The quadrature of `[quasi_elastic]`: its kind and the one step key that kind takes, or
 /// the offending key and a message.
 fn quadrature(qe: &RawQuasiElastic) -> Result<Quadrature, (&'static str, String)> {
-    let finite_positive = |key: &'static str, v: f64| {
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            Err((
-                key,
-                format!("{} must be a positive finite number", Number(v)),
-            ))
-        }
-    };
     match (qe.quadrature.as_deref(), qe.max_step_mm, qe.panel_widths) {
         (None | Some("gauss_legendre"), Some(_), _) => Err((
             "quasi_elastic.max_step_mm",
             "applies to quadrature = \"trapezoid\" only".into(),
         )),
-        (None | Some("gauss_legendre"), None, panel_widths) => {
-            let key = "quasi_elastic.panel_widths";
-            let panel_widths = finite_positive(
-                key,
-                panel_widths.unwrap_or(crate::quasi_elastic::DEFAULT_PANEL_WIDTHS),
-            )?;
-            if !(MIN_PANEL_WIDTHS..=MAX_PANEL_WIDTHS).contains(&panel_widths) {
-                return Err((
-                    key,
-                    format!(
-                        "{panel_widths} is outside {MIN_PANEL_WIDTHS} to {MAX_PANEL_WIDTHS} weight widths: shorter panels would take minutes, longer ones no longer resolve the weight"
-                    ),
-                ));
-            }
-            Ok(Quadrature::GaussLegendre { panel_widths })
-        }
+        (None | Some("gauss_legendre"), None, panel_widths) => Ok(Quadrature::GaussLegendre {
+            panel_widths: panel_widths.unwrap_or(crate::quasi_elastic::DEFAULT_PANEL_WIDTHS),
+        }),
         (Some("trapezoid"), _, Some(_)) => Err((
             "quasi_elastic.panel_widths",
             "applies to quadrature = \"gauss_legendre\" only".into(),
         )),
-        (Some("trapezoid"), step, None) => {
-            let key = "quasi_elastic.max_step_mm";
-            let max_step_mm = finite_positive(
-                key,
-                step.unwrap_or(crate::quasi_elastic::DEFAULT_MAX_STEP_MM),
-            )?;
-            if max_step_mm < MIN_TRAPEZOID_STEP_MM {
-                return Err((
-                    key,
-                    format!(
-                        "{max_step_mm} mm is below {MIN_TRAPEZOID_STEP_MM} mm: the quadrature would not finish"
-                    ),
-                ));
-            }
-            if max_step_mm > MAX_TRAPEZOID_STEP_MM {
-                return Err((
-                    key,
-                    format!(
-                        "{} mm is above {MAX_TRAPEZOID_STEP_MM} mm: the step is halved until it resolves the weight, a longer start only adds halvings",
-                        Number(max_step_mm)
-                    ),
-                ));
-            }
-            Ok(Quadrature::Trapezoid { max_step_mm })
-        }
+        (Some("trapezoid"), step, None) => Ok(Quadrature::Trapezoid {
+            max_step_mm: step.unwrap_or(crate::quasi_elastic::DEFAULT_MAX_STEP_MM),
+        }),
         (Some(other), _, _) => Err((
             "quasi_elastic.quadrature",
             format!("unknown quadrature {other:?}; expected \"gauss_legendre\" or \"trapezoid\""),
@@ -676,16 +596,16 @@ fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, S
 
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
 fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
-    let from = raw.from_mm.unwrap_or(-15.0);
-    let to = raw.to_mm.unwrap_or(15.0);
-    let step = raw.step_mm.unwrap_or(0.1);
+    let from = raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0);
+    let to = raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1);
+    let step = raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM);
     for (key, v) in [
         ("sweep.from_mm", from),
         ("sweep.to_mm", to),
         ("sweep.step_mm", step),
     ] {
         if !v.is_finite() {
-            return Err((key, format!("{v} must be a finite number")));
+            return Err((key, format!("{} must be a finite number", Number(v))));
         }
     }
     if step < MIN_SWEEP_STEP_MM {
@@ -700,14 +620,21 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
     if to < from {
         return Err((
             "sweep.to_mm",
-            format!("{to} is below sweep.from_mm = {from}: the sweep is empty"),
+            format!(
+                "{} is below sweep.from_mm = {}: the sweep is empty",
+                Number(to),
+                Number(from)
+            ),
         ));
     }
     for (key, v) in [("sweep.from_mm", from), ("sweep.to_mm", to)] {
         if v.abs() > 100.0 {
             return Err((
                 key,
-                format!("{v} mm is beyond any flange clearance (expected -100 to 100 mm)"),
+                format!(
+                    "{} mm is beyond any flange clearance (expected -100 to 100 mm)",
+                    Number(v)
+                ),
             ));
         }
     }
@@ -717,8 +644,9 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
         return Err((
             "sweep.step_mm",
             format!(
-                "{step} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
-                n + 1.0
+                "{} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
+                Number(step),
+                Number(n + 1.0)
             ),
         ));
     }
@@ -733,7 +661,8 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
         return Err((
             "sweep.step_mm",
             format!(
-                "{step} mm gives positions that are not strictly increasing after rounding to 1e-9 mm"
+                "{} mm gives positions that are not strictly increasing after rounding to 1e-9 mm",
+                Number(step)
             ),
         ));
     }

@@ -1,6 +1,6 @@
 //! Scene files: a TOML description of one run (profiles, track, load, sweep, outputs).
 //!
-//! [`RawScene`] mirrors the file exactly (unknown keys are rejected); [`Scene::from_toml`]
+//! A serde mirror of the file (`raw.rs`) takes it exactly (unknown keys are rejected); [`Scene::from_toml`]
 //! checks every value once and converts units, so nothing downstream re-checks. See the
 //! README for the format; `reports/paper/scene.toml` is the paper's scene.
 
@@ -13,15 +13,27 @@ mod check;
 mod raw;
 
 pub use check::MAX_CONICITY_AMPLITUDE_MM;
-pub use raw::{
-    RawConicity, RawFleet, RawHertz, RawLoad, RawMaterial, RawOutputs, RawQuasiElastic, RawRail,
-    RawRigid, RawScene, RawSweep, RawTrack, RawWheel, RawWheelset,
-};
+use raw::RawScene;
 
 // The defaults of the scene keys: the paper's case (S1002 on UIC60 1:40, standard gauge and
 // wheelset, 460 mm wheels, 70 kN, steel), in one place. Gauge, gauge-point depth and
-// flange-back distance are the track module's standard values.
+// flange-back distance are the track module's standard values (`track::STANDARD_GAUGE_MM`,
+// ...), the numerical settings the defaults of their stages (`rigid::Solver::default`,
+// `quasi_elastic::Settings::default`, `hertz::sweep::Settings::default`).
 
+/// Default wheel profile (both sides): the paper's S1002.
+pub const DEFAULT_WHEEL_PROFILE: &str = "S1002";
+/// Default rail profile (both sides): the paper's UIC60 (60E1).
+pub const DEFAULT_RAIL_PROFILE: &str = "UIC60E1";
+/// Default rail inclination of the track: the paper's 1:40.
+pub const DEFAULT_INCLINATION: &str = "1:40";
+/// Default inclination already in the rail profile data: upright (the built-in UIC60 and
+/// most rail files are given upright).
+pub const DEFAULT_RAIL_PROFILE_INCLINATION: &str = "vertical";
+/// Default lateral sweep (mm): the paper's -15 to 15 mm.
+pub const DEFAULT_SWEEP_MM: (f64, f64) = (-15.0, 15.0);
+/// Default sweep step (mm): the paper's 0.1 mm (301 positions).
+pub const DEFAULT_SWEEP_STEP_MM: f64 = 0.1;
 /// Default nominal wheel radius (mm): the paper's 920 mm wheel.
 pub const DEFAULT_NOMINAL_RADIUS_MM: f64 = 460.0;
 /// Default vertical wheel load (kN): the paper's 70 kN.
@@ -45,12 +57,6 @@ pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
 /// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
 /// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
 pub const MIN_WHEEL_LOAD_N: f64 = 1.0;
-/// The nominal wheel radii accepted (mm): from small trolley wheels to the largest
-/// locomotive wheels, with margin.
-pub const NOMINAL_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
-/// The gauges accepted (mm): every gauge in use, from 381 mm minimum-gauge railways to
-/// 1676 mm broad gauge, with margin. The wheelset is placed from it; 1e300 mm is not a track.
-pub const GAUGE_RANGE_MM: (f64, f64) = (300.0, 2000.0);
 /// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
 /// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
 pub const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
@@ -66,30 +72,9 @@ pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
 /// so a step must be far above that rounding for positions to stay distinct and evenly
 /// spaced; 1e-6 mm (a nanometre) is a thousand roundings and far below any physical use.
 pub const MIN_SWEEP_STEP_MM: f64 = 1e-6;
-/// The cut-off of the quasi-elastic weight, in units of eps: at least 1 (the weight is
-/// cut within one width: the average would no longer be the paper's) and at most 700
-/// (`exp(-700)` is near the smallest double; a larger cut-off cuts nothing and only widens
-/// the regions integrated).
-pub const CUTOFF_RANGE: (f64, f64) = (1.0, 700.0);
-/// The largest starting step of the trapezoid quadrature (mm): the step is halved until it
-/// resolves the weight, so a longer start only adds halvings (and above about 5e307 mm the
-/// number of halvings overflows). 10 mm is wider than any low region of a contact.
-pub const MAX_TRAPEZOID_STEP_MM: f64 = 10.0;
 /// The largest number of values of eps in the sensitivity figure: each is a quasi-elastic
 /// pass over the whole sweep.
 pub const MAX_EPSILON_SENSITIVITY: usize = 16;
-/// The smallest step of the trapezoid quadrature (mm): its nodes cover the low regions
-/// (millimetres wide), so 1e-6 mm would take half a minute per position.
-pub const MIN_TRAPEZOID_STEP_MM: f64 = 1e-4;
-/// The shortest Gauss-Legendre panel accepted, in weight widths: the tradeoff study's
-/// reference uses 0.5; 0.05 would already take seconds per sweep.
-pub const MIN_PANEL_WIDTHS: f64 = 0.05;
-/// The longest Gauss-Legendre panel accepted, in weight widths: 8 nodes over 8 widths no
-/// longer resolve the weight (4 widths already err by 3e-7 in a and b on the paper scene).
-pub const MAX_PANEL_WIDTHS: f64 = 8.0;
-/// The smallest regularisation parameter (mm): below it the weight is narrower than the
-/// spacing of double-precision numbers around a contact point.
-pub const MIN_EPSILON_MM: f64 = 1e-6;
 
 /// Default filter wavelength of the spline through profile points read from files (mm): 0,
 /// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
@@ -181,54 +166,54 @@ pub enum ImageFormat {
 #[derive(Debug, Clone)]
 pub struct Scene {
     /// The scene file (for messages and provenance).
-    pub path: String,
+    pub(crate) path: String,
     /// Short name.
-    pub name: String,
+    pub(crate) name: String,
     /// Report title.
-    pub title: String,
+    pub(crate) title: String,
     /// Left and right wheel profiles.
-    pub wheel_profiles: [ProfileRef; 2],
+    pub(crate) wheel_profiles: [ProfileRef; 2],
     /// Left and right nominal radii, mm.
-    pub nominal_radius_mm: [f64; 2],
+    pub(crate) nominal_radius_mm: [f64; 2],
     /// Left and right rail profiles.
-    pub rail_profiles: [ProfileRef; 2],
+    pub(crate) rail_profiles: [ProfileRef; 2],
     /// The scene keys the wheel's left and right profiles came from, as the user wrote them
     /// (`wheel.profile` when one key names both), for messages.
-    pub wheel_profile_keys: [&'static str; 2],
+    pub(crate) wheel_profile_keys: [&'static str; 2],
     /// The same for the rails.
-    pub rail_profile_keys: [&'static str; 2],
+    pub(crate) rail_profile_keys: [&'static str; 2],
     /// Inclination already in the rail profile data.
-    pub rail_profile_inclination: Inclination,
+    pub(crate) rail_profile_inclination: Inclination,
     /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
-    pub smoothing_wavelength_mm: [f64; 2],
+    pub(crate) smoothing_wavelength_mm: [f64; 2],
     /// Whether wheel and rail files may have points that step back dropped.
-    pub drop_step_backs: [bool; 2],
+    pub(crate) drop_step_backs: [bool; 2],
     /// Track and wheelset dimensions.
-    pub layout: TrackLayout,
+    pub(crate) layout: TrackLayout,
     /// Vertical load per wheel, N.
-    pub wheel_load_n: f64,
+    pub(crate) wheel_load_n: f64,
     /// Wheel material.
-    pub wheel_material: crate::hertz::Material,
+    pub(crate) wheel_material: crate::hertz::Material,
     /// Rail material.
-    pub rail_material: crate::hertz::Material,
+    pub(crate) rail_material: crate::hertz::Material,
     /// Lateral shifts of the sweep, mm, increasing.
-    pub sweep_mm: Vec<f64>,
+    pub(crate) sweep_mm: Vec<f64>,
     /// Figures to render.
-    pub figures: Vec<crate::stage::Figure>,
+    pub(crate) figures: Vec<crate::stage::Figure>,
     /// Formats to render them in.
-    pub formats: Vec<ImageFormat>,
+    pub(crate) formats: Vec<ImageFormat>,
     /// Rigid solver.
-    pub rigid_solver: crate::rigid::Solver,
+    pub(crate) rigid_solver: crate::rigid::Solver,
     /// Quasi-elastic settings.
-    pub quasi_elastic: crate::quasi_elastic::Settings,
+    pub(crate) quasi_elastic: crate::quasi_elastic::Settings,
     /// Values of eps for the sensitivity figure (mm).
-    pub epsilon_sensitivity_mm: Vec<f64>,
+    pub(crate) epsilon_sensitivity_mm: Vec<f64>,
     /// Hertz settings over the sweep.
-    pub hertz: crate::hertz::sweep::Settings,
+    pub(crate) hertz: crate::hertz::sweep::Settings,
     /// Equivalent conicity settings.
-    pub conicity: crate::conicity::Settings,
+    pub(crate) conicity: crate::conicity::Settings,
     /// Settings of `wheelrail fleet` with this scene as its template.
-    pub fleet: FleetSettings,
+    pub(crate) fleet: FleetSettings,
 }
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
@@ -240,10 +225,136 @@ pub struct FleetSettings {
 }
 
 impl Scene {
-    /// Reads and checks a scene file.
+    /// The scene file (for messages and provenance).
+    pub fn path(&self) -> &str {
+        &self.path
+    }
+
+    /// Short name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Report title.
+    pub fn title(&self) -> &str {
+        &self.title
+    }
+
+    /// Left and right wheel profiles.
+    pub fn wheel_profiles(&self) -> &[ProfileRef; 2] {
+        &self.wheel_profiles
+    }
+
+    /// Left and right nominal radii, mm.
+    pub fn nominal_radius_mm(&self) -> [f64; 2] {
+        self.nominal_radius_mm
+    }
+
+    /// Left and right rail profiles.
+    pub fn rail_profiles(&self) -> &[ProfileRef; 2] {
+        &self.rail_profiles
+    }
+
+    /// Inclination already in the rail profile data.
+    pub fn rail_profile_inclination(&self) -> Inclination {
+        self.rail_profile_inclination
+    }
+
+    /// Filter wavelength of wheel and rail profiles read from files, mm (0: interpolate).
+    pub fn smoothing_wavelength_mm(&self) -> [f64; 2] {
+        self.smoothing_wavelength_mm
+    }
+
+    /// Track and wheelset dimensions.
+    pub fn layout(&self) -> &TrackLayout {
+        &self.layout
+    }
+
+    /// Vertical load per wheel, N.
+    pub fn wheel_load_n(&self) -> f64 {
+        self.wheel_load_n
+    }
+
+    /// Wheel material.
+    pub fn wheel_material(&self) -> &crate::hertz::Material {
+        &self.wheel_material
+    }
+
+    /// Rail material.
+    pub fn rail_material(&self) -> &crate::hertz::Material {
+        &self.rail_material
+    }
+
+    /// Lateral shifts of the sweep, mm, increasing.
+    pub fn sweep_mm(&self) -> &[f64] {
+        &self.sweep_mm
+    }
+
+    /// Figures to render.
+    pub fn figures(&self) -> &[crate::stage::Figure] {
+        &self.figures
+    }
+
+    /// Formats to render them in.
+    pub fn formats(&self) -> &[ImageFormat] {
+        &self.formats
+    }
+
+    /// Rigid solver.
+    pub fn rigid_solver(&self) -> crate::rigid::Solver {
+        self.rigid_solver
+    }
+
+    /// Quasi-elastic settings.
+    pub fn quasi_elastic(&self) -> &crate::quasi_elastic::Settings {
+        &self.quasi_elastic
+    }
+
+    /// Values of eps for the sensitivity figure (mm).
+    pub fn epsilon_sensitivity_mm(&self) -> &[f64] {
+        &self.epsilon_sensitivity_mm
+    }
+
+    /// Hertz settings over the sweep.
+    pub fn hertz(&self) -> &crate::hertz::sweep::Settings {
+        &self.hertz
+    }
+
+    /// Equivalent conicity settings.
+    pub fn conicity(&self) -> &crate::conicity::Settings {
+        &self.conicity
+    }
+
+    /// Settings of `wheelrail fleet` with this scene as its template (`[fleet]`).
+    pub fn fleet(&self) -> &FleetSettings {
+        &self.fleet
+    }
+
+    /// The scene with `figures` in place of its own (what a run computes follows them).
+    pub fn with_figures(mut self, figures: Vec<crate::stage::Figure>) -> Scene {
+        self.figures = figures;
+        self
+    }
+
+    /// The scene with its figures rendered in `formats` instead of its own.
+    pub fn with_formats(mut self, formats: Vec<ImageFormat>) -> Scene {
+        self.formats = formats;
+        self
+    }
+
+    /// Reads and checks a scene file; relative profile paths are resolved against the
+    /// file's folder.
     ///
     /// # Errors
     /// [`SceneError`] naming the file and key.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::scene::Scene;
+    /// let scene = Scene::load("reports/paper/scene.toml".as_ref()).unwrap();
+    /// assert_eq!(scene.sweep_mm().len(), 301);
+    /// assert_eq!(scene.wheel_load_n(), 70_000.0); // 70 kN in the file
+    /// ```
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
             path: path.to_path_buf(),
@@ -258,6 +369,15 @@ impl Scene {
     ///
     /// # Errors
     /// [`SceneError`] naming the key and what was expected.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::scene::Scene;
+    /// let scene = Scene::from_toml("[track]\ngauge_mm = 1668.0", "mine", ".".as_ref()).unwrap();
+    /// assert_eq!(scene.layout().gauge_mm(), 1668.0);
+    /// let error = Scene::from_toml("[track]\ngauge_mm = 14350.0", "mine", ".".as_ref());
+    /// assert!(error.unwrap_err().to_string().contains("track.gauge_mm"));
+    /// ```
     pub fn from_toml(text: &str, origin: &str, dir: &Path) -> Result<Scene, SceneError> {
         let raw: RawScene = toml::from_str(text).map_err(|e| SceneError::Syntax {
             path: origin.to_string(),
@@ -380,7 +500,7 @@ mod tests {
                 "[quasi_elastic]\nmax_step_mm = 0.05",
                 "quasi_elastic.max_step_mm",
             ),
-            // Bounds of issue 16, each naming the key as written.
+            // The bounds of the robustness checks, each naming the key as written.
             ("[material]\npoisson = -0.967", "material.poisson"),
             ("[material]\nrail_poisson = -0.1", "material.rail_poisson"),
             ("[material]\nyoung_GPa = 1e300", "material.young_GPa"),

@@ -16,109 +16,20 @@ use crate::profile::{Profile, ProfileKind};
 use std::fmt;
 
 mod heights;
+mod layout;
 mod rail;
 mod wheel;
 
 pub use heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
+pub use layout::{
+    FLANGE_BACK_RANGE_OF_GAUGE, GAUGE_POINT_DEPTH_MM, GAUGE_POINT_DEPTH_RANGE_MM, GAUGE_RANGE_MM,
+    INCLINATION_RANGE_RAD, Inclination, LayoutError, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
+    TAPING_LINE_FROM_INNER_FACE_MM, TrackLayout,
+};
 pub use rail::{
     MAX_RAIL_SLOPE, PlacedRail, RailPoint, SURFACE_TABLE_MAX_SLOPE, SURFACE_TABLE_STEP_MM,
 };
-pub use wheel::{PlacedWheel, WheelPoint};
-
-/// Distance from the inner face of a wheel to its taping line (EN 13715), mm.
-pub const TAPING_LINE_FROM_INNER_FACE_MM: f64 = 70.0;
-
-/// A rail inclination towards the track centre, as an angle in radians.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Inclination(pub f64);
-
-impl Inclination {
-    /// Parses `"1:40"`, `"1:20"`, `"vertical"` (or `"0"`), or an angle in radians (`"0.025"`).
-    ///
-    /// # Errors
-    /// A message saying what was expected when the text is none of these or the angle is not
-    /// in `[0, 0.2]` rad (an inclination outward or above about 11 degrees is not a track).
-    ///
-    /// # Example
-    /// ```
-    /// use wheelrail::track::Inclination;
-    /// let i = Inclination::parse("1:40").unwrap();
-    /// assert!((i.0 - 0.0249948).abs() < 1e-7);
-    /// ```
-    pub fn parse(text: &str) -> Result<Inclination, String> {
-        let t = text.trim();
-        let angle = if t.eq_ignore_ascii_case("vertical") || t.eq_ignore_ascii_case("upright") {
-            0.0
-        } else if let Some((one, n)) = t.split_once(':') {
-            let one: f64 = one.trim().parse().map_err(|_| expected(text))?;
-            let n: f64 = n.trim().parse().map_err(|_| expected(text))?;
-            if !(one > 0.0 && n > 0.0 && one.is_finite() && n.is_finite()) {
-                return Err(expected(text));
-            }
-            (one / n).atan()
-        } else {
-            t.parse::<f64>().map_err(|_| expected(text))?
-        };
-        if !(0.0..=0.2).contains(&angle) {
-            return Err(format!(
-                "inclination {text:?} is {angle} rad; expected 0 to 0.2 rad towards the track centre"
-            ));
-        }
-        Ok(Inclination(angle))
-    }
-}
-
-fn expected(text: &str) -> String {
-    format!(
-        "inclination {text:?} not understood; expected \"1:40\", \"1:20\", \"1:30\", \"vertical\" or an angle in radians"
-    )
-}
-
-/// Dimensions of the track and wheelset layout (all mm).
-#[derive(Debug, Clone, PartialEq)]
-pub struct TrackLayout {
-    /// Track gauge between the gauge points.
-    pub gauge_mm: f64,
-    /// Depth below the top of rail at which the gauge is measured (14 mm).
-    pub gauge_point_depth_mm: f64,
-    /// Rail inclination towards the track centre.
-    pub inclination: Inclination,
-    /// Distance between the inner faces of the wheels (flange-back, 1360 mm).
-    pub flange_back_mm: f64,
-}
-
-/// Standard gauge (mm): 1435.
-pub const STANDARD_GAUGE_MM: f64 = 1435.0;
-/// Depth below the top of rail at which the gauge is measured (mm, EN 13848-1): 14.
-pub const GAUGE_POINT_DEPTH_MM: f64 = 14.0;
-/// Distance between the inner faces of a standard wheelset's wheels (mm): 1360.
-pub const STANDARD_FLANGE_BACK_MM: f64 = 1360.0;
-
-impl TrackLayout {
-    /// Standard gauge (1435 mm, measured 14 mm below the top of rail) and a standard
-    /// wheelset (1360 mm between the wheels' inner faces), rails inclined by `inclination`.
-    ///
-    /// # Example
-    /// ```
-    /// use wheelrail::track::{Inclination, TrackLayout};
-    /// let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
-    /// assert_eq!(layout.gauge_mm, 1435.0);
-    /// assert_eq!(layout.taping_line_mm(), 750.0);
-    /// ```
-    pub fn standard(inclination: Inclination) -> TrackLayout {
-        TrackLayout {
-            gauge_mm: STANDARD_GAUGE_MM,
-            gauge_point_depth_mm: GAUGE_POINT_DEPTH_MM,
-            inclination,
-            flange_back_mm: STANDARD_FLANGE_BACK_MM,
-        }
-    }
-
-    /// Lateral position of the taping lines from the wheelset centre, `Y` in the side frame.
-    pub fn taping_line_mm(&self) -> f64 {
-        0.5 * self.flange_back_mm + TAPING_LINE_FROM_INNER_FACE_MM
-    }
-}
+pub use wheel::{NOMINAL_RADIUS_RANGE_MM, PlacedWheel, WheelPoint, check_nominal_radius};
 
 /// Why a rail could not be placed.
 #[derive(Debug, Clone, PartialEq)]
@@ -135,6 +46,26 @@ pub enum PlacementError {
         /// What was expected.
         expected: ProfileKind,
     },
+    /// A nominal wheel radius outside [`NOMINAL_RADIUS_RANGE_MM`] (or not finite).
+    NominalRadius {
+        /// The radius, mm.
+        radius_mm: f64,
+    },
+    /// A side was placed for another layout than the placement's.
+    LayoutMismatch {
+        /// The side.
+        side: Side,
+    },
+    /// A wheel lies nowhere above its rail with the wheelset centred: it cannot touch it in
+    /// any sweep of a few centimetres (a unit mistake or a wrong profile, not a result).
+    NoOverlap {
+        /// The side.
+        side: Side,
+        /// The wheel profile's name.
+        wheel: String,
+        /// The rail profile's name.
+        rail: String,
+    },
 }
 
 impl fmt::Display for PlacementError {
@@ -147,6 +78,23 @@ impl fmt::Display for PlacementError {
             PlacementError::WrongKind { profile, expected } => {
                 write!(f, "profile {profile} is not a {expected} profile")
             }
+            PlacementError::NominalRadius { radius_mm } => write!(
+                f,
+                "{} mm is not a railway wheel radius; expected {} to {} mm",
+                crate::error::Number(*radius_mm),
+                NOMINAL_RADIUS_RANGE_MM.0,
+                NOMINAL_RADIUS_RANGE_MM.1
+            ),
+            PlacementError::LayoutMismatch { side } => write!(
+                f,
+                "the {} wheel and rail were placed for another track layout",
+                side.name()
+            ),
+            PlacementError::NoOverlap { side, wheel, rail } => write!(
+                f,
+                "the {} wheel and rail do not overlap laterally with the wheelset centred (wheel {wheel}, rail {rail}): check the profiles' lateral origins and units",
+                side.name()
+            ),
         }
     }
 }
@@ -191,20 +139,20 @@ impl Side {
 #[derive(Debug, Clone)]
 pub struct SidePair {
     /// The wheel, fixed to the wheelset.
-    pub wheel: PlacedWheel,
+    pub(crate) wheel: PlacedWheel,
     /// The placed rail.
-    pub rail: PlacedRail,
+    pub(crate) rail: PlacedRail,
 }
 
 /// Both sides of a wheelset on its track.
 #[derive(Debug, Clone)]
 pub struct Placement {
     /// The layout the sides were placed with.
-    pub layout: TrackLayout,
+    pub(crate) layout: TrackLayout,
     /// Left side (y > 0).
-    pub left: SidePair,
+    pub(crate) left: SidePair,
     /// Right side (y < 0).
-    pub right: SidePair,
+    pub(crate) right: SidePair,
 }
 
 impl SidePair {
@@ -225,14 +173,102 @@ impl SidePair {
             rail: PlacedRail::place(rail, rail_profile_inclination, layout)?,
         })
     }
+
+    /// A placed wheel on a placed rail: for a caller that places a rail once and puts many
+    /// wheels on it (a fleet). [`Placement::new`] checks that both were placed for its
+    /// layout.
+    pub fn new(wheel: PlacedWheel, rail: PlacedRail) -> SidePair {
+        SidePair { wheel, rail }
+    }
+
+    /// The wheel, fixed to the wheelset.
+    pub fn wheel(&self) -> &PlacedWheel {
+        &self.wheel
+    }
+
+    /// The placed rail.
+    pub fn rail(&self) -> &PlacedRail {
+        &self.rail
+    }
+
+    /// Whether the wheel lies above some part of its rail with the wheelset centred.
+    fn overlaps(&self) -> bool {
+        let (s_lo, s_hi) = self.wheel.profile().domain();
+        let (y_lo, y_hi) = self.rail.y_range();
+        let taping = self.wheel.taping_line_mm();
+        taping + s_hi >= y_lo && taping + s_lo <= y_hi
+    }
 }
 
 impl Placement {
+    /// A wheelset on its track from its two sides, each placed for `layout`.
+    ///
+    /// # Errors
+    /// [`PlacementError::LayoutMismatch`] when a side was placed for another layout (its
+    /// taping line or gauge point is elsewhere), [`PlacementError::NoOverlap`] when a wheel
+    /// lies nowhere above its rail with the wheelset centred.
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::profile::Profile;
+    /// use wheelrail::track::{Inclination, Placement, SidePair, TrackLayout};
+    /// let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
+    /// let side = || {
+    ///     SidePair::place(Profile::s1002(), 460.0, Profile::uic60e1(), Inclination::VERTICAL, &layout)
+    /// };
+    /// let placement = Placement::new(layout.clone(), side().unwrap(), side().unwrap()).unwrap();
+    /// assert_eq!(placement.right().wheel().nominal_radius_mm(), 460.0);
+    /// ```
+    pub fn new(
+        layout: TrackLayout,
+        left: SidePair,
+        right: SidePair,
+    ) -> Result<Placement, PlacementError> {
+        for (side, pair) in [(Side::Left, &left), (Side::Right, &right)] {
+            let gauge_point_y = pair.rail.gauge_point()[0];
+            // The same arithmetic on the same layout gives the same numbers: any difference
+            // is another layout, not rounding.
+            let off = |a: f64, b: f64| (a - b).abs() > 1e-9 * a.abs().max(1.0);
+            if off(pair.wheel.taping_line_mm(), layout.taping_line_mm())
+                || off(gauge_point_y, 0.5 * layout.gauge_mm)
+            {
+                return Err(PlacementError::LayoutMismatch { side });
+            }
+            if !pair.overlaps() {
+                return Err(PlacementError::NoOverlap {
+                    side,
+                    wheel: pair.wheel.profile().name().to_string(),
+                    rail: pair.rail.profile().name().to_string(),
+                });
+            }
+        }
+        Ok(Placement {
+            layout,
+            left,
+            right,
+        })
+    }
+
+    /// The layout the sides were placed with.
+    pub fn layout(&self) -> &TrackLayout {
+        &self.layout
+    }
+
+    /// The left side (y > 0).
+    pub fn left(&self) -> &SidePair {
+        &self.left
+    }
+
+    /// The right side (y < 0).
+    pub fn right(&self) -> &SidePair {
+        &self.right
+    }
+
     /// A wheelset whose two wheels have the same profile and radius on two rails of the same
     /// profile (each side in its mirrored side frame): the usual case, placed once.
     ///
     /// `rail_profile_inclination` is the inclination the rail profile data already has
-    /// (upright: `Inclination(0.0)`); the layout's inclination is the track's.
+    /// (upright: `Inclination::VERTICAL`); the layout's inclination is the track's.
     ///
     /// # Errors
     /// [`PlacementError`] as [`SidePair::place`].
@@ -243,9 +279,9 @@ impl Placement {
     /// use wheelrail::track::{Inclination, Placement, TrackLayout};
     /// let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
     /// let placement = Placement::symmetric(
-    ///     Profile::s1002(), 460.0, Profile::uic60e1(), Inclination(0.0), layout,
+    ///     Profile::s1002(), 460.0, Profile::uic60e1(), Inclination::VERTICAL, layout,
     /// ).unwrap();
-    /// assert_eq!(placement.left.wheel.nominal_radius_mm(), 460.0);
+    /// assert_eq!(placement.left().wheel().nominal_radius_mm(), 460.0);
     /// ```
     pub fn symmetric(
         wheel: Profile,
@@ -261,11 +297,8 @@ impl Placement {
             rail_profile_inclination,
             &layout,
         )?;
-        Ok(Placement {
-            layout,
-            right: left.clone(),
-            left,
-        })
+        let right = left.clone();
+        Placement::new(layout, left, right)
     }
 
     /// The side pair of `side`.
@@ -291,20 +324,5 @@ impl Placement {
                 pair.rail.at(p.y).map(|r| r0 + p.z - r.z)
             })
             .fold(f64::INFINITY, f64::min)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn inclination_parsing() {
-        assert!(Inclination::parse("vertical").unwrap().0.abs() < 1e-15);
-        assert!((Inclination::parse("1:20").unwrap().0 - 0.05f64.atan()).abs() < 1e-15);
-        assert!((Inclination::parse("0.025").unwrap().0 - 0.025).abs() < 1e-15);
-        assert!(Inclination::parse("1:0").is_err());
-        assert!(Inclination::parse("steep").is_err());
-        assert!(Inclination::parse("-0.1").is_err());
     }
 }

@@ -1,5 +1,14 @@
 //! A rail placed in its side frame: rotated by its inclination, its top at `Z = 0` and its
 //! gauge point at `Y = gauge / 2`, with the tables that make its surface cheap to read.
+//!
+//! Run time is spent evaluating the gap between a wheel point and the rail under it, so the
+//! placement builds these tables once per rail: [`PlacedRail::at`] reads quintic Hermite
+//! pieces of `Z(Y)` every [`SURFACE_TABLE_STEP_MM`] built from exact values and
+//! derivatives; pieces that are steep (slope above [`SURFACE_TABLE_MAX_SLOPE`]), hold a
+//! section joint, or belong to a sampled rail fall back to [`PlacedRail::exact_at`],
+//! Newton's inversion of the profile from a cubic table of `u(Y)`. The unit test
+//! `surface_table_matches_the_exact_inversion` bounds the difference of the two over the
+//! whole head.
 
 use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
@@ -82,6 +91,53 @@ struct SurfaceTable {
     pieces: Vec<[f64; 6]>,
 }
 
+/// The rail profile sampled every [`PLACEMENT_SCAN_STEP_MM`] for its placement.
+struct Scan {
+    /// Profile coordinates of the samples.
+    us: Vec<f64>,
+    /// Every sample's rotated point and tangent `[Y, Z, dY/du, dZ/du]`, from one evaluation
+    /// each.
+    samples: Vec<[f64; 4]>,
+}
+
+impl Scan {
+    fn of(profile: &Profile, rotation: UnitComplex<f64>) -> Scan {
+        let (lo, hi) = profile.domain();
+        let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
+        let us: Vec<f64> = (0..=n)
+            .map(|i| lo + (hi - lo) * i as f64 / n as f64)
+            .collect();
+        let samples = us
+            .iter()
+            .map(|&u| {
+                let [v, d1, _] = profile.eval(u);
+                let p = rotation * Point2::new(u, v);
+                let t = rotation * Vector2::new(1.0, d1);
+                [p.x, p.y, t.x, t.y]
+            })
+            .collect();
+        Scan { us, samples }
+    }
+
+    /// The running surface `(u_lo, u_hi)`: the connected stretch around the top sample
+    /// `i_top` where Y(u) increases and the placed slope stays below [`MAX_RAIL_SLOPE`].
+    fn running_surface(&self, i_top: usize) -> (f64, f64) {
+        let steep = |i: usize| {
+            let [_, _, ty, tz] = self.samples[i];
+            ty <= 0.0 || tz.abs() > MAX_RAIL_SLOPE * ty
+        };
+        let mut i_lo = i_top;
+        while i_lo > 0 && !steep(i_lo - 1) {
+            i_lo -= 1;
+        }
+        let mut i_hi = i_top;
+        while i_hi + 1 < self.us.len() && !steep(i_hi + 1) {
+            i_hi += 1;
+        }
+        (self.us[i_lo], self.us[i_hi])
+    }
+}
+
 impl PlacedRail {
     /// Places `profile` (upright, or already inclined by `profile_inclination`) for a track
     /// with `layout`, on the side frame's positive Y.
@@ -115,80 +171,14 @@ impl PlacedRail {
             heights: HeightTable::default(),
             surface_table: SurfaceTable::default(),
         };
-        let (lo, hi) = rail.profile.domain();
-        let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
-        let us: Vec<f64> = (0..=n)
-            .map(|i| lo + (hi - lo) * i as f64 / n as f64)
-            .collect();
-
-        // Every sample's rotated point and tangent, from one evaluation each.
-        let samples: Vec<[f64; 4]> = us
-            .iter()
-            .map(|&u| {
-                let [v, d1, _] = rail.profile.eval(u);
-                let p = rotation * Point2::new(u, v);
-                let t = rotation * Vector2::new(1.0, d1);
-                [p.x, p.y, t.x, t.y]
-            })
-            .collect();
-
-        // Top: maximum of Z(u), refined by bisection on dZ/du (concave near the top).
-        let i_top = (0..us.len())
-            .max_by(|&a, &b| samples[a][1].total_cmp(&samples[b][1]))
-            .unwrap_or(0);
-        let u_top = refine_extremum(
-            |u| rail.rotated_tangent(u)[1],
-            us[i_top.saturating_sub(1)],
-            us[(i_top + 1).min(us.len() - 1)],
-        );
-        let top = rail.rotated(u_top);
-
-        // Gauge point: the most gauge-side (smallest Y) point with Z >= top - depth.
+        let scan = Scan::of(&rail.profile, rotation);
+        let (i_top, top) = rail.find_top(&scan);
         let floor = top[1] - layout.gauge_point_depth_mm;
-        let mut best: Option<(usize, f64)> = None;
-        for (i, p) in samples.iter().enumerate() {
-            if p[1] >= floor && best.is_none_or(|(_, y)| p[0] < y) {
-                best = Some((i, p[0]));
-            }
-        }
-        let Some((i_gp, _)) = best else {
-            return Err(PlacementError::NoGaugePoint {
-                profile: rail.profile.name().to_string(),
-            });
-        };
-        let below = |i: usize| samples[i][1] < floor;
-        let u_gp = if i_gp > 0 && below(i_gp - 1) {
-            // The depth line cuts the head between two samples: bisect Z(u) = floor.
-            bisect(|u| rail.rotated(u)[1] - floor, us[i_gp - 1], us[i_gp])
-        } else if i_gp + 1 < us.len() && below(i_gp + 1) {
-            bisect(|u| rail.rotated(u)[1] - floor, us[i_gp + 1], us[i_gp])
-        } else {
-            refine_extremum(
-                |u| rail.rotated_tangent(u)[0],
-                us[i_gp.saturating_sub(1)],
-                us[(i_gp + 1).min(us.len() - 1)],
-            )
-        };
-        let gp = rail.rotated(u_gp);
+        let gp = rail.find_gauge_point(&scan, floor)?;
         rail.frame.translation = Translation2::new(0.5 * layout.gauge_mm - gp[0], -top[1]);
         rail.gauge_point = rail.to_side(gp);
         rail.top = rail.to_side(top);
-
-        // Running surface: the connected stretch around the top where Y(u) increases and the
-        // placed slope stays below MAX_RAIL_SLOPE.
-        let steep = |i: usize| {
-            let [_, _, ty, tz] = samples[i];
-            ty <= 0.0 || tz.abs() > MAX_RAIL_SLOPE * ty
-        };
-        let mut i_lo = i_top;
-        while i_lo > 0 && !steep(i_lo - 1) {
-            i_lo -= 1;
-        }
-        let mut i_hi = i_top;
-        while i_hi + 1 < us.len() && !steep(i_hi + 1) {
-            i_hi += 1;
-        }
-        rail.surface = (us[i_lo], us[i_hi]);
+        rail.surface = scan.running_surface(i_top);
         rail.y_range = (
             rail.point_of(rail.surface.0)[0],
             rail.point_of(rail.surface.1)[0],
@@ -198,6 +188,52 @@ impl PlacedRail {
         rail.tabulate_surface();
         rail.heights = HeightTable::new(&rail, HEIGHT_TABLE_STEP_MM);
         Ok(rail)
+    }
+
+    /// Top of the rail in the rotated profile frame: the maximum of Z(u), refined by
+    /// bisection on dZ/du (concave near the top); with the index of the highest sample.
+    fn find_top(&self, scan: &Scan) -> (usize, [f64; 2]) {
+        let (us, samples) = (&scan.us, &scan.samples);
+        let i_top = (0..us.len())
+            .max_by(|&a, &b| samples[a][1].total_cmp(&samples[b][1]))
+            .unwrap_or(0);
+        let u_top = refine_extremum(
+            |u| self.rotated_tangent(u)[1],
+            us[i_top.saturating_sub(1)],
+            us[(i_top + 1).min(us.len() - 1)],
+        );
+        (i_top, self.rotated(u_top))
+    }
+
+    /// Gauge point in the rotated profile frame: the most gauge-side (smallest Y) point with
+    /// Z >= `floor` (the top less the gauge point depth).
+    fn find_gauge_point(&self, scan: &Scan, floor: f64) -> Result<[f64; 2], PlacementError> {
+        let (us, samples) = (&scan.us, &scan.samples);
+        let mut best: Option<(usize, f64)> = None;
+        for (i, p) in samples.iter().enumerate() {
+            if p[1] >= floor && best.is_none_or(|(_, y)| p[0] < y) {
+                best = Some((i, p[0]));
+            }
+        }
+        let Some((i_gp, _)) = best else {
+            return Err(PlacementError::NoGaugePoint {
+                profile: self.profile.name().to_string(),
+            });
+        };
+        let below = |i: usize| samples[i][1] < floor;
+        let u_gp = if i_gp > 0 && below(i_gp - 1) {
+            // The depth line cuts the head between two samples: bisect Z(u) = floor.
+            bisect(|u| self.rotated(u)[1] - floor, us[i_gp - 1], us[i_gp])
+        } else if i_gp + 1 < us.len() && below(i_gp + 1) {
+            bisect(|u| self.rotated(u)[1] - floor, us[i_gp + 1], us[i_gp])
+        } else {
+            refine_extremum(
+                |u| self.rotated_tangent(u)[0],
+                us[i_gp.saturating_sub(1)],
+                us[(i_gp + 1).min(us.len() - 1)],
+            )
+        };
+        Ok(self.rotated(u_gp))
     }
 
     /// The profile this rail was placed from.
@@ -537,7 +573,7 @@ mod tests {
     #[test]
     fn uic60_at_1_in_40_has_its_top_43_03_mm_field_side_of_the_gauge_point() {
         let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
         // Gauge point exactly at half the gauge (bisection to 1e-15).
         assert!((rail.gauge_point()[0] - 717.5).abs() < 1e-9);
         assert!((rail.gauge_point()[1] + 14.0).abs() < 1e-9);
@@ -556,7 +592,8 @@ mod tests {
                 inclination: Inclination::parse(incl).unwrap(),
                 ..paper_layout()
             };
-            let rail = PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &layout).unwrap();
+            let rail =
+                PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &layout).unwrap();
             let offset = rail.top()[0] - rail.gauge_point()[0];
             assert!((offset - expected).abs() < tol, "{incl}: {offset}");
         }
@@ -565,7 +602,7 @@ mod tests {
     #[test]
     fn rail_inverse_is_exact() {
         let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.profile().domain();
         for i in 0..=200 {
             let u = lo + (hi - lo) * f64::from(i) / 200.0;
@@ -581,7 +618,7 @@ mod tests {
         // Every 1e-3 mm over the placed UIC60 at 1:40: the quintic pieces against Newton's
         // inversion of the analytic head.
         let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination(0.0), &paper_layout()).unwrap();
+            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.y_range();
         let (mut tabulated, mut worst) = (0, [0.0f64; 3]);
         let n = ((hi - lo) / 1e-3) as usize;

@@ -284,6 +284,8 @@ impl ReadError {
     }
 }
 
+// One arm per variant: the match is the list of the readers' messages, read and reviewed
+// together, so it is kept whole (ARCHITECTURE.md).
 impl fmt::Display for ReadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.origin())?;

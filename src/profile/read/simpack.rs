@@ -96,20 +96,9 @@ pub(super) fn parse(
     kind: ProfileKind,
     origin: &str,
 ) -> Result<Vec<RawPoint>, ReadError> {
-    let malformed = |line: usize, problem: String| ReadError::Malformed {
-        origin: origin.to_owned(),
-        line,
-        problem,
-    };
-    let mut block = Block::Outside;
+    let mut reader = Reader::new(origin);
     let mut saw_content = false;
-    let mut saw_points_block = false;
-    let mut declared: Option<(ProfileKind, usize)> = None;
-    let mut proc = Processing::default();
-    // Points in file units and file axes, before processing.
-    let mut points: Vec<RawPoint> = Vec::new();
     let mut last_line = 0;
-
     for (index, raw) in text.lines().enumerate() {
         let line = index + 1;
         last_line = line;
@@ -118,6 +107,77 @@ pub(super) fn parse(
             continue;
         }
         saw_content = true;
+        reader.line(content, line)?;
+    }
+    if !saw_content {
+        return Err(ReadError::Empty {
+            origin: origin.to_owned(),
+        });
+    }
+    reader.finish(kind, last_line)
+}
+
+/// What a SIMPACK file has said so far, read line by line.
+struct Reader<'a> {
+    origin: &'a str,
+    block: Block,
+    saw_points_block: bool,
+    /// The header's `type` and its line.
+    declared: Option<(ProfileKind, usize)>,
+    proc: Processing,
+    /// Points in file units and file axes, before processing.
+    points: Vec<RawPoint>,
+}
+
+impl<'a> Reader<'a> {
+    fn new(origin: &'a str) -> Reader<'a> {
+        Reader {
+            origin,
+            block: Block::Outside,
+            saw_points_block: false,
+            declared: None,
+            proc: Processing::default(),
+            points: Vec::new(),
+        }
+    }
+
+    fn malformed(&self, line: usize, problem: String) -> ReadError {
+        malformed(self.origin, line, problem)
+    }
+
+    /// Reads one line's content (comment cut, trimmed, not empty).
+    fn line(&mut self, content: &str, line: usize) -> Result<(), ReadError> {
+        if self.block_marker(content, line)? {
+            return Ok(());
+        }
+        match self.block {
+            Block::Outside => Err(self.malformed(
+                line,
+                format!("unexpected text outside the header and spline blocks: `{content}`"),
+            )),
+            Block::Points => {
+                self.points.push(point_row(content, self.origin, line)?);
+                Ok(())
+            }
+            Block::Header | Block::Spline => {
+                let Some((key, value)) = content.split_once('=') else {
+                    return Err(self.malformed(
+                        line,
+                        format!("expected `key = value` in the {} block", self.block.name()),
+                    ));
+                };
+                let (key, value) = (key.trim(), value.trim());
+                if self.block == Block::Header {
+                    self.header_entry(key, value, line)
+                } else {
+                    self.spline_entry(key, value, line)
+                }
+            }
+        }
+    }
+
+    /// Enters or leaves a block if `content` is a block marker; whether it was one.
+    fn block_marker(&mut self, content: &str, line: usize) -> Result<bool, ReadError> {
         let next = match content {
             "header.begin" => Some((Block::Outside, Block::Header)),
             "header.end" => Some((Block::Header, Block::Outside)),
@@ -127,133 +187,142 @@ pub(super) fn parse(
             "point.end" => Some((Block::Points, Block::Spline)),
             _ => None,
         };
-        if let Some((required, entered)) = next {
-            if block != required {
-                return Err(malformed(
-                    line,
-                    format!(
-                        "`{content}` inside the {} block (misnested or missing block markers)",
-                        block.name()
-                    ),
-                ));
-            }
-            if entered == Block::Points {
-                if saw_points_block {
-                    return Err(malformed(line, "a second point block".to_owned()));
-                }
-                saw_points_block = true;
-            }
-            block = entered;
-            continue;
+        let Some((required, entered)) = next else {
+            return Ok(false);
+        };
+        if self.block != required {
+            return Err(self.malformed(
+                line,
+                format!(
+                    "`{content}` inside the {} block (misnested or missing block markers)",
+                    self.block.name()
+                ),
+            ));
         }
-        match block {
-            Block::Outside => {
-                return Err(malformed(
-                    line,
-                    format!("unexpected text outside the header and spline blocks: `{content}`"),
-                ));
+        if entered == Block::Points {
+            if self.saw_points_block {
+                return Err(self.malformed(line, "a second point block".to_owned()));
             }
-            Block::Points => points.push(point_row(content, origin, line)?),
-            Block::Header | Block::Spline => {
-                let Some((key, value)) = content.split_once('=') else {
-                    return Err(malformed(
-                        line,
-                        format!("expected `key = value` in the {} block", block.name()),
-                    ));
-                };
-                let key = key.trim();
-                let value = value.trim();
-                let num = |key: &str| {
-                    fields::number(value, origin, line, Field::Key(key.to_owned()), "a number")
-                };
-                if block == Block::Header {
-                    if key == "type" {
-                        let found = match num(key)? {
-                            t if t.abs() < 0.5 => ProfileKind::Rail,
-                            t if (t - 1.0).abs() < 0.5 => ProfileKind::Wheel,
-                            _ => {
-                                return Err(malformed(
-                                    line,
-                                    format!("type = {value}: expected 0 (rail) or 1 (wheel)"),
-                                ));
-                            }
-                        };
-                        declared = Some((found, line));
-                    }
-                    continue;
-                }
-                let flag = |key: &str| -> Result<bool, ReadError> {
-                    match num(key)? {
-                        v if v.abs() < 0.5 => Ok(false),
-                        v if (v - 1.0).abs() < 0.5 => Ok(true),
-                        _ => Err(malformed(line, format!("{key} = {value}: expected 0 or 1"))),
-                    }
-                };
-                let entry = |key: &str| num(key).map(|value| Entry { value, line });
-                match key {
-                    "point.dist.min" => proc.point_dist_min = num(key)?,
-                    "shift.y" => proc.shift[0] = num(key)?,
-                    "shift.z" => proc.shift[1] = num(key)?,
-                    "rotate" => proc.rotate = Some(entry(key)?),
-                    "bound.y.min" => proc.bound_y[0] = num(key)?,
-                    "bound.y.max" => proc.bound_y[1] = num(key)?,
-                    "bound.z.min" => proc.bound_z[0] = num(key)?,
-                    "bound.z.max" => proc.bound_z[1] = num(key)?,
-                    "mirror.y" => proc.mirror_y = flag(key)?,
-                    "mirror.z" => proc.mirror_z = flag(key)?,
-                    "inversion" => proc.inversion = flag(key)?,
-                    "units.len.f" => proc.units_len = entry(key)?,
-                    "units.ang.f" => proc.units_ang = entry(key)?,
-                    // approx.smooth (SIMPACK's own smoothing), file, comment, type, ... do not
-                    // change the points.
-                    _ => {}
-                }
-            }
+            self.saw_points_block = true;
         }
+        self.block = entered;
+        Ok(true)
     }
 
-    if !saw_content {
-        return Err(ReadError::Empty {
-            origin: origin.to_owned(),
-        });
-    }
-    if block != Block::Outside {
-        return Err(malformed(
-            last_line,
-            format!(
-                "the file ends inside the {0} block (missing `{0}.end`): truncated?",
-                block.name()
-            ),
-        ));
-    }
-    if !saw_points_block {
-        return Err(malformed(
-            last_line,
-            "no `point.begin ... point.end` block in the file".to_owned(),
-        ));
-    }
-    super::validate::check_kind(declared.map(|(k, line)| (k, Some(line))), kind, origin)?;
-    for (key, unit) in [
-        ("units.len.f", proc.units_len),
-        ("units.ang.f", proc.units_ang),
-    ] {
-        if unit.value <= 0.0 {
-            return Err(ReadError::BadUnitFactor {
-                origin: origin.to_owned(),
-                line: unit.line,
-                key,
-                value: unit.value,
-            });
+    /// A `key = value` of the header: only `type` (0 rail, 1 wheel) matters.
+    fn header_entry(&mut self, key: &str, value: &str, line: usize) -> Result<(), ReadError> {
+        if key == "type" {
+            let found = match number(self.origin, key, value, line)? {
+                t if t.abs() < 0.5 => ProfileKind::Rail,
+                t if (t - 1.0).abs() < 0.5 => ProfileKind::Wheel,
+                _ => {
+                    return Err(self.malformed(
+                        line,
+                        format!("type = {value}: expected 0 (rail) or 1 (wheel)"),
+                    ));
+                }
+            };
+            self.declared = Some((found, line));
         }
+        Ok(())
     }
-    apply_processing(&mut points, &proc, origin)?;
-    // SIMPACK frame -> side frame: wheels are (s, F) = (y, z) already; rail z points down.
-    if kind == ProfileKind::Rail {
-        for p in &mut points {
-            p.vert = -p.vert;
+
+    /// A `key = value` of the spline block: the processing of the points.
+    fn spline_entry(&mut self, key: &str, value: &str, line: usize) -> Result<(), ReadError> {
+        let origin = self.origin;
+        let num = |key: &str| number(origin, key, value, line);
+        let flag = |key: &str| -> Result<bool, ReadError> {
+            match num(key)? {
+                v if v.abs() < 0.5 => Ok(false),
+                v if (v - 1.0).abs() < 0.5 => Ok(true),
+                _ => Err(malformed(
+                    origin,
+                    line,
+                    format!("{key} = {value}: expected 0 or 1"),
+                )),
+            }
+        };
+        let entry = |key: &str| num(key).map(|value| Entry { value, line });
+        let proc = &mut self.proc;
+        match key {
+            "point.dist.min" => proc.point_dist_min = num(key)?,
+            "shift.y" => proc.shift[0] = num(key)?,
+            "shift.z" => proc.shift[1] = num(key)?,
+            "rotate" => proc.rotate = Some(entry(key)?),
+            "bound.y.min" => proc.bound_y[0] = num(key)?,
+            "bound.y.max" => proc.bound_y[1] = num(key)?,
+            "bound.z.min" => proc.bound_z[0] = num(key)?,
+            "bound.z.max" => proc.bound_z[1] = num(key)?,
+            "mirror.y" => proc.mirror_y = flag(key)?,
+            "mirror.z" => proc.mirror_z = flag(key)?,
+            "inversion" => proc.inversion = flag(key)?,
+            "units.len.f" => proc.units_len = entry(key)?,
+            "units.ang.f" => proc.units_ang = entry(key)?,
+            // approx.smooth (SIMPACK's own smoothing), file, comment, type, ... do not
+            // change the points.
+            _ => {}
         }
+        Ok(())
     }
-    Ok(points)
+
+    /// Checks the file as a whole and returns its points processed, in the side frame of
+    /// `kind`.
+    fn finish(self, kind: ProfileKind, last_line: usize) -> Result<Vec<RawPoint>, ReadError> {
+        let origin = self.origin;
+        if self.block != Block::Outside {
+            return Err(self.malformed(
+                last_line,
+                format!(
+                    "the file ends inside the {0} block (missing `{0}.end`): truncated?",
+                    self.block.name()
+                ),
+            ));
+        }
+        if !self.saw_points_block {
+            return Err(self.malformed(
+                last_line,
+                "no `point.begin ... point.end` block in the file".to_owned(),
+            ));
+        }
+        let declared = self.declared.map(|(k, line)| (k, Some(line)));
+        super::validate::check_kind(declared, kind, origin)?;
+        let proc = self.proc;
+        for (key, unit) in [
+            ("units.len.f", proc.units_len),
+            ("units.ang.f", proc.units_ang),
+        ] {
+            if unit.value <= 0.0 {
+                return Err(ReadError::BadUnitFactor {
+                    origin: origin.to_owned(),
+                    line: unit.line,
+                    key,
+                    value: unit.value,
+                });
+            }
+        }
+        let mut points = self.points;
+        apply_processing(&mut points, &proc, origin)?;
+        // SIMPACK frame -> side frame: wheels are (s, F) = (y, z) already; rail z points down.
+        if kind == ProfileKind::Rail {
+            for p in &mut points {
+                p.vert = -p.vert;
+            }
+        }
+        Ok(points)
+    }
+}
+
+fn malformed(origin: &str, line: usize, problem: String) -> ReadError {
+    ReadError::Malformed {
+        origin: origin.to_owned(),
+        line,
+        problem,
+    }
+}
+
+/// The number of `key = value`, an error naming the key otherwise.
+fn number(origin: &str, key: &str, value: &str, line: usize) -> Result<f64, ReadError> {
+    fields::number(value, origin, line, Field::Key(key.to_owned()), "a number")
 }
 
 fn point_row(content: &str, origin: &str, line: usize) -> Result<RawPoint, ReadError> {

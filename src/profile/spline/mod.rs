@@ -19,54 +19,18 @@
 //! upwards. In the side frames of [`crate::profile::read`] a convex rail crown (z up) has
 //! curvature `-1/R`, and so has a crowned wheel tread in `(s, F)` (F grows towards the flange
 //! tip, i.e. away from the axle): `circ_r300.prr` gives -1/300 and `circ_r100.prw` -1/100.
+//!
+//! The parts: the spline and its evaluation (here), its fit (`fit.rs`), the filter that
+//! chooses its smoothing (`filter.rs`), and [`fornberg_weights`] (`fornberg.rs`).
 
-use std::f64::consts::PI;
+mod filter;
+mod fit;
+mod fornberg;
+
+pub use filter::{DEFAULT_FILTER_WAVELENGTH_MM, default_lambda, lambda_for_wavelength};
+pub use fornberg::fornberg_weights;
+
 use std::fmt;
-
-/// Shortest wavelength, mm, that [`default_lambda`] keeps (the spline's gain at this
-/// wavelength is one half; longer waves pass, shorter ones are damped as the fourth power).
-///
-/// Why 4 mm (measured in this module's tests): with 0.5 micrometre of noise at 0.1 mm
-/// spacing the largest curvature error on a rail crown drops from 810 1/m (interpolating) to
-/// 0.49 1/m, 15 % of the crown's 3.3 1/m (3 mm would leave 1.1 1/m, 5 mm 0.25 1/m); on exact
-/// samples of an R13 arc (the UIC60 gauge corner and S1002 flange root radius) it biases the
-/// curvature by 0.7 % and the height by 0.6 micrometres (5 mm: 3 % and 3 micrometres).
-/// Curvature jumps at section joints are spread over about this length, so use
-/// `lambda = 0` for exact point files (benchmark profiles, generated CSVs) and pass your own
-/// `lambda` through [`lambda_for_wavelength`] for noisier or coarser measurements.
-pub const DEFAULT_FILTER_WAVELENGTH_MM: f64 = 4.0;
-
-/// The smoothing parameter (mm^3) whose spline halves waves of `wavelength_mm` in data
-/// spaced `spacing_mm` apart.
-///
-/// With spacing `h` the sum of squares in [`SmoothingSpline::fit`] is `(1/h)` times an
-/// integral, so the spline minimises `int (y - f)^2 + lambda h int f''^2`: a low-pass filter
-/// with gain `1 / (1 + lambda h omega^4)`, one half at `omega = 2 pi / L`. Hence
-/// `lambda = (L / (2 pi))^4 / h`. A non-positive or non-finite spacing gives 0 (no smoothing).
-///
-/// ```
-/// use wheelrail::profile::spline::lambda_for_wavelength;
-/// // L = 2 pi mm at 1 mm spacing: lambda = 1 mm^3.
-/// assert!((lambda_for_wavelength(2.0 * std::f64::consts::PI, 1.0) - 1.0).abs() < 1e-12);
-/// ```
-pub fn lambda_for_wavelength(wavelength_mm: f64, spacing_mm: f64) -> f64 {
-    if !(spacing_mm > 0.0 && spacing_mm.is_finite()) {
-        return 0.0;
-    }
-    (wavelength_mm / (2.0 * PI)).powi(4) / spacing_mm
-}
-
-/// The default smoothing parameter for measured profile points `x` (mm):
-/// [`lambda_for_wavelength`] of [`DEFAULT_FILTER_WAVELENGTH_MM`] at the mean point spacing.
-/// Scale-aware: the filter length stays 4 mm whether the points are 0.05 or 0.5 mm apart.
-pub fn default_lambda(x: &[f64]) -> f64 {
-    match (x.first(), x.last()) {
-        (Some(a), Some(b)) if x.len() >= 2 => {
-            lambda_for_wavelength(DEFAULT_FILTER_WAVELENGTH_MM, (b - a) / (x.len() - 1) as f64)
-        }
-        _ => 0.0,
-    }
-}
 
 /// Signed curvature (1/mm) of a graph with slope `d1` and second derivative `d2` (1/mm):
 /// `d2 / (1 + d1^2)^(3/2)`. Positive where the graph bends upwards.
@@ -189,71 +153,6 @@ pub struct SmoothingSpline {
 }
 
 impl SmoothingSpline {
-    /// Fits the smoothing spline to points `(x[i], y[i])`.
-    ///
-    /// # Units
-    ///
-    /// x and y in mm; `lambda` in mm^3 (the penalty integral has units mm^2/mm^4 * mm =
-    /// 1/mm, the sum of squares mm^2). Use [`default_lambda`] for measured profiles, 0 to
-    /// interpolate exact points.
-    ///
-    /// # Errors
-    ///
-    /// [`SplineError::TooFewPoints`] below 2 points, [`SplineError::LengthMismatch`],
-    /// [`SplineError::NonFinite`], [`SplineError::NonIncreasing`] unless x increases
-    /// strictly, [`SplineError::InvalidLambda`] for negative or non-finite `lambda`, and
-    /// [`SplineError::NumericalBreakdown`] if the solve fails.
-    pub fn fit(x: &[f64], y: &[f64], lambda: f64) -> Result<Self, SplineError> {
-        if x.len() != y.len() {
-            return Err(SplineError::LengthMismatch {
-                x: x.len(),
-                y: y.len(),
-            });
-        }
-        let n = x.len();
-        if n < 2 {
-            return Err(SplineError::TooFewPoints { found: n });
-        }
-        if let Some(index) = (0..n).find(|&i| !(x[i].is_finite() && y[i].is_finite())) {
-            return Err(SplineError::NonFinite { index });
-        }
-        if let Some(index) = (1..n).find(|&i| x[i] <= x[i - 1]) {
-            return Err(SplineError::NonIncreasing { index });
-        }
-        if !(lambda >= 0.0 && lambda.is_finite()) {
-            return Err(SplineError::InvalidLambda { lambda });
-        }
-        let h: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
-        let gamma = second_derivatives(&h, y, lambda)?;
-        let values = smoothed_values(&h, y, &gamma, lambda);
-        let coeffs: Vec<[f64; 4]> = (0..n - 1)
-            .map(|i| {
-                let (g0, g1, c0, c1, hi) = (values[i], values[i + 1], gamma[i], gamma[i + 1], h[i]);
-                [
-                    g0,
-                    (g1 - g0) / hi - hi * (2.0 * c0 + c1) / 6.0,
-                    c0 / 2.0,
-                    (c1 - c0) / (6.0 * hi),
-                ]
-            })
-            .collect();
-        let last = coeffs[n - 2];
-        let h_last = h[n - 2];
-        let end_slopes = [
-            coeffs[0][1],
-            last[1] + h_last * (2.0 * last[2] + 3.0 * h_last * last[3]),
-        ];
-        let (buckets, bucket_scale) = bucket_table(x);
-        Ok(SmoothingSpline {
-            knots: x.to_vec(),
-            values,
-            coeffs,
-            buckets,
-            bucket_scale,
-            end_slopes,
-        })
-    }
-
     /// `[f(x), f'(x), f''(x)]`; linear extrapolation outside [`domain`](Self::domain)
     /// (f'' = 0 there). NaN in, NaN out.
     pub fn eval(&self, x: f64) -> [f64; 3] {
@@ -305,99 +204,6 @@ impl SmoothingSpline {
     }
 }
 
-/// Second derivatives at all knots (zero at both ends): the Reinsch system
-/// `(R + lambda Q^T Q) gamma = Q^T y` (Green & Silverman eq. 2.12 with unit weights).
-fn second_derivatives(h: &[f64], y: &[f64], lambda: f64) -> Result<Vec<f64>, SplineError> {
-    let n = y.len();
-    let mut gamma = vec![0.0; n];
-    if n < 3 {
-        return Ok(gamma);
-    }
-    let m = n - 2;
-    // Pentadiagonal symmetric matrix: diagonal, first and second off-diagonals; row k is the
-    // interior knot j = k + 1.
-    let mut diag = vec![0.0; m];
-    let mut off1 = vec![0.0; m];
-    let mut off2 = vec![0.0; m];
-    let mut rhs = vec![0.0; m];
-    for k in 0..m {
-        let j = k + 1;
-        let (ha, hb) = (h[j - 1], h[j]);
-        let (ia, ib) = (1.0 / ha, 1.0 / hb);
-        diag[k] = (ha + hb) / 3.0 + lambda * (ia * ia + (ia + ib) * (ia + ib) + ib * ib);
-        if k + 1 < m {
-            let ic = 1.0 / h[j + 1];
-            off1[k] = hb / 6.0 - lambda * ib * (ia + 2.0 * ib + ic);
-        }
-        if k + 2 < m {
-            off2[k] = lambda * ib / h[j + 1];
-        }
-        rhs[k] = (y[j + 1] - y[j]) * ib - (y[j] - y[j - 1]) * ia;
-    }
-    // LDL^T with unit lower L of bandwidth 2 (l1: first, l2: second sub-diagonal).
-    let mut d = vec![0.0; m];
-    let mut l1 = vec![0.0; m];
-    let mut l2 = vec![0.0; m];
-    for k in 0..m {
-        let mut dk = diag[k];
-        if k >= 1 {
-            dk -= l1[k - 1] * l1[k - 1] * d[k - 1];
-        }
-        if k >= 2 {
-            dk -= l2[k - 2] * l2[k - 2] * d[k - 2];
-        }
-        if !(dk > 0.0 && dk.is_finite()) {
-            return Err(SplineError::NumericalBreakdown { index: k + 1 });
-        }
-        d[k] = dk;
-        let mut o1 = off1[k];
-        if k >= 1 {
-            o1 -= l2[k - 1] * l1[k - 1] * d[k - 1];
-        }
-        l1[k] = o1 / dk;
-        l2[k] = off2[k] / dk;
-    }
-    // Forward, diagonal and backward substitution, in place in rhs.
-    for k in 0..m {
-        if k >= 1 {
-            rhs[k] -= l1[k - 1] * rhs[k - 1];
-        }
-        if k >= 2 {
-            rhs[k] -= l2[k - 2] * rhs[k - 2];
-        }
-    }
-    for k in 0..m {
-        rhs[k] /= d[k];
-    }
-    for k in (0..m).rev() {
-        if k + 1 < m {
-            rhs[k] -= l1[k] * rhs[k + 1];
-        }
-        if k + 2 < m {
-            rhs[k] -= l2[k] * rhs[k + 2];
-        }
-    }
-    gamma[1..=m].copy_from_slice(&rhs);
-    Ok(gamma)
-}
-
-/// Spline values at the knots: `g = y - lambda Q gamma` (Green & Silverman eq. 2.11).
-fn smoothed_values(h: &[f64], y: &[f64], gamma: &[f64], lambda: f64) -> Vec<f64> {
-    let n = y.len();
-    (0..n)
-        .map(|i| {
-            let mut q_gamma = 0.0;
-            if i >= 1 {
-                q_gamma += (gamma[i - 1] - gamma[i]) / h[i - 1];
-            }
-            if i + 1 < n {
-                q_gamma += (gamma[i + 1] - gamma[i]) / h[i];
-            }
-            y[i] - lambda * q_gamma
-        })
-        .collect()
-}
-
 /// Equal-width buckets over the knots, one per interval on average.
 fn bucket_table(x: &[f64]) -> (Vec<usize>, f64) {
     let intervals = x.len() - 1;
@@ -415,60 +221,10 @@ fn bucket_table(x: &[f64]) -> (Vec<usize>, f64) {
     (buckets, scale)
 }
 
-/// Finite-difference weights on arbitrary nodes (Fornberg 1988, "Generation of finite
-/// difference formulas on arbitrarily spaced grids", Math. Comp. 51, 699-706; the paper's
-/// ref. 12).
-///
-/// Returns `w` with `w[k][j]` the weight of `f(xs[j])` in the approximation of the k-th
-/// derivative at `x0`, for `k = 0..=max_order`: `f^(k)(x0) ~ sum_j w[k][j] f(xs[j])`. The
-/// formula is exact for polynomials of degree below `xs.len()`. Nodes must be distinct
-/// (repeated nodes give non-finite weights); no order of the nodes is required. Orders at or
-/// above `xs.len()` get zero weights (no such formula exists on so few nodes).
-///
-/// ```
-/// use wheelrail::profile::spline::fornberg_weights;
-/// // The classic central second difference on a uniform grid: (1, -2, 1) / h^2.
-/// let w = fornberg_weights(0.0, &[-0.5, 0.0, 0.5], 2);
-/// for (got, want) in w[2].iter().zip([4.0, -8.0, 4.0]) {
-///     assert!((got - want).abs() < 1e-12);
-/// }
-/// ```
-pub fn fornberg_weights(x0: f64, xs: &[f64], max_order: usize) -> Vec<Vec<f64>> {
-    let n = xs.len();
-    let mut w = vec![vec![0.0; n]; max_order + 1];
-    if n == 0 {
-        return w;
-    }
-    w[0][0] = 1.0;
-    let mut c1 = 1.0;
-    let mut c4 = xs[0] - x0;
-    for i in 1..n {
-        let orders = i.min(max_order);
-        let mut c2 = 1.0;
-        let c5 = c4;
-        c4 = xs[i] - x0;
-        for j in 0..i {
-            let c3 = xs[i] - xs[j];
-            c2 *= c3;
-            if j == i - 1 {
-                for k in (1..=orders).rev() {
-                    w[k][i] = c1 * (k as f64 * w[k - 1][i - 1] - c5 * w[k][i - 1]) / c2;
-                }
-                w[0][i] = -c1 * c5 * w[0][i - 1] / c2;
-            }
-            for k in (1..=orders).rev() {
-                w[k][j] = (c4 * w[k][j] - k as f64 * w[k - 1][j]) / c3;
-            }
-            w[0][j] = c4 * w[0][j] / c3;
-        }
-        c1 = c2;
-    }
-    w
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::f64::consts::PI;
 
     /// Exact polynomial reproduction is limited by rounding only.
     const ROUNDING_TOL: f64 = 1e-9;
@@ -734,31 +490,5 @@ mod tests {
         let s = SmoothingSpline::fit(&[0.0, 1.0, 2.0], &[0.0, 1.0, 0.0], 0.0).unwrap();
         assert!(s.eval(f64::NAN)[0].is_nan());
         assert!(s.eval(f64::INFINITY)[0].is_infinite());
-    }
-
-    #[test]
-    fn fornberg_is_exact_for_polynomials_on_random_nodes() {
-        let xs = [-0.31, -0.12, 0.0, 0.07, 0.33, 0.52];
-        let x0 = 0.05;
-        let w = fornberg_weights(x0, &xs, 4);
-        // p(x) = sum c_m x^m, degree 5 = nodes - 1.
-        let c = [0.4, -1.3, 2.1, 0.7, -0.9, 1.6];
-        let deriv = |k: usize, x: f64| -> f64 {
-            (k..c.len())
-                .map(|m| {
-                    let falling: f64 = (0..k).map(|r| (m - r) as f64).product();
-                    c[m] * falling * x.powi((m - k) as i32)
-                })
-                .sum()
-        };
-        for (k, wk) in w.iter().enumerate() {
-            let approx: f64 = wk.iter().zip(&xs).map(|(wj, xj)| wj * deriv(0, *xj)).sum();
-            let exact = deriv(k, x0);
-            assert!(
-                (approx - exact).abs() < 1e-8 * (1.0 + exact.abs()),
-                "order {k}: {approx} vs {exact}"
-            );
-        }
-        assert!(fornberg_weights(0.0, &[], 2).iter().all(Vec::is_empty));
     }
 }

@@ -1,0 +1,155 @@
+//! The exact local minima of the gap: safeguarded Newton on `dg/ds = 0` inside a basin,
+//! the basin sliding after a minimum that moved with the pose, and the one-sided limits at
+//! the wheel profile's section joints.
+
+use super::{Basin, COARSE_STEP_MM, GapPoint, SideGap, SidePose};
+
+/// Convergence of the local minimisation in the wheel coordinate (mm).
+const LOCAL_TOL_MM: f64 = 1e-11;
+/// A local minimum this close to an end of its bracket, with the gap still falling
+/// outwards, lies beyond the bracket (mm); the bisection stops within a few LOCAL_TOL_MM.
+const AT_END_MM: f64 = 1e-8;
+/// Distance below a section joint at which the other section's limit is evaluated (mm).
+const JOINT_SIDE_MM: f64 = 1e-12;
+/// A bracket end replaces the Newton point only when its gap is lower by this much (mm).
+const END_PREFERENCE_MM: f64 = 1e-12;
+/// How many bracket widths a basin may slide while its minimum is followed (about 10 mm).
+const MAX_SLIDES: usize = 40;
+/// Iterations of the safeguarded Newton search for one local minimum; 5-8 are used.
+const LOCAL_MAX_ITER: usize = 100;
+
+impl SideGap<'_> {
+    /// The minimum of the gap in a basin: safeguarded Newton on `dg/ds = 0` inside the
+    /// bracket, which slides when the minimum lies beyond it (the basin moved with the pose).
+    pub(crate) fn minimum(
+        &self,
+        basin: Basin,
+        start: Option<f64>,
+        pose: &SidePose,
+    ) -> Option<GapPoint> {
+        let (dom_lo, dom_hi) = self.pair.wheel.profile().domain();
+        let (mut lo, mut hi) = basin;
+        let width = (hi - lo).max(COARSE_STEP_MM);
+        for _slide in 0..MAX_SLIDES {
+            let s0 = start
+                .filter(|s| (lo..=hi).contains(s))
+                .unwrap_or(0.5 * (lo + hi));
+            let p = self.newton_in(lo, hi, s0, pose)?;
+            let at_lo = p.s <= lo + AT_END_MM && p.dg > 0.0 && lo > dom_lo;
+            let at_hi = p.s >= hi - AT_END_MM && p.dg < 0.0 && hi < dom_hi;
+            if at_lo {
+                hi = lo;
+                lo = (lo - width).max(dom_lo);
+            } else if at_hi {
+                lo = hi;
+                hi = (hi + width).min(dom_hi);
+            } else {
+                return Some(self.lowest_at_joints(p, lo, hi, pose));
+            }
+        }
+        None
+    }
+
+    /// The minimum of the gap inside `basin` only: `None` when it lies at an end of the
+    /// basin with the gap still falling outwards (the minimum has left it).
+    pub(crate) fn minimum_within(
+        &self,
+        basin: Basin,
+        start: f64,
+        pose: &SidePose,
+    ) -> Option<GapPoint> {
+        let (lo, hi) = basin;
+        let p = self.newton_in(lo, hi, start.clamp(lo, hi), pose)?;
+        let beyond = (p.s <= lo + AT_END_MM && p.dg > 0.0) || (p.s >= hi - AT_END_MM && p.dg < 0.0);
+        (!beyond).then(|| self.lowest_at_joints(p, lo, hi, pose))
+    }
+
+    /// `p`, or the one-sided limit of the gap at a section joint of the wheel profile inside
+    /// `[lo, hi]` where that is clearly lower. A profile whose value jumps at a joint (S1002:
+    /// 3.6e-5 mm at s = -26, 1.2e-4 mm at s = -35) can have its minimum there, which no
+    /// derivative sees; missing it makes the minimum gap jump as the roll changes, and the
+    /// roll iteration stall where the contact is nearly conformal.
+    fn lowest_at_joints(&self, p: GapPoint, lo: f64, hi: f64, pose: &SidePose) -> GapPoint {
+        let mut best = p;
+        for &j in &self.joints {
+            if j <= lo || j >= hi {
+                continue;
+            }
+            // At the joint the field-side section is evaluated; just below it, the other.
+            for s in [j, j - JOINT_SIDE_MM] {
+                if let Some(q) = self.at(s, pose)
+                    && q.g < best.g - END_PREFERENCE_MM
+                {
+                    best = q;
+                }
+            }
+        }
+        best
+    }
+
+    fn newton_in(&self, mut lo: f64, mut hi: f64, s0: f64, pose: &SidePose) -> Option<GapPoint> {
+        // The bracket ends are evaluated only when needed: to start off the rail, to know
+        // which side of the rail a step left, or as candidates when the iteration did not
+        // end at a smooth interior minimum.
+        let mut p_lo: Option<Option<GapPoint>> = None;
+        let mut p_hi: Option<Option<GapPoint>> = None;
+        let mut p = match self.at(s0, pose) {
+            Some(p) => p,
+            None => {
+                let a = self.at(lo, pose);
+                let b = self.at(hi, pose);
+                (p_lo, p_hi) = (Some(a), Some(b));
+                a.or(b)?
+            }
+        };
+        let mut smooth = false;
+        for _ in 0..LOCAL_MAX_ITER {
+            // Shrink the bracket with the sign of the derivative (minimum side).
+            if p.dg > 0.0 {
+                hi = p.s;
+                p_hi = Some(Some(p));
+            } else {
+                lo = p.s;
+                p_lo = Some(Some(p));
+            }
+            let newton = p.s - p.dg / p.ddg;
+            let is_newton = p.ddg > 0.0 && newton > lo && newton < hi;
+            let next = if is_newton { newton } else { 0.5 * (lo + hi) };
+            if (next - p.s).abs() < LOCAL_TOL_MM || hi - lo < LOCAL_TOL_MM {
+                smooth = is_newton && (next - p.s).abs() < LOCAL_TOL_MM;
+                break;
+            }
+            p = match self.at(next, pose) {
+                Some(q) => q,
+                None => {
+                    // Left the rail: the minimum lies on the defined side.
+                    let lo_defined = *p_lo.get_or_insert_with(|| self.at(lo, pose));
+                    if lo_defined.is_none() {
+                        lo = next;
+                    } else {
+                        hi = next;
+                    }
+                    continue;
+                }
+            };
+        }
+        if smooth {
+            // A Newton step converged to an interior minimum of the smooth gap: the bracket
+            // ends lie higher (they bound a basin of the coarse scan around it).
+            return Some(p);
+        }
+        // The bracket ends are candidates too (a minimum at a value jump of the profile, or
+        // at the end of the rail), but only when clearly lower: gaps near -r0 = -460 mm
+        // resolve to about 1e-13 mm, and an end point "lower" by rounding would replace the
+        // Newton solution by a point 1e-9 mm away from it.
+        let p_lo = p_lo.unwrap_or_else(|| self.at(lo, pose));
+        let p_hi = p_hi.unwrap_or_else(|| self.at(hi, pose));
+        let mut best = p;
+        for q in [p_lo, p_hi].into_iter().flatten() {
+            if q.g < best.g - END_PREFERENCE_MM {
+                best = q;
+            }
+        }
+        Some(best)
+    }
+}

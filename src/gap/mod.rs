@@ -1,0 +1,233 @@
+//! The vertical gap between one wheel and its rail for a wheelset pose, its minima, and the
+//! derivative of the minimum gap with respect to the roll (envelope theorem).
+//!
+//! Per side the pose is seen in the side frame as a shift `delta = sign * y_ws` and a roll
+//! `phi = sign * roll`. A wheel point `(Yw, Zw)` relative to the axle maps to
+//! `Y = delta + cos(phi) Yw - sin(phi) Zw`, `z = h + sin(phi) Yw + cos(phi) Zw` (rotation about
+//! the axle, paper Sect. 3; the lateral motion caused by roll is kept). The gap is
+//! `d(s) = z(s) - Zrail(Y(s))`; without the axle height `h` it is `g(s) = d(s) - h`.
+//!
+//! The layer both contact searches ([`crate::rigid`], [`crate::quasi_elastic`]) stand on:
+//! the pose and the gap at a wheel point (here), the coarse scans for basins and low
+//! regions (`scan.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
+//! profiles (`tabulated.rs`); and the [`ContactPoint`] both searches report (`contact.rs`).
+
+mod contact;
+mod minimum;
+mod scan;
+mod tabulated;
+#[cfg(test)]
+mod tests;
+
+use crate::track::{PlacedWheel, RailPoint, SidePair, WheelPoint};
+use scan::SCAN_BLOCK;
+use tabulated::Tables;
+
+pub use contact::ContactPoint;
+
+/// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
+/// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].
+pub const COARSE_STEP_MM: f64 = 0.25;
+/// Coarse minima within this margin of the lowest coarse minimum are all refined. It bounds
+/// the error of the coarse values (kappa h^2 / 2 = 0.006 mm for a relative curvature of
+/// 1/5 mm^-1 at 0.25 mm) with a safety factor of 8.
+pub const COARSE_MARGIN_MM: f64 = 0.05;
+/// Two minima closer than this in the wheel coordinate are one basin (mm).
+pub const SAME_BASIN_MM: f64 = 0.5;
+
+/// The pose of one side: shift and roll as seen in the side frame.
+///
+/// Plain numbers rather than a `nalgebra::Isometry2` (used for the rail's frame in
+/// `track::rail`): the gap is evaluated millions of times per sweep and only needs the
+/// lateral position and height of a wheel point, `delta + cos s - sin z` and its height,
+/// with the axle height solved separately; a general 2-D transform would carry what this
+/// loop does not use.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SidePose {
+    /// `sign * y_ws` (mm).
+    pub delta: f64,
+    /// `cos(sign * roll)`.
+    pub cos: f64,
+    /// `sin(sign * roll)`.
+    pub sin: f64,
+}
+
+impl SidePose {
+    /// The pose of the side with `sign` (+1 left, -1 right) for a wheelset shift and roll.
+    pub fn new(sign: f64, y_ws: f64, roll: f64) -> SidePose {
+        let (sin, cos) = (sign * roll).sin_cos();
+        SidePose {
+            delta: sign * y_ws,
+            cos,
+            sin,
+        }
+    }
+
+    /// Side-frame lateral position and height above the axle of a wheel point.
+    #[inline]
+    pub fn apply(&self, yw: f64, zw: f64) -> [f64; 2] {
+        [
+            self.delta + self.cos * yw - self.sin * zw,
+            self.sin * yw + self.cos * zw,
+        ]
+    }
+}
+
+/// The gap at one wheel point, with everything the contact quantities need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GapPoint {
+    /// Wheel profile coordinate (mm).
+    pub s: f64,
+    /// `g(s) = z - h - Zrail`: the gap without the axle height (mm).
+    pub g: f64,
+    /// `dg/ds`.
+    pub dg: f64,
+    /// `d2g/ds2` (1/mm).
+    pub ddg: f64,
+    /// Side-frame lateral position of the wheel point (mm).
+    pub y: f64,
+    /// Height of the wheel point above the axle (mm, negative).
+    pub z_rel: f64,
+    /// The wheel point (no roll).
+    pub wheel: WheelPoint,
+    /// The rail under it.
+    pub rail: RailPoint,
+}
+
+impl GapPoint {
+    /// Derivative of the gap at this point with respect to the side roll `phi`, the point
+    /// held fixed: `(Y - delta) + Zrail'(Y) * z_rel`. At a unique minimiser it is the
+    /// derivative of the minimum gap (envelope theorem).
+    #[inline]
+    pub fn dg_dphi(&self, pose: &SidePose) -> f64 {
+        (self.y - pose.delta) + self.rail.slope * self.z_rel
+    }
+}
+
+/// One side's geometry prepared for repeated gap evaluations: the placed pair and the coarse
+/// wheel samples (the coarse scans read the rail's
+/// [`HeightTable`](crate::track::HeightTable)). Built once per sweep.
+#[derive(Debug, Clone)]
+pub struct SideGap<'a> {
+    /// The wheel and rail of the side.
+    pub pair: &'a SidePair,
+    /// +1 left, -1 right.
+    pub sign: f64,
+    coarse: Vec<[f64; 3]>,
+    /// Per block of [`SCAN_BLOCK`] coarse samples: `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]`.
+    blocks: Vec<[f64; 4]>,
+    tabulated: Option<Tables>,
+    /// The wheel profile's domain: beyond it the profile is clamped, and a point there
+    /// would be a phantom of the wheel's end displaced sideways.
+    domain: (f64, f64),
+    /// Section joints of the wheel profile (where its value may jump).
+    joints: Vec<f64>,
+    /// Side-frame lateral positions of the rail profile's breaks
+    /// ([`crate::profile::Profile::breaks`]) and of the ends of its running surface, increasing.
+    rail_break_ys: Vec<f64>,
+    /// The wheel profile's breaks and the ends of its domain, increasing.
+    wheel_breaks: Vec<f64>,
+}
+
+/// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
+pub(crate) type Basin = (f64, f64);
+impl<'a> SideGap<'a> {
+    /// Prepares the side with `sign` (+1 left, -1 right).
+    pub fn new(pair: &'a SidePair, sign: f64) -> SideGap<'a> {
+        let (lo, hi) = pair.wheel.profile().domain();
+        let n = ((hi - lo) / COARSE_STEP_MM).ceil() as usize;
+        let coarse: Vec<[f64; 3]> = (0..=n)
+            .map(|i| {
+                let s = lo + (hi - lo) * i as f64 / n as f64;
+                let p = pair.wheel.at(s);
+                [s, p.y, p.z]
+            })
+            .collect();
+        let blocks = coarse
+            .chunks(SCAN_BLOCK)
+            .map(|c| {
+                let (z_lo, z_hi) = c
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                        (a.min(p[2]), b.max(p[2]))
+                    });
+                [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
+            })
+            .collect();
+        SideGap {
+            pair,
+            sign,
+            coarse,
+            blocks,
+            tabulated: None,
+            domain: (lo, hi),
+            joints: pair.wheel.profile().joints(),
+            rail_break_ys: {
+                // The ends of the running surface too: beyond them the gap is undefined.
+                let (y_lo, y_hi) = pair.rail.y_range();
+                let mut ys: Vec<f64> = pair
+                    .rail
+                    .profile()
+                    .breaks()
+                    .into_iter()
+                    .map(|u| pair.rail.point_of(u)[0])
+                    .chain([y_lo, y_hi])
+                    .collect();
+                ys.sort_by(f64::total_cmp);
+                ys
+            },
+            wheel_breaks: {
+                let mut b = pair.wheel.profile().breaks();
+                b.extend([lo, hi]);
+                b.sort_by(f64::total_cmp);
+                b
+            },
+        }
+    }
+    /// Where the wheel profile's second derivative may jump (joints, spline knots) and the
+    /// ends of its domain, increasing (mm).
+    pub(crate) fn wheel_breaks(&self) -> &[f64] {
+        &self.wheel_breaks
+    }
+
+    /// Side-frame lateral positions `Y` of the rail profile's breaks (joints, spline knots)
+    /// and of the ends of its running surface, increasing (mm).
+    pub(crate) fn rail_break_ys(&self) -> &[f64] {
+        &self.rail_break_ys
+    }
+
+    /// The wheel.
+    pub fn wheel(&self) -> &PlacedWheel {
+        &self.pair.wheel
+    }
+
+    /// The gap at `s` for `pose`, or `None` where the wheel point is not above the rail or
+    /// `s` lies outside the wheel profile.
+    #[inline]
+    pub fn at(&self, s: f64, pose: &SidePose) -> Option<GapPoint> {
+        if !(self.domain.0..=self.domain.1).contains(&s) {
+            return None;
+        }
+        let wheel = self.pair.wheel.at(s);
+        let [y, z_rel] = pose.apply(wheel.y, wheel.z);
+        let rail = self.pair.rail.at(y)?;
+        // dZw/ds = -F' and dYw/ds = 1; wheel.slope = -F', wheel.d2 = -F''.
+        let f1 = -wheel.slope;
+        let f2 = -wheel.d2;
+        let dy = pose.cos + pose.sin * f1;
+        let dz = pose.sin - pose.cos * f1;
+        let ddy = pose.sin * f2;
+        let ddz = -pose.cos * f2;
+        let rail_dd = rail.d2;
+        Some(GapPoint {
+            s,
+            g: z_rel - rail.z,
+            dg: dz - rail.slope * dy,
+            ddg: ddz - rail_dd * dy * dy - rail.slope * ddy,
+            y,
+            z_rel,
+            wheel,
+            rail,
+        })
+    }
+}

@@ -1,0 +1,213 @@
+//! The content of `index.html`: what ran and what to watch (summary, notes), the scene's
+//! parameters, the provenance of its profiles, the pair's key results.
+
+use super::{NamedTable, figures, tables};
+use crate::pipeline::Results;
+use crate::profile::Profile;
+use crate::profile::read::sha256_hex;
+use crate::report::{FigureEntry, ReportPage, TableEntry};
+use crate::scene::Scene;
+
+/// The report page of a scene's run, listing `figures` and `tables`.
+pub(super) fn report_page(
+    scene: &Scene,
+    results: &Results,
+    tables: &[NamedTable],
+    figures: Vec<FigureEntry>,
+) -> ReportPage {
+    let (summary, notes) = summary_and_notes(scene, results);
+    ReportPage {
+        title: scene.title.clone(),
+        key_results: key_results(results),
+        summary,
+        parameters: parameters(scene),
+        provenance: provenance(results),
+        figures,
+        tables: tables
+            .iter()
+            .map(|t| TableEntry {
+                name: t.file.trim_end_matches(".csv").to_string(),
+                file: t.file.clone(),
+                description: t.description.clone(),
+            })
+            .collect(),
+        data_tables: Vec::new(),
+        notes,
+    }
+}
+
+/// The summary (stages run, how the searches went) and the notes (what did not converge or
+/// is flagged) of the page.
+fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<String>) {
+    // The stages, not their times: the page is reproducible (`--timings` prints the times).
+    let mut summary = vec![format!(
+        "Stages run: {}.",
+        results
+            .record
+            .stages
+            .iter()
+            .map(|(s, _)| s.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    )];
+    let mut notes = Vec::new();
+    if let Some(r) = &results.rigid {
+        let bad: Vec<String> = r
+            .positions
+            .iter()
+            .filter(|p| p.stop != crate::rigid::Stop::Converged)
+            .map(|p| format!("{} mm ({})", p.y_ws, p.stop.status_text()))
+            .collect();
+        if bad.is_empty() {
+            summary.push(format!(
+                "Rigid search ({} solver): all {} positions converged; {} contact-point jumps.",
+                r.solver.name(),
+                r.positions.len(),
+                r.jumps.len()
+            ));
+        } else {
+            notes.push(format!(
+                "Rigid positions not converged (left out of the figures): {}.",
+                bad.join(", ")
+            ));
+        }
+        for (y, label) in figures::flange_onsets(r) {
+            summary.push(format!("{label} from y_ws = {y} mm."));
+        }
+    }
+    if let Some(h) = &results.hertz {
+        let flagged = h
+            .iter()
+            .flat_map(|p| p.sides.iter())
+            .filter(|s| s.status != "ok")
+            .count();
+        if flagged > 0 {
+            notes.push(format!("{flagged} wheel contacts carry a Hertz status other than ok (see the status columns of hertz.csv)."));
+        }
+        summary.push(format!(
+            "Hertz: {} method, {} contact, normal load {}.",
+            scene.hertz.method,
+            scene.hertz.source.name(),
+            scene.hertz.normal_load.name()
+        ));
+    }
+    (summary, notes)
+}
+
+/// The scene's keys shown on the page, as `(name, value)`.
+fn parameters(scene: &Scene) -> Vec<(String, String)> {
+    let l = &scene.layout;
+    vec![
+        ("scene".into(), scene.path.clone()),
+        ("gauge_mm".into(), l.gauge_mm.to_string()),
+        (
+            "gauge_point_depth_mm".into(),
+            l.gauge_point_depth_mm.to_string(),
+        ),
+        (
+            "rail inclination (rad)".into(),
+            format!("{:.7}", l.inclination.0),
+        ),
+        ("flange_back_mm".into(), l.flange_back_mm.to_string()),
+        (
+            "nominal_radius_mm (left, right)".into(),
+            format!(
+                "{}, {}",
+                scene.nominal_radius_mm[0], scene.nominal_radius_mm[1]
+            ),
+        ),
+        (
+            "wheel_load_kN".into(),
+            (scene.wheel_load_n / 1000.0).to_string(),
+        ),
+        (
+            "E (GPa) and nu, wheel".into(),
+            format!(
+                "{}, {}",
+                scene.wheel_material.young_mpa / 1000.0,
+                scene.wheel_material.poisson
+            ),
+        ),
+        (
+            "E (GPa) and nu, rail".into(),
+            format!(
+                "{}, {}",
+                scene.rail_material.young_mpa / 1000.0,
+                scene.rail_material.poisson
+            ),
+        ),
+        (
+            "sweep (mm)".into(),
+            format!(
+                "{} to {}, {} positions",
+                scene.sweep_mm.first().copied().unwrap_or(f64::NAN),
+                scene.sweep_mm.last().copied().unwrap_or(f64::NAN),
+                scene.sweep_mm.len()
+            ),
+        ),
+        ("rigid solver".into(), scene.rigid_solver.name().into()),
+        (
+            "quasi-elastic eps (mm)".into(),
+            scene.quasi_elastic.epsilon_mm.to_string(),
+        ),
+    ]
+}
+
+/// The program's version and where each profile came from, with the sha256 of its file (or
+/// of the sampled table of a built-in profile), as `(name, value)`.
+fn provenance(results: &Results) -> Vec<(String, String)> {
+    let p = &results.placement;
+    let profile_row = |label: &str, profile: &Profile| -> (String, String) {
+        let hash = match profile.source() {
+            crate::profile::Source::File { sha256, .. } => sha256.clone(),
+            crate::profile::Source::Definition(_) => {
+                // Built-in: the hash of its sampled table, which changes with the definition.
+                let rows = profile.sample(tables::PROFILE_TABLE_STEP_MM);
+                let text: String = rows
+                    .iter()
+                    .map(|r| format!("{:.12e},{:.12e}\n", r[0], r[1]))
+                    .collect();
+                format!("{} (of the sampled profile)", sha256_hex(text.as_bytes()))
+            }
+        };
+        (
+            label.to_string(),
+            format!("{} — sha256 {hash}", profile.source()),
+        )
+    };
+    vec![
+        (
+            "wheelrail".into(),
+            format!("version {}", env!("CARGO_PKG_VERSION")),
+        ),
+        profile_row("left wheel", p.left.wheel.profile()),
+        profile_row("right wheel", p.right.wheel.profile()),
+        profile_row("left rail", p.left.rail.profile()),
+        profile_row("right rail", p.right.rail.profile()),
+        (
+            "conventions".into(),
+            "mm, N, MPa, rad; track frame y left, z up; see every CSV header".into(),
+        ),
+    ]
+}
+
+/// The pair's parameters (from the conicity stage) as rows `[name, value, unit, definition]`;
+/// none when that stage did not run.
+fn key_results(results: &Results) -> Vec<[String; 4]> {
+    results.conicity.as_ref().map_or_else(Vec::new, |c| {
+        c.parameters
+            .rows()
+            .into_iter()
+            .map(|r| {
+                let value = if r.value.is_nan() {
+                    "—".to_string()
+                } else if r.unit == "count" {
+                    format!("{}", r.value)
+                } else {
+                    format!("{:.4}", r.value)
+                };
+                [r.name.to_string(), value, r.unit.to_string(), r.definition]
+            })
+            .collect()
+    })
+}

@@ -1,0 +1,97 @@
+//! Drawing a [`Figure`] on any plotters backend.
+//!
+//! plotters draws the grid, ticks, frame and data; all text (titles, tick labels, axis titles,
+//! legend, marker-line labels) goes through [`text::draw_text`] so bitmaps get correctly spaced
+//! glyphs. The legend is our own so that its box can be placed where it hides no data: an
+//! occupancy grid of everything drawn in the plot (lines, markers, marker lines and their
+//! labels, off-chart marks) finds a free place nearest a corner, and when there is none the
+//! plot gives up room for it, right of it or below the x-axis title, whichever takes the
+//! smaller share of the plot.
+
+//!
+//! The parts: [`panel`] lays out one chart (title, plot, axis areas, where the legend goes),
+//! [`axes`] the coordinate system with our own ticks and labels, [`series`] the data,
+//! [`annotations`] marker lines and the marks where data leaves the chart, [`legend`] the
+//! legend box and [`occupancy`] the grid that finds it a free place.
+
+mod annotations;
+mod axes;
+mod legend;
+mod occupancy;
+mod panel;
+mod series;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::text::{Align, Place, TextSpec, draw_text};
+use super::{ChartError, DrawOptions, Figure, PanelLayout, PxBox};
+use super::{drawing_error, ensure_font};
+use axes::TickAxis;
+use panel::draw_panel;
+
+const FIGURE_TITLE_PX: f64 = 28.0;
+const AXIS_TITLE_PX: f64 = 19.0;
+const TICK_PX: f64 = 16.0;
+const LINE_WIDTH: u32 = 2;
+const MARKER_PX: i32 = 5;
+/// Gap between an axis and its tick labels, and between tick labels and the axis title.
+const TICK_GAP_PX: i32 = 8;
+const AXIS_TITLE_GAP_PX: i32 = 10;
+/// Inset of a legend from the plot frame.
+const LEGEND_INSET_PX: i32 = 8;
+/// Half width in pixels of the triangles that mark where data leaves the chart.
+const OFF_CHART_MARK_PX: i32 = 5;
+const ANNOTATION: RGBColor = RGBColor(0x44, 0x44, 0x44);
+
+/// Draws the whole figure on `root`.
+pub(super) fn draw_figure<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    figure: &Figure,
+    options: DrawOptions,
+) -> Result<Vec<PanelLayout>, ChartError> {
+    let mode = options.mode;
+    ensure_font()?;
+    root.fill(&WHITE).map_err(drawing_error)?;
+    let mut top = 0;
+    if !figure.title.is_empty() {
+        let spec = TextSpec::new(FIGURE_TITLE_PX);
+        let pad = (0.4 * FIGURE_TITLE_PX) as i32;
+        let centre = (figure.width / 2) as i32;
+        draw_text(
+            root,
+            mode,
+            &figure.title,
+            spec,
+            Place::new((centre, pad), Align::Middle, Align::Start),
+        )?;
+        top = 2 * pad + spec.size(&figure.title).1;
+    }
+    if figure.panels.is_empty() {
+        return Ok(Vec::new());
+    }
+    let body = root.margin(top, 0, 0, 0);
+    let columns = figure.columns.min(figure.panels.len());
+    let rows = figure.panels.len().div_ceil(columns);
+    let cells = body.split_evenly((rows, columns));
+    figure
+        .panels
+        .iter()
+        .zip(&cells)
+        .map(|(chart, cell)| draw_panel(root, cell, chart, options))
+        .collect()
+}
+
+/// Pixel rectangle `(left, top, right, bottom)` in root coordinates.
+type PxRect = (i32, i32, i32, i32);
+
+fn px_box((left, top, right, bottom): PxRect) -> PxBox {
+    PxBox {
+        left,
+        top,
+        right,
+        bottom,
+    }
+}
+
+type Ctx<'a, DB> = ChartContext<'a, DB, Cartesian2d<TickAxis, TickAxis>>;

@@ -1,0 +1,225 @@
+//! The occupancy grid of a plot: every cell near something drawn is marked, so that a
+//! legend can be put where it hides nothing.
+
+use plotters::prelude::*;
+
+use super::super::geometry::{AxisMap, Frame, Point};
+use super::super::{Chart, LegendPosition, SeriesStyle};
+use super::annotations::{off_chart_runs, vline_labels};
+use super::series::series_lines;
+use super::{Ctx, LEGEND_INSET_PX, LINE_WIDTH, MARKER_PX, OFF_CHART_MARK_PX, PxRect};
+
+/// Least distance in pixels between a legend and anything drawn in the plot.
+const LEGEND_CLEARANCE_PX: i32 = 4;
+/// Cell size in pixels of the occupancy grid that places legends.
+const OCCUPANCY_CELL_PX: i32 = 6;
+/// Spacing in pixels of the samples that mark a line in the occupancy grid.
+const SEGMENT_SAMPLE_PX: f64 = 3.0;
+
+/// Cells of a plot's occupancy grid marked as drawn on.
+struct Marks {
+    left: f64,
+    top: f64,
+    cols: usize,
+    rows: usize,
+    occupied: Vec<bool>,
+}
+
+impl Marks {
+    /// Marks the cells within `radius` plus [`LEGEND_CLEARANCE_PX`] of pixel `(x, y)`.
+    fn mark(&mut self, (x, y): (f64, f64), radius: f64) {
+        let r = radius + f64::from(LEGEND_CLEARANCE_PX);
+        let cell = f64::from(OCCUPANCY_CELL_PX);
+        let c1 = ((x + r - self.left) / cell).floor();
+        let r1 = ((y + r - self.top) / cell).floor();
+        if !(c1 >= 0.0 && r1 >= 0.0) {
+            return;
+        }
+        let c0 = ((x - r - self.left) / cell).floor().max(0.0) as usize;
+        let r0 = ((y - r - self.top) / cell).floor().max(0.0) as usize;
+        let c1 = (c1 as usize).min(self.cols - 1);
+        let r1 = (r1 as usize).min(self.rows - 1);
+        for row in r0..=r1 {
+            for col in c0..=c1 {
+                self.occupied[row * self.cols + col] = true;
+            }
+        }
+    }
+
+    /// Marks a segment between two pixels, sampled every [`SEGMENT_SAMPLE_PX`] (less than
+    /// the clearance, so that the marked discs overlap).
+    fn segment(&mut self, a: (f64, f64), b: (f64, f64), radius: f64) {
+        let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
+        if !len.is_finite() {
+            return;
+        }
+        let n = (len / SEGMENT_SAMPLE_PX).ceil().max(1.0) as usize;
+        for k in 0..=n {
+            let t = k as f64 / n as f64;
+            self.mark((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)), radius);
+        }
+    }
+}
+
+/// What is drawn inside a plot, on a grid of [`OCCUPANCY_CELL_PX`] cells, with a summed-area
+/// table so that a legend-sized box is checked in constant time.
+pub(super) struct Occupancy {
+    left: i32,
+    top: i32,
+    cols: usize,
+    rows: usize,
+    /// `sums[r * (cols + 1) + c]`: occupied cells above row `r` and left of column `c`.
+    sums: Vec<u32>,
+}
+
+impl Occupancy {
+    /// Marks every cell within [`LEGEND_CLEARANCE_PX`] (plus the line width or marker size)
+    /// of a data point, of a line between points (sampled every [`SEGMENT_SAMPLE_PX`]), of a marker line and
+    /// its label, and of the off-chart marks.
+    pub(super) fn of<DB: DrawingBackend>(
+        chart: &Chart,
+        ctx: &Ctx<'_, DB>,
+        xmap: AxisMap,
+        ymap: AxisMap,
+        frame: &Frame,
+        plot: PxRect,
+    ) -> Occupancy {
+        let cell = OCCUPANCY_CELL_PX;
+        let cols = ((plot.2 - plot.0) / cell + 1).max(1) as usize;
+        let rows = ((plot.3 - plot.1) / cell + 1).max(1) as usize;
+        let mut grid = Marks {
+            left: f64::from(plot.0),
+            top: f64::from(plot.1),
+            cols,
+            rows,
+            occupied: vec![false; cols * rows],
+        };
+        let to_px = |p: Point| {
+            let (x, y) = ctx.backend_coord(&p);
+            (f64::from(x), f64::from(y))
+        };
+        let line_radius = f64::from(LINE_WIDTH);
+        for s in &chart.series {
+            let (points, lines) = series_lines(s, xmap, ymap, frame);
+            let finite = |p: &Point| p.0.is_finite() && p.1.is_finite();
+            for line in &lines {
+                if line.len() == 1 {
+                    grid.mark(to_px(line[0]), 2.0);
+                }
+                for pair in line.windows(2) {
+                    grid.segment(to_px(pair[0]), to_px(pair[1]), line_radius);
+                }
+            }
+            if matches!(s.style, SeriesStyle::Markers | SeriesStyle::LineWithMarkers) {
+                for p in points.iter().filter(|p| finite(p) && frame.contains(**p)) {
+                    grid.mark(to_px(*p), f64::from(MARKER_PX + 1));
+                }
+            }
+        }
+        for vline in &chart.vlines {
+            let x = xmap.forward(vline.x);
+            if x.is_finite() && x >= frame.x.0 && x <= frame.x.1 {
+                grid.segment(to_px((x, frame.y.0)), to_px((x, frame.y.1)), 1.0);
+            }
+        }
+        for (_, _, (l, t, r, b)) in vline_labels(ctx, chart, xmap, frame, plot) {
+            // Discs along the label's middle line cover its box.
+            let cy = 0.5 * f64::from(t + b);
+            grid.segment(
+                (f64::from(l), cy),
+                (f64::from(r), cy),
+                0.5 * f64::from(b - t),
+            );
+        }
+        for r in off_chart_runs(chart, xmap, ymap, frame) {
+            let (px, _) = ctx.backend_coord(&(r.x, frame.y.0));
+            let y = if r.above { plot.1 } else { plot.3 };
+            grid.mark(
+                (f64::from(px), f64::from(y)),
+                f64::from(2 * OFF_CHART_MARK_PX + 1),
+            );
+        }
+        let mut sums = vec![0u32; (cols + 1) * (rows + 1)];
+        for row in 0..rows {
+            for col in 0..cols {
+                sums[(row + 1) * (cols + 1) + col + 1] = u32::from(grid.occupied[row * cols + col])
+                    + sums[row * (cols + 1) + col + 1]
+                    + sums[(row + 1) * (cols + 1) + col]
+                    - sums[row * (cols + 1) + col];
+            }
+        }
+        Occupancy {
+            left: plot.0,
+            top: plot.1,
+            cols,
+            rows,
+            sums,
+        }
+    }
+
+    /// Whether the pixel box `(left, top, right, bottom)` touches an occupied cell.
+    fn is_free(&self, (l, t, r, b): PxRect) -> bool {
+        let cell = OCCUPANCY_CELL_PX;
+        let c0 = ((l - self.left) / cell).clamp(0, self.cols as i32) as usize;
+        let c1 = ((r - self.left) / cell + 1).clamp(0, self.cols as i32) as usize;
+        let r0 = ((t - self.top) / cell).clamp(0, self.rows as i32) as usize;
+        let r1 = ((b - self.top) / cell + 1).clamp(0, self.rows as i32) as usize;
+        let at = |r: usize, c: usize| self.sums[r * (self.cols + 1) + c];
+        at(r1, c1) + at(r0, c0) - at(r0, c1) - at(r1, c0) == 0
+    }
+
+    /// Top-left corner of a free place for a `w` × `h` legend inside `plot` (inset by
+    /// [`LEGEND_INSET_PX`]): the preferred corner if free, else the free place nearest to a
+    /// corner (upper right, upper left, lower right, lower left on ties); `None` if no place
+    /// is free.
+    pub(super) fn free_spot(
+        &self,
+        plot: PxRect,
+        (w, h): (i32, i32),
+        preference: LegendPosition,
+    ) -> Option<(i32, i32)> {
+        let (x0, x1) = (plot.0 + LEGEND_INSET_PX, plot.2 - LEGEND_INSET_PX - w);
+        let (y0, y1) = (plot.1 + LEGEND_INSET_PX, plot.3 - LEGEND_INSET_PX - h);
+        if x1 < x0 || y1 < y0 {
+            return None;
+        }
+        let corners = [
+            (LegendPosition::UpperRight, (x1, y0)),
+            (LegendPosition::UpperLeft, (x0, y0)),
+            (LegendPosition::LowerRight, (x1, y1)),
+            (LegendPosition::LowerLeft, (x0, y1)),
+        ];
+        // The requested corner, or for `Auto` the corners in order: most legends end there,
+        // without the scan below.
+        let first = corners
+            .iter()
+            .filter(|(p, _)| preference == LegendPosition::Auto || *p == preference)
+            .map(|&(_, at)| at)
+            .find(|at| self.is_free((at.0, at.1, at.0 + w, at.1 + h)));
+        if first.is_some() {
+            return first;
+        }
+        let step = OCCUPANCY_CELL_PX as usize;
+        let mut best: Option<(i64, (i32, i32))> = None;
+        for y in (y0..=y1).step_by(step).chain(std::iter::once(y1)) {
+            for x in (x0..=x1).step_by(step).chain(std::iter::once(x1)) {
+                if !self.is_free((x, y, x + w, y + h)) {
+                    continue;
+                }
+                let distance = corners
+                    .iter()
+                    .enumerate()
+                    .map(|(i, (_, c))| {
+                        let d = i64::from((x - c.0).abs() + (y - c.1).abs());
+                        4 * d + i as i64
+                    })
+                    .min()
+                    .unwrap_or(0);
+                if best.is_none_or(|(d, _)| distance < d) {
+                    best = Some((distance, (x, y)));
+                }
+            }
+        }
+        best.map(|(_, at)| at)
+    }
+}

@@ -1,0 +1,73 @@
+//! The minima of each wheel's gap over its basins, followed from one pose to the next: the
+//! step both the default roll solver and the level wheelset take per evaluation.
+
+use super::TWO_POINT_GAP_TOL_MM;
+use crate::gap::{self, Basin, GapPoint, SideGap, SidePose};
+
+/// Buffers reused across positions (no allocation per position). The basins of the last
+/// solution start the next position (continuation): its scan at the solution verifies them.
+#[derive(Debug, Default)]
+pub(super) struct Scratch {
+    pub(super) basins: [Vec<Basin>; 2],
+    /// The minima found in `basins` at the current pose, reused after a verification scan
+    /// at that same pose for the basins that contain them.
+    pub(super) minima: [Vec<GapPoint>; 2],
+    /// Whether `basins` holds the basins of a previous solution.
+    pub(super) warm: bool,
+}
+
+/// The lowest minimum of one side over its basins, and a second one within the two-point
+/// tolerance in another basin. Each basin is re-centred on its minimum, so that the next
+/// call (a nearby pose) starts there; a basin whose minimum another basin already found is
+/// dropped ([`RollSettings::same_minimum_mm`](super::RollSettings::same_minimum_mm)).
+///
+/// `minima` holds on entry the minima already known at this very pose (or nothing); a basin
+/// that contains one of them takes it instead of searching again. On return it holds the
+/// minima of the basins.
+pub(super) fn side_minimum(
+    side: &SideGap,
+    pose: &SidePose,
+    basins: &mut Vec<Basin>,
+    minima: &mut Vec<GapPoint>,
+    same_minimum_mm: f64,
+) -> Option<(GapPoint, Option<GapPoint>)> {
+    let mut best: Option<GapPoint> = None;
+    let mut second: Option<GapPoint> = None;
+    let mut kept = 0;
+    let known = minima.len();
+    for i in 0..basins.len() {
+        let b = basins[i];
+        let reuse = minima[..known]
+            .iter()
+            .find(|q| (b.0..=b.1).contains(&q.s))
+            .copied();
+        let Some(p) = reuse.or_else(|| side.minimum(b, None, pose)) else {
+            continue;
+        };
+        minima.push(p);
+        let duplicate = basins[..kept]
+            .iter()
+            .any(|k| (0.5 * (k.0 + k.1) - p.s).abs() <= same_minimum_mm);
+        if !duplicate {
+            let half = 0.5 * (b.1 - b.0);
+            basins[kept] = (p.s - half, p.s + half);
+            kept += 1;
+        }
+        match best {
+            Some(q) if p.g >= q.g => {
+                if (p.s - q.s).abs() > gap::SAME_BASIN_MM && second.is_none_or(|r| p.g < r.g) {
+                    second = Some(p);
+                }
+            }
+            _ => {
+                if let Some(q) = best.filter(|q| (p.s - q.s).abs() > gap::SAME_BASIN_MM) {
+                    second = Some(q);
+                }
+                best = Some(p);
+            }
+        }
+    }
+    basins.truncate(kept);
+    minima.drain(..known);
+    best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
+}
