@@ -3,51 +3,55 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use wheelrail::quasi_elastic::Quadrature;
-use wheelrail::scene::{
-    CUTOFF_RANGE, MAX_PANEL_WIDTHS, MAX_TRAPEZOID_STEP_MM, MIN_PANEL_WIDTHS, MIN_TRAPEZOID_STEP_MM,
-    Scene,
+use wheelrail::quasi_elastic::{
+    CUTOFF_RANGE, EPSILON_RANGE_MM, PANEL_WIDTHS_RANGE, Quadrature, TRAPEZOID_STEP_RANGE_MM,
 };
+use wheelrail::scene::Scene;
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
     let Ok(scene) = Scene::from_toml(&text, "fuzz.toml", std::path::Path::new(".")) else {
         return;
     };
-    assert!(!scene.sweep_mm.is_empty());
+    let sweep = scene.sweep_mm();
+    assert!(!sweep.is_empty());
+    assert!(sweep.iter().all(|y| y.is_finite() && y.abs() <= 100.0));
+    assert!(sweep.windows(2).all(|w| w[1] > w[0]));
     assert!(
         scene
-            .sweep_mm
-            .iter()
-            .all(|y| y.is_finite() && y.abs() <= 100.0)
-    );
-    assert!(scene.sweep_mm.windows(2).all(|w| w[1] > w[0]));
-    assert!(
-        scene
-            .nominal_radius_mm
+            .nominal_radius_mm()
             .iter()
             .all(|r| (100.0..=1000.0).contains(r))
     );
-    assert!(scene.wheel_load_n.is_finite() && scene.wheel_load_n > 0.0);
+    assert!(scene.wheel_load_n().is_finite() && scene.wheel_load_n() > 0.0);
     // The sensitivity values are distinct (each is a column of qe_epsilon.csv).
-    let eps = &scene.epsilon_sensitivity_mm;
+    let eps = scene.epsilon_sensitivity_mm();
     assert!(
         eps.iter()
             .enumerate()
             .all(|(i, e)| eps[..i].iter().all(|f| f.to_bits() != e.to_bits()))
     );
-    let qe = scene.quasi_elastic;
-    assert!(qe.epsilon_mm > 0.0 && qe.epsilon_mm <= 1.0);
-    assert!((CUTOFF_RANGE.0..=CUTOFF_RANGE.1).contains(&qe.cutoff));
-    match qe.quadrature {
+    let qe = scene.quasi_elastic();
+    assert!((EPSILON_RANGE_MM.0..=EPSILON_RANGE_MM.1).contains(&qe.epsilon_mm()));
+    assert!((CUTOFF_RANGE.0..=CUTOFF_RANGE.1).contains(&qe.cutoff()));
+    match qe.quadrature() {
         Quadrature::GaussLegendre { panel_widths } => {
-            assert!((MIN_PANEL_WIDTHS..=MAX_PANEL_WIDTHS).contains(&panel_widths));
+            assert!((PANEL_WIDTHS_RANGE.0..=PANEL_WIDTHS_RANGE.1).contains(&panel_widths));
         }
         Quadrature::Trapezoid { max_step_mm } => {
-            assert!((MIN_TRAPEZOID_STEP_MM..=MAX_TRAPEZOID_STEP_MM).contains(&max_step_mm));
+            assert!(
+                (TRAPEZOID_STEP_RANGE_MM.0..=TRAPEZOID_STEP_RANGE_MM.1).contains(&max_step_mm)
+            );
         }
     }
-    let layout = &scene.layout;
-    assert!(layout.gauge_mm.is_finite() && layout.flange_back_mm < layout.gauge_mm);
-    assert!((0.0..=0.2).contains(&layout.inclination.0));
+    let layout = scene.layout();
+    assert!(layout.gauge_mm().is_finite() && layout.flange_back_mm() < layout.gauge_mm());
+    assert!((0.0..=0.2).contains(&layout.inclination().radians()));
+    // [fleet]: a limit, if any, within its documented range.
+    assert!(
+        scene
+            .fleet()
+            .conicity_limit
+            .is_none_or(|l| l > 0.0 && l <= 2.0)
+    );
 });
