@@ -50,13 +50,13 @@ pub struct FleetArgs {
 /// The streamed CSV's name while the run is going on; renamed when the run is complete.
 pub const PARTIAL_CSV: &str = "fleet.csv.partial";
 
-/// Runs `wheelrail fleet`.
+/// The items the command line names (profile files, or a pairs file), the shard's part of
+/// them.
 ///
 /// # Errors
-/// Everything that stops the whole fleet (exit code 2): the scene, the pairs file, the
-/// shard, an empty list, the output folder.
-pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
-    let template = Scene::load(&args.scene)?;
+/// An unreadable or malformed pairs file, no profiles, a bad shard, an id that `--reports`
+/// cannot use as a folder name.
+fn items(args: &FleetArgs) -> Result<(Vec<Item>, Inputs), Error> {
     let (items, inputs) = match &args.pairs {
         Some(path) => {
             let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
@@ -93,20 +93,26 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
             item.id
         )));
     }
-    let template_path = args.scene.display().to_string();
-    let fleet = Fleet::new(template, inputs, &items, args.reports)?;
-    // Each pair computes at most what a report of the template would: refused as a report
-    // would be (estimated on the template's own profiles, when they can be placed).
+    Ok((items, inputs))
+}
+
+/// Each pair computes at most what a report of the template would: refused as a report
+/// would be (estimated on the template's own profiles, when they can be placed).
+fn within_budget(fleet: &Fleet, template_path: &str, allow_long: bool) -> Result<(), Error> {
     if let Ok(placement) = crate::pipeline::place(fleet.template()) {
         let estimate = crate::cost::estimate(fleet.template(), &placement);
-        if !estimate.within_budget() && !args.allow_long {
+        if !estimate.within_budget() && !allow_long {
             return Err(Error::Other(format!(
                 "{template_path}: each pair: {}: refused; coarsen those keys, or run with --allow-long",
                 estimate.describe()
             )));
         }
     }
-    let dir = &args.out;
+    Ok(())
+}
+
+/// Creates the output folder `dir` (a file in its place is an error).
+fn output_folder(dir: &Path) -> Result<(), Error> {
     if dir.exists() && !dir.is_dir() {
         return Err(Error::Other(format!(
             "{}: is a file, not a folder (choose another --out)",
@@ -114,9 +120,25 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
         )));
     }
     std::fs::create_dir_all(dir).map_err(|source| Error::Io {
-        path: dir.clone(),
+        path: dir.to_path_buf(),
         source,
     })?;
+    Ok(())
+}
+
+/// Runs `wheelrail fleet`.
+///
+/// # Errors
+/// Everything that stops the whole fleet (exit code 2): the scene, the pairs file, the
+/// shard, an empty list, the output folder.
+pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
+    let template = Scene::load(&args.scene)?;
+    let (items, inputs) = items(args)?;
+    let template_path = args.scene.display().to_string();
+    let fleet = Fleet::new(template, inputs, &items, args.reports)?;
+    within_budget(&fleet, &template_path, args.allow_long)?;
+    let dir = &args.out;
+    output_folder(dir)?;
     let partial = dir.join(PARTIAL_CSV);
     let io = |source| Error::Io {
         path: partial.clone(),

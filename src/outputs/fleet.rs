@@ -419,24 +419,17 @@ fn listed(rows: &[Row], limit: Option<f64>) -> Vec<&Row> {
 /// The most rows the page lists (the CSV holds them all).
 const MAX_LISTED: usize = 200;
 
-fn page(
-    fleet: &Fleet,
-    rows: &[Row],
-    template_path: &str,
-    reports: bool,
-    figures: Vec<FigureEntry>,
-) -> ReportPage {
-    let t = fleet.template();
-    let limit = t.fleet.conicity_limit;
-    let failed: Vec<&Row> = rows.iter().filter(|r| r.outcome.is_err()).collect();
+/// The page's summary lines: rows assessed and failed, the spread of tan γe(3 mm), the
+/// pairs over the limit.
+fn summary(rows: &[Row], failed: usize, limit: Option<f64>) -> Vec<String> {
     let mut values: Vec<f64> = rows.iter().filter_map(at3).collect();
     values.sort_by(f64::total_cmp);
     let quantile = |q: f64| values[((values.len() - 1) as f64 * q).round() as usize];
     let mut summary = vec![format!(
         "{} rows: {} assessed, {} failed (their status in fleet.csv says why).",
         rows.len(),
-        rows.len() - failed.len(),
-        failed.len()
+        rows.len() - failed,
+        failed
     )];
     if !values.is_empty() {
         summary.push(format!(
@@ -457,7 +450,16 @@ fn page(
             "No limit set: [fleet] conicity_limit in the scene marks one in the charts and lists the pairs over it.".into(),
         ),
     }
-    let has_hertz = fleet.has_hertz();
+    summary
+}
+
+/// The table of the pairs over the limit (the ten highest without one).
+fn listed_table(
+    rows: &[Row],
+    limit: Option<f64>,
+    has_hertz: bool,
+    reports: bool,
+) -> report::DataTable {
     let mut header = vec![
         "id".to_string(),
         "tan γe(3 mm)".into(),
@@ -511,9 +513,21 @@ fn page(
         Some(l) => format!("Pairs over the limit tan γe(3 mm) > {l}"),
         None => "The ten pairs of highest tan γe(3 mm)".into(),
     };
+    report::DataTable {
+        title,
+        header,
+        rows: table_rows,
+    }
+}
+
+/// The most failed rows the page names (the CSV holds them all).
+const MAX_FAILED_LISTED: usize = 50;
+
+/// One note per failed row (the first [`MAX_FAILED_LISTED`]).
+fn failed_notes(failed: &[&Row]) -> Vec<String> {
     let mut notes: Vec<String> = failed
         .iter()
-        .take(50)
+        .take(MAX_FAILED_LISTED)
         .map(|r| {
             format!(
                 "{}: {}",
@@ -522,15 +536,28 @@ fn page(
             )
         })
         .collect();
-    if failed.len() > 50 {
+    if failed.len() > MAX_FAILED_LISTED {
         notes.push(format!(
             "... and {} more failed rows (fleet.csv lists all).",
-            failed.len() - 50
+            failed.len() - MAX_FAILED_LISTED
         ));
     }
+    notes
+}
+
+fn page(
+    fleet: &Fleet,
+    rows: &[Row],
+    template_path: &str,
+    reports: bool,
+    figures: Vec<FigureEntry>,
+) -> ReportPage {
+    let t = fleet.template();
+    let limit = t.fleet.conicity_limit;
+    let failed: Vec<&Row> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     ReportPage {
         title: format!("Fleet assessment: {}", t.title),
-        summary,
+        summary: summary(rows, failed.len(), limit),
         parameters: vec![
             ("template scene".into(), template_path.to_string()),
             (
@@ -559,12 +586,8 @@ fn page(
             file: "fleet.csv".into(),
             description: "one row per profile or pair: files, sha256, status, tan γe at 2, 3, 4 mm, nonlinearity, flange contact, jumps (units in the column names)".into(),
         }],
-        data_tables: vec![report::DataTable {
-            title,
-            header,
-            rows: table_rows,
-        }],
-        notes,
+        data_tables: vec![listed_table(rows, limit, fleet.has_hertz(), reports)],
+        notes: failed_notes(&failed),
         ..ReportPage::default()
     }
 }

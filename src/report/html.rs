@@ -135,55 +135,13 @@ pub fn render_html(page: &ReportPage) -> String {
         let _ = writeln!(out, "<p>{}</p>", escape_html(paragraph));
     }
     for t in &page.data_tables {
-        let _ = writeln!(
-            out,
-            "<h2 id=\"{}\">{}</h2>\n<table>\n<tr>{}</tr>",
-            escape_html(&anchor(&t.title)),
-            escape_html(&t.title),
-            t.header
-                .iter()
-                .map(|h| format!("<th>{}</th>", escape_html(h)))
-                .collect::<String>()
-        );
-        if t.rows.is_empty() {
-            let _ = writeln!(
-                out,
-                "<tr><td colspan=\"{}\">none</td></tr>",
-                t.header.len().max(1)
-            );
-        }
-        for row in &t.rows {
-            let _ = writeln!(
-                out,
-                "<tr>{}</tr>",
-                row.iter()
-                    .map(|c| format!("<td class=\"v\">{}</td>", escape_html(c)))
-                    .collect::<String>()
-            );
-        }
-        out.push_str("</table>\n");
+        data_table(&mut out, t);
     }
     if !page.parameters.is_empty() {
         out.push_str("<h2 id=\"parameters\">Parameters</h2>\n");
         key_value_table(&mut out, ("Parameter", "Value"), &page.parameters);
     }
-    if !page.figures.is_empty() {
-        out.push_str("<h2 id=\"figures\">Figures</h2>\n");
-        for fig in &page.figures {
-            let _ = write!(
-                out,
-                "<figure id=\"{id}\">\n<img src=\"{svg}\" alt=\"{alt}\">\n\
-                 <figcaption><strong>{name}.</strong> {caption} \
-                 (<a href=\"{png}\">PNG</a>, <a href=\"{svg}\">SVG</a>)</figcaption>\n</figure>\n",
-                id = escape_html(&anchor(&fig.name)),
-                svg = escape_html(&encode_path(&fig.svg)),
-                png = escape_html(&encode_path(&fig.png)),
-                alt = escape_html(&fig.caption),
-                name = escape_html(&fig.name),
-                caption = escape_html(&fig.caption),
-            );
-        }
-    }
+    figures(&mut out, &page.figures);
     if !page.tables.is_empty() {
         out.push_str(
             "<h2 id=\"tables\">Tables</h2>\n<table>\n<tr><th>Table</th><th>File</th>\
@@ -214,6 +172,58 @@ pub fn render_html(page: &ReportPage) -> String {
     }
     out.push_str("</body>\n</html>\n");
     out
+}
+
+/// A table of text cells under its own heading ("none" when it has no rows).
+fn data_table(out: &mut String, t: &DataTable) {
+    let _ = writeln!(
+        out,
+        "<h2 id=\"{}\">{}</h2>\n<table>\n<tr>{}</tr>",
+        escape_html(&anchor(&t.title)),
+        escape_html(&t.title),
+        t.header
+            .iter()
+            .map(|h| format!("<th>{}</th>", escape_html(h)))
+            .collect::<String>()
+    );
+    if t.rows.is_empty() {
+        let _ = writeln!(
+            out,
+            "<tr><td colspan=\"{}\">none</td></tr>",
+            t.header.len().max(1)
+        );
+    }
+    for row in &t.rows {
+        let _ = writeln!(
+            out,
+            "<tr>{}</tr>",
+            row.iter()
+                .map(|c| format!("<td class=\"v\">{}</td>", escape_html(c)))
+                .collect::<String>()
+        );
+    }
+    out.push_str("</table>\n");
+}
+
+/// The figures, each as its SVG with a caption and links to both formats.
+fn figures(out: &mut String, figures: &[FigureEntry]) {
+    if !figures.is_empty() {
+        out.push_str("<h2 id=\"figures\">Figures</h2>\n");
+        for fig in figures {
+            let _ = write!(
+                out,
+                "<figure id=\"{id}\">\n<img src=\"{svg}\" alt=\"{alt}\">\n\
+                 <figcaption><strong>{name}.</strong> {caption} \
+                 (<a href=\"{png}\">PNG</a>, <a href=\"{svg}\">SVG</a>)</figcaption>\n</figure>\n",
+                id = escape_html(&anchor(&fig.name)),
+                svg = escape_html(&encode_path(&fig.svg)),
+                png = escape_html(&encode_path(&fig.png)),
+                alt = escape_html(&fig.caption),
+                name = escape_html(&fig.name),
+                caption = escape_html(&fig.caption),
+            );
+        }
+    }
 }
 
 fn key_value_table(out: &mut String, (key, value): (&str, &str), rows: &[(String, String)]) {
