@@ -7,10 +7,12 @@
 use divan::black_box;
 use std::path::Path;
 use std::sync::OnceLock;
+use wheelrail::profile::read::PointProfile;
+use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::scene::Scene;
-use wheelrail::track::Placement;
+use wheelrail::track::{Placement, SidePair};
 use wheelrail::{hertz, pipeline};
 
 fn main() {
@@ -35,6 +37,77 @@ fn rigid_sweep() -> &'static RigidSweep {
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
     static Q: OnceLock<QuasiElasticSweep> = OnceLock::new();
     Q.get_or_init(|| quasi_elastic::search(placement(), rigid_sweep(), scene().quasi_elastic()))
+}
+
+/// Step at which the sampled benchmarks sample the built-in profiles (mm), as the tradeoff
+/// study's sampled setting.
+const SAMPLE_STEP_MM: f64 = 0.25;
+
+/// S1002 and UIC60 sampled every [`SAMPLE_STEP_MM`] (section joints included): the points a
+/// measured pair would give, `(wheel, rail)`.
+fn sampled_points() -> &'static (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    static P: OnceLock<(Vec<[f64; 2]>, Vec<[f64; 2]>)> = OnceLock::new();
+    P.get_or_init(|| {
+        let points = |p: Profile| {
+            p.sample(SAMPLE_STEP_MM)
+                .iter()
+                .map(|r| [r[0], r[1]])
+                .collect()
+        };
+        (points(Profile::s1002()), points(Profile::uic60e1()))
+    })
+}
+
+/// The sampled wheels and rails checked, fitted (interpolating splines) and placed as the
+/// paper scene places the analytic ones.
+fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
+    let analytic = placement();
+    let layout = analytic.layout();
+    let fit = |kind, points: &[[f64; 2]]| {
+        let points = PointProfile::from_points(kind, "sampled", points.to_vec()).unwrap();
+        Profile::from_points(points, 0.0).unwrap()
+    };
+    let side = |pair: &SidePair| {
+        SidePair::place(
+            fit(ProfileKind::Wheel, wheel),
+            pair.wheel().nominal_radius_mm(),
+            fit(ProfileKind::Rail, rail),
+            scene().rail_profile_inclination(),
+            layout,
+        )
+        .unwrap()
+    };
+    Placement::new(
+        layout.clone(),
+        side(analytic.left()),
+        side(analytic.right()),
+    )
+    .unwrap()
+}
+
+fn sampled_placement() -> &'static Placement {
+    static P: OnceLock<Placement> = OnceLock::new();
+    P.get_or_init(|| {
+        let (wheel, rail) = sampled_points();
+        place_sampled_pair(wheel, rail)
+    })
+}
+
+/// Checking, fitting and placing S1002 and UIC60 sampled every 0.25 mm (both sides).
+#[divan::bench]
+fn place_sampled() -> Placement {
+    let (wheel, rail) = sampled_points();
+    place_sampled_pair(black_box(wheel), black_box(rail))
+}
+
+/// The rigid sweep of the paper scene on the sampled profiles, default solver.
+#[divan::bench]
+fn rigid_sampled() -> RigidSweep {
+    rigid::search(
+        black_box(sampled_placement()),
+        scene().sweep_mm(),
+        black_box(Solver::default()),
+    )
 }
 
 /// Loading and placing the four profiles.
