@@ -12,7 +12,7 @@ use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::scene::Scene;
-use wheelrail::track::{Placement, SidePair};
+use wheelrail::track::{PlacedRail, PlacedWheel, Placement, SidePair};
 use wheelrail::{hertz, pipeline};
 
 fn main() {
@@ -58,8 +58,9 @@ fn sampled_points() -> &'static (Vec<[f64; 2]>, Vec<[f64; 2]>) {
     })
 }
 
-/// The sampled wheels and rails checked, fitted (interpolating splines) and placed as the
-/// paper scene places the analytic ones.
+/// The sampled wheel and rail checked, fitted (interpolating splines) and placed as the
+/// paper scene places the analytic ones (`pipeline::place`): each profile fitted once, the
+/// wheel placed on both sides, the rail placed once and copied to the right side.
 fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
     let analytic = placement();
     let layout = analytic.layout();
@@ -67,22 +68,21 @@ fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
         let points = PointProfile::from_points(kind, "sampled", points.to_vec()).unwrap();
         Profile::from_points(points, 0.0).unwrap()
     };
-    let side = |pair: &SidePair| {
-        SidePair::place(
-            fit(ProfileKind::Wheel, wheel),
-            pair.wheel().nominal_radius_mm(),
-            fit(ProfileKind::Rail, rail),
-            scene().rail_profile_inclination(),
-            layout,
-        )
-        .unwrap()
-    };
-    Placement::new(
-        layout.clone(),
-        side(analytic.left()),
-        side(analytic.right()),
+    let wheel = fit(ProfileKind::Wheel, wheel);
+    let rail = PlacedRail::place(
+        fit(ProfileKind::Rail, rail),
+        scene().rail_profile_inclination(),
+        layout,
     )
-    .unwrap()
+    .unwrap();
+    let side = |pair: &SidePair, rail: PlacedRail| {
+        let wheel =
+            PlacedWheel::place(wheel.clone(), pair.wheel().nominal_radius_mm(), layout).unwrap();
+        SidePair::new(wheel, rail)
+    };
+    let left = side(analytic.left(), rail.clone());
+    let right = side(analytic.right(), rail);
+    Placement::new(layout.clone(), left, right).unwrap()
 }
 
 fn sampled_placement() -> &'static Placement {
@@ -93,7 +93,8 @@ fn sampled_placement() -> &'static Placement {
     })
 }
 
-/// Checking, fitting and placing S1002 and UIC60 sampled every 0.25 mm (both sides).
+/// Checking, fitting and placing S1002 and UIC60 sampled every 0.25 mm (both sides, one
+/// fit and one rail placement each, as the paper scene's placement).
 #[divan::bench]
 fn place_sampled() -> Placement {
     let (wheel, rail) = sampled_points();
@@ -158,4 +159,27 @@ fn hertz_sweep() -> Vec<hertz::sweep::Position> {
         e_star,
         s.hertz(),
     )
+}
+
+/// Positions from -15 to 15 mm, `n` of them: the sweep-length scaling of the rigid sweep
+/// and the quasi-elastic pass (time per position = median / n).
+fn sweep_of(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| -15.0 + 30.0 * i as f64 / (n - 1) as f64)
+        .collect()
+}
+
+/// The rigid sweep (default solver) over 31, 301 and 3001 positions.
+#[divan::bench(args = [31, 301, 3001])]
+fn rigid_positions(bencher: divan::Bencher, n: usize) {
+    let sweep = sweep_of(n);
+    bencher.bench(|| rigid::search(black_box(placement()), &sweep, Solver::default()));
+}
+
+/// The quasi-elastic pass over rigid sweeps of 31, 301 and 3001 positions.
+#[divan::bench(args = [31, 301, 3001])]
+fn quasi_elastic_positions(bencher: divan::Bencher, n: usize) {
+    let rigid = rigid::search(placement(), &sweep_of(n), Solver::default());
+    bencher
+        .bench(|| quasi_elastic::search(black_box(placement()), &rigid, scene().quasi_elastic()));
 }
