@@ -1,7 +1,6 @@
 //! A uniform table of a placed rail's heights, with block maxima for the coarse scans.
 
 use super::PlacedRail;
-use std::sync::Arc;
 
 /// Step of the uniform table of rail heights [`PlacedRail::heights`] (mm): linear
 /// interpolation errs by at most `Z'' h^2 / 8`, 4e-6 mm on the R13 gauge corner at the
@@ -19,11 +18,10 @@ pub struct HeightTable {
     t_max: f64,
     /// Heights at `y0 + i step`, the last one repeated so that interpolation at `t_max`
     /// reads a valid neighbour.
-    z: Arc<[f64]>,
+    z: Vec<f64>,
     /// `block_max[k][j]`: the highest of `z[j B ..= (j + 2^k) B]`, `B` = [`HEIGHT_BLOCK`] (a
     /// sparse table: the maximum over any run of blocks is the larger of two entries).
-    /// Shared (`Arc`) with the heights: copies of a placed rail share its tables.
-    block_max: Arc<[Vec<f64>]>,
+    block_max: Vec<Vec<f64>>,
 }
 
 /// Entries of [`HeightTable`] per block of its block maxima.
@@ -35,13 +33,13 @@ impl HeightTable {
         let (lo, hi) = rail.y_range();
         let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
         let step = (hi - lo) / n as f64;
-        // Collected straight into the shared slice (an exact-size iterator: one allocation).
-        let z: Arc<[f64]> = (0..=n + 1)
+        let mut z: Vec<f64> = (0..=n)
             .map(|i| {
-                rail.at((lo + i.min(n) as f64 * step).min(hi))
+                rail.at((lo + i as f64 * step).min(hi))
                     .map_or(f64::NAN, |p| p.z)
             })
             .collect();
+        z.push(z[n]);
         // Every interpolated height between entries i and i + 1 lies below the maximum of
         // block i / B, which includes the first entry of the next block.
         let blocks = n / HEIGHT_BLOCK + 1;
@@ -69,7 +67,7 @@ impl HeightTable {
             inv_step: 1.0 / step,
             t_max: n as f64,
             z,
-            block_max: block_max.into(),
+            block_max,
         }
     }
 

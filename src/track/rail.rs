@@ -5,7 +5,6 @@ use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
 use crate::profile::{Profile, ProfileKind};
 use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
-use std::sync::Arc;
 
 /// Sampling step used to find the top and the gauge point before refining them (mm).
 /// Fine enough that no local extremum of a rail head (radii >= 5 mm) is stepped over.
@@ -50,9 +49,7 @@ pub struct PlacedRail {
     top: [f64; 2],
     /// Start guesses for [`PlacedRail::at`]: `(u, du/dY)` at `Y = y_range.0 + i h`, with
     /// `h` = `INVERSE_TABLE_STEP_MM` (at most); cubic Hermite interpolation between them.
-    /// Shared (`Arc`), as the other tables: a placed rail is copied to every side and scene
-    /// that runs on it, and the copy costs no table.
-    inverse: Arc<[[f64; 2]]>,
+    inverse: Vec<[f64; 2]>,
     /// `1 / h` of `inverse`.
     inverse_scale: f64,
     /// `h` of `inverse` (kept: a division less per lookup).
@@ -61,6 +58,9 @@ pub struct PlacedRail {
     heights: HeightTable,
     /// The surface `Z(Y)` by quintic pieces (see [`SURFACE_TABLE_STEP_MM`]).
     surface_table: SurfaceTable,
+    /// The pieces of `surface_table` split at a knot of a sampled rail (last: read only
+    /// there, off the hot fields).
+    splits: Vec<Split>,
 }
 
 /// Step of the piecewise-quintic table of the placed rail surface (mm). Each piece is the
@@ -92,28 +92,12 @@ const MIN_SPLIT_T: f64 = 0.25;
 
 /// Quintic pieces of `Z(Y)`: monomial coefficients in `t = (Y - Y_i) / h` on `[0, 1]`; NaN
 /// for pieces that are not tabulated, and `[NaN, k, ..]` for a piece split at a spline knot,
-/// its two quintics in `splits[k]`.
+/// its two quintics in [`PlacedRail`]'s `splits[k]`.
 #[derive(Debug, Clone, Default)]
 struct SurfaceTable {
     y0: f64,
     inv_step: f64,
-    pieces: Arc<[[f64; 6]]>,
-    splits: Arc<[Split]>,
-}
-
-impl SurfaceTable {
-    /// The surface at `f` in the piece split at a knot, `splits[index]`. Out of line: the
-    /// analytic rails' lookups stay as short as before the splits.
-    #[inline(never)]
-    fn split_at(&self, index: usize, f: f64) -> Option<RailPoint> {
-        let split = self.splits.get(index)?;
-        let (c, g) = if f <= split.t_knot {
-            (&split.below, f)
-        } else {
-            (&split.above, f - split.t_knot)
-        };
-        (!c[0].is_nan()).then(|| quintic_point(c, g, self.inv_step))
-    }
+    pieces: Vec<[f64; 6]>,
 }
 
 /// A table piece split at a spline knot: `t_knot` in `(0, 1)`, the quintic of `[0, t_knot]`
@@ -238,11 +222,12 @@ impl PlacedRail {
             y_range: (0.0, 0.0),
             gauge_point: [0.0, 0.0],
             top: [0.0, 0.0],
-            inverse: Arc::new([]),
+            inverse: Vec::new(),
             inverse_scale: 0.0,
             inverse_step: 0.0,
             heights: HeightTable::default(),
             surface_table: SurfaceTable::default(),
+            splits: Vec::new(),
         };
         let scan = Scan::of(&rail.profile, rotation);
         let (i_top, top) = rail.find_top(&scan);
@@ -370,7 +355,7 @@ impl PlacedRail {
         }
         Some(
             self.tabulated_at(y)
-                .unwrap_or_else(|| self.invert(y, self.guess(y)).1),
+                .unwrap_or_else(|| self.untabulated_at(y)),
         )
     }
 
@@ -403,15 +388,38 @@ impl PlacedRail {
         // `t >= 0` inside y_range (`y0` is its start); through i32 as in `guess`.
         let i = t as i32 as usize;
         let c = table.pieces.get(i)?;
-        let f = t - i as f64;
         if c[0].is_nan() {
-            // Not tabulated (no split index), or split at a knot.
-            if c[1].is_nan() {
-                return None;
-            }
-            return table.split_at(c[1] as usize, f);
+            return None;
         }
+        let f = t - i as f64;
         Some(quintic_point(c, f, table.inv_step))
+    }
+
+    /// The surface at `y` (inside `y_range`) where [`PlacedRail::tabulated_at`] has no
+    /// plain quintic: from the split piece of a sampled rail's knot, else by inversion. Out
+    /// of line, so that the tabulated lookup stays as short as it was before the splits.
+    #[inline(never)]
+    fn untabulated_at(&self, y: f64) -> RailPoint {
+        self.split_at(y)
+            .unwrap_or_else(|| self.invert(y, self.guess(y)).1)
+    }
+
+    /// The surface at `y` (inside `y_range`) from the part of a piece split at a knot, `None`
+    /// where `y` is in no such part.
+    fn split_at(&self, y: f64) -> Option<RailPoint> {
+        let table = &self.surface_table;
+        let t = (y - table.y0) * table.inv_step;
+        let i = t as i32 as usize;
+        // `[NaN, k, ..]` marks a piece split at a knot, `splits[k]`.
+        let c = table.pieces.get(i).filter(|c| c[1].is_finite())?;
+        let split = self.splits.get(c[1] as usize)?;
+        let f = t - i as f64;
+        let (c, g) = if f <= split.t_knot {
+            (&split.below, f)
+        } else {
+            (&split.above, f - split.t_knot)
+        };
+        (!c[0].is_nan()).then(|| quintic_point(c, g, table.inv_step))
     }
 
     /// Fills the quintic table of the surface from exact inversions every
@@ -449,7 +457,7 @@ impl PlacedRail {
             .collect();
         let steep = |p: &RailPoint| !(p.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && p.z.is_finite());
         let mut splits = Vec::new();
-        let pieces: Arc<[[f64; 6]]> = nodes
+        let pieces: Vec<[f64; 6]> = nodes
             .windows(2)
             .enumerate()
             .map(|(i, w)| {
@@ -500,8 +508,8 @@ impl PlacedRail {
             y0: y_lo,
             inv_step: 1.0 / h,
             pieces,
-            splits: splits.into(),
         };
+        self.splits = splits;
     }
 
     /// The start of the inversion at `y` (inside `y_range`): cubic Hermite interpolation of
@@ -575,7 +583,7 @@ impl PlacedRail {
         // at the first).
         let (cos, sin) = self.cos_sin();
         let mut guess = (y_lo - self.frame.translation.x) / cos;
-        let inverse: Vec<[f64; 2]> = (0..=n)
+        self.inverse = (0..=n)
             .map(|i| {
                 let y = if i == n { y_hi } else { y_lo + h * i as f64 };
                 let (u, _) = self.invert(y, guess);
@@ -585,7 +593,6 @@ impl PlacedRail {
                 [u, du_dy]
             })
             .collect();
-        self.inverse = inverse.into();
         self.inverse_scale = 1.0 / h;
         self.inverse_step = h;
     }
@@ -730,7 +737,8 @@ mod tests {
         let n = ((hi - lo) / 1e-3) as usize;
         for i in 0..=n {
             let y = lo + (hi - lo) * i as f64 / n as f64;
-            let (Some(t), Some(e)) = (rail.tabulated_at(y), rail.exact_at(y)) else {
+            let table = rail.tabulated_at(y).or_else(|| rail.split_at(y));
+            let (Some(t), Some(e)) = (table, rail.exact_at(y)) else {
                 continue;
             };
             tabulated += 1;
@@ -759,7 +767,7 @@ mod tests {
                 .unwrap();
         let profile = Profile::from_points(points, 0.0).unwrap();
         let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
-        let splits = rail.surface_table.splits.len();
+        let splits = rail.splits.len();
         let (tabulated, n, worst) = table_against_inversion(&rail);
         println!(
             "tabulated {tabulated} of {n} ({splits} split pieces); max |dz| {:.1e}, |dslope| {:.1e}, |dZ''| rel {:.1e}",
