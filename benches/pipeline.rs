@@ -43,10 +43,13 @@ fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
 /// study's sampled setting.
 const SAMPLE_STEP_MM: f64 = 0.25;
 
+/// The points of a sampled profile `(u, v)` (mm).
+type Points = Vec<[f64; 2]>;
+
 /// S1002 and UIC60 sampled every [`SAMPLE_STEP_MM`] (section joints included): the points a
 /// measured pair would give, `(wheel, rail)`.
-fn sampled_points() -> &'static (Vec<[f64; 2]>, Vec<[f64; 2]>) {
-    static P: OnceLock<(Vec<[f64; 2]>, Vec<[f64; 2]>)> = OnceLock::new();
+fn sampled_points() -> &'static (Points, Points) {
+    static P: OnceLock<(Points, Points)> = OnceLock::new();
     P.get_or_init(|| {
         let points = |p: Profile| {
             p.sample(SAMPLE_STEP_MM)
