@@ -7,10 +7,12 @@
 use divan::black_box;
 use std::path::Path;
 use std::sync::OnceLock;
+use wheelrail::profile::read::PointProfile;
+use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::scene::Scene;
-use wheelrail::track::Placement;
+use wheelrail::track::{PlacedRail, PlacedWheel, Placement, SidePair};
 use wheelrail::{hertz, pipeline};
 
 fn main() {
@@ -35,6 +37,81 @@ fn rigid_sweep() -> &'static RigidSweep {
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
     static Q: OnceLock<QuasiElasticSweep> = OnceLock::new();
     Q.get_or_init(|| quasi_elastic::search(placement(), rigid_sweep(), scene().quasi_elastic()))
+}
+
+/// Step at which the sampled benchmarks sample the built-in profiles (mm), as the tradeoff
+/// study's sampled setting.
+const SAMPLE_STEP_MM: f64 = 0.25;
+
+/// The points of a sampled profile `(u, v)` (mm).
+type Points = Vec<[f64; 2]>;
+
+/// S1002 and UIC60 sampled every [`SAMPLE_STEP_MM`] (section joints included): the points a
+/// measured pair would give, `(wheel, rail)`.
+fn sampled_points() -> &'static (Points, Points) {
+    static P: OnceLock<(Points, Points)> = OnceLock::new();
+    P.get_or_init(|| {
+        let points = |p: Profile| {
+            p.sample(SAMPLE_STEP_MM)
+                .iter()
+                .map(|r| [r[0], r[1]])
+                .collect()
+        };
+        (points(Profile::s1002()), points(Profile::uic60e1()))
+    })
+}
+
+/// The sampled wheel and rail checked, fitted (interpolating splines) and placed as the
+/// paper scene places the analytic ones (`pipeline::place`): each profile fitted once, the
+/// wheel placed on both sides, the rail placed once and copied to the right side.
+fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
+    let analytic = placement();
+    let layout = analytic.layout();
+    let fit = |kind, points: &[[f64; 2]]| {
+        let points = PointProfile::from_points(kind, "sampled", points.to_vec()).unwrap();
+        Profile::from_points(points, 0.0).unwrap()
+    };
+    let wheel = fit(ProfileKind::Wheel, wheel);
+    let rail = PlacedRail::place(
+        fit(ProfileKind::Rail, rail),
+        scene().rail_profile_inclination(),
+        layout,
+    )
+    .unwrap();
+    let side = |pair: &SidePair, rail: PlacedRail| {
+        let wheel =
+            PlacedWheel::place(wheel.clone(), pair.wheel().nominal_radius_mm(), layout).unwrap();
+        SidePair::new(wheel, rail)
+    };
+    let left = side(analytic.left(), rail.clone());
+    let right = side(analytic.right(), rail);
+    Placement::new(layout.clone(), left, right).unwrap()
+}
+
+fn sampled_placement() -> &'static Placement {
+    static P: OnceLock<Placement> = OnceLock::new();
+    P.get_or_init(|| {
+        let (wheel, rail) = sampled_points();
+        place_sampled_pair(wheel, rail)
+    })
+}
+
+/// Checking, fitting and placing S1002 and UIC60 sampled every 0.25 mm (both sides, one
+/// fit and one rail placement each, as the paper scene's placement).
+#[divan::bench]
+fn place_sampled() -> Placement {
+    let (wheel, rail) = sampled_points();
+    place_sampled_pair(black_box(wheel), black_box(rail))
+}
+
+/// The rigid sweep of the paper scene on the sampled profiles, default solver.
+#[divan::bench]
+fn rigid_sampled() -> RigidSweep {
+    rigid::search(
+        black_box(sampled_placement()),
+        scene().sweep_mm(),
+        black_box(Solver::default()),
+    )
 }
 
 /// Loading and placing the four profiles.
@@ -85,4 +162,27 @@ fn hertz_sweep() -> Vec<hertz::sweep::Position> {
         e_star,
         s.hertz(),
     )
+}
+
+/// Positions from -15 to 15 mm, `n` of them: the sweep-length scaling of the rigid sweep
+/// and the quasi-elastic pass (time per position = median / n).
+fn sweep_of(n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| -15.0 + 30.0 * i as f64 / (n - 1) as f64)
+        .collect()
+}
+
+/// The rigid sweep (default solver) over 31, 301 and 3001 positions.
+#[divan::bench(args = [31, 301, 3001])]
+fn rigid_positions(bencher: divan::Bencher, n: usize) {
+    let sweep = sweep_of(n);
+    bencher.bench(|| rigid::search(black_box(placement()), &sweep, Solver::default()));
+}
+
+/// The quasi-elastic pass over rigid sweeps of 31, 301 and 3001 positions.
+#[divan::bench(args = [31, 301, 3001])]
+fn quasi_elastic_positions(bencher: divan::Bencher, n: usize) {
+    let rigid = rigid::search(placement(), &sweep_of(n), Solver::default());
+    bencher
+        .bench(|| quasi_elastic::search(black_box(placement()), &rigid, scene().quasi_elastic()));
 }

@@ -192,17 +192,42 @@ impl SmoothingSpline {
         (self.knots[0], self.knots[self.knots.len() - 1])
     }
 
-    /// Index of the interval `[knots[i], knots[i + 1]]` holding `x` (x inside the domain).
+    /// Index of the interval `[knots[i], knots[i + 1]]` holding `x` (x inside the domain):
+    /// the last `i < knots.len() - 1` with `knots[i] <= x`.
+    #[inline]
     fn interval(&self, x: f64) -> usize {
         let nb = self.buckets.len() - 1;
+        let last = self.knots.len() - 2;
         // Saturating float-to-int cast: NaN gives 0, huge values nb.
         let k = (((x - self.knots[0]) * self.bucket_scale) as usize).min(nb);
+        // The bucket's interval, then a step or two to the interval holding x (a bucket holds
+        // one or two knots unless the spacing is very uneven, and rounding of the bucket edge
+        // can put x one interval before the bucket's): one or two comparisons, where a binary
+        // search over the neighbouring buckets took a loop. A bucket holding many knots
+        // takes the binary search.
+        let mut i = self.buckets[k];
+        if i > 0 && self.knots[i] > x {
+            i -= 1;
+        }
+        for _ in 0..WALK_STEPS {
+            if i < last && self.knots[i + 1] <= x {
+                i += 1;
+            } else if self.knots[i] <= x || i == 0 {
+                return i;
+            } else {
+                break;
+            }
+        }
         // One bucket of margin on each side absorbs rounding of the bucket edges.
         let lo = self.buckets[k.saturating_sub(1)];
         let hi = self.buckets[(k + 2).min(nb)];
         lo + self.knots[lo + 1..=hi].partition_point(|&knot| knot <= x)
     }
 }
+
+/// Steps from a bucket's interval after which [`SmoothingSpline::eval`] searches the
+/// neighbouring buckets by bisection instead (very uneven spacing).
+const WALK_STEPS: usize = 3;
 
 /// Equal-width buckets over the knots, one per interval on average.
 fn bucket_table(x: &[f64]) -> (Vec<usize>, f64) {

@@ -4,16 +4,25 @@
 //! Run time is spent evaluating the gap between a wheel point and the rail under it, so the
 //! placement builds these tables once per rail: [`PlacedRail::at`] reads quintic Hermite
 //! pieces of `Z(Y)` every [`SURFACE_TABLE_STEP_MM`] built from exact values and
-//! derivatives; pieces that are steep (slope above [`SURFACE_TABLE_MAX_SLOPE`]), hold a
-//! section joint, or belong to a sampled rail fall back to [`PlacedRail::exact_at`],
-//! Newton's inversion of the profile from a cubic table of `u(Y)`. The unit test
-//! `surface_table_matches_the_exact_inversion` bounds the difference of the two over the
-//! whole head.
+//! derivatives; on a sampled rail a piece that holds one spline knot is two quintics split
+//! at the knot (the third derivative jumps there). Pieces that are steep (slope above
+//! [`SURFACE_TABLE_MAX_SLOPE`]), hold a section joint of an analytic rail or two knots, and
+//! split parts shorter than a quarter piece (their `Z''` would take the rounding of the end
+//! values over a tiny length) fall back to [`PlacedRail::exact_at`], Newton's inversion of
+//! the profile from a cubic table of `u(Y)`, out of line so that the tabulated lookup stays
+//! short. Unit tests bound the difference of the two over the whole head, for the analytic
+//! and the sampled UIC60 (`surface_table_matches_the_exact_inversion`,
+//! `sampled_surface_table_matches_the_exact_inversion`).
 
 use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
 use crate::profile::{Profile, ProfileKind};
 use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
+
+mod surface;
+
+pub use surface::{SURFACE_TABLE_MAX_SLOPE, SURFACE_TABLE_STEP_MM};
+use surface::{Split, SurfaceTable};
 
 /// Sampling step used to find the top and the gauge point before refining them (mm).
 /// Fine enough that no local extremum of a rail head (radii >= 5 mm) is stepped over.
@@ -67,28 +76,9 @@ pub struct PlacedRail {
     heights: HeightTable,
     /// The surface `Z(Y)` by quintic pieces (see [`SURFACE_TABLE_STEP_MM`]).
     surface_table: SurfaceTable,
-}
-
-/// Step of the piecewise-quintic table of the placed rail surface (mm). Each piece is the
-/// quintic Hermite interpolant of the exact `Z`, `Z'`, `Z''` at its ends. Against the exact
-/// inversion of UIC60 at 1:40 (`surface_table_matches_the_exact_inversion`) it errs by at most
-/// 8.5e-13 mm in `Z`, 1.5e-10 in the slope and 1.5e-8 relative in `Z''`, all on the R13
-/// corners at slopes 1.5 to [`SURFACE_TABLE_MAX_SLOPE`], where the derivatives of `Z(Y)` are
-/// largest; on the crown and shoulder it is exact to rounding.
-pub const SURFACE_TABLE_STEP_MM: f64 = 0.02;
-/// Pieces steeper than this (`|dZ/dY|` at an end, about 72 degrees) are not tabulated: the
-/// derivatives of `Z(Y)` grow without bound towards a vertical tangent. There, and on pieces
-/// that hold a section joint (where `Z''` jumps) or of sampled rails, [`PlacedRail::at`]
-/// inverts the profile by Newton's method instead.
-pub const SURFACE_TABLE_MAX_SLOPE: f64 = 3.0;
-
-/// Quintic pieces of `Z(Y)`: monomial coefficients in `t = (Y - Y_i) / h` on `[0, 1]`, NaN
-/// for pieces that are not tabulated.
-#[derive(Debug, Clone, Default)]
-struct SurfaceTable {
-    y0: f64,
-    inv_step: f64,
-    pieces: Vec<[f64; 6]>,
+    /// The pieces of `surface_table` split at a knot of a sampled rail (last: read only
+    /// there, off the hot fields).
+    splits: Vec<Split>,
 }
 
 /// The rail profile sampled every [`PLACEMENT_SCAN_STEP_MM`] for its placement.
@@ -170,6 +160,7 @@ impl PlacedRail {
             inverse_step: 0.0,
             heights: HeightTable::default(),
             surface_table: SurfaceTable::default(),
+            splits: Vec::new(),
         };
         let scan = Scan::of(&rail.profile, rotation);
         let (i_top, top) = rail.find_top(&scan);
@@ -297,7 +288,7 @@ impl PlacedRail {
         }
         Some(
             self.tabulated_at(y)
-                .unwrap_or_else(|| self.invert(y, self.guess(y)).1),
+                .unwrap_or_else(|| self.untabulated_at(y)),
         )
     }
 
@@ -319,82 +310,6 @@ impl PlacedRail {
         (y_lo..=y_hi)
             .contains(&y)
             .then(|| self.invert(y, self.guess(y)).0)
-    }
-
-    /// The surface at `y` (inside `y_range`) from its quintic piece, `None` where `y` has no
-    /// tabulated piece.
-    #[inline]
-    fn tabulated_at(&self, y: f64) -> Option<RailPoint> {
-        let table = &self.surface_table;
-        let t = (y - table.y0) * table.inv_step;
-        // `t >= 0` inside y_range (`y0` is its start); through i32 as in `guess`.
-        let i = t as i32 as usize;
-        let c = table.pieces.get(i)?;
-        if c[0].is_nan() {
-            return None;
-        }
-        let f = t - i as f64;
-        let z = c[0] + f * (c[1] + f * (c[2] + f * (c[3] + f * (c[4] + f * c[5]))));
-        let dz = c[1] + f * (2.0 * c[2] + f * (3.0 * c[3] + f * (4.0 * c[4] + f * 5.0 * c[5])));
-        let d2 = 2.0 * c[2] + f * (6.0 * c[3] + f * (12.0 * c[4] + f * 20.0 * c[5]));
-        Some(RailPoint {
-            z,
-            slope: dz * table.inv_step,
-            d2: d2 * table.inv_step * table.inv_step,
-        })
-    }
-
-    /// Fills the quintic table of the surface from exact inversions every
-    /// [`SURFACE_TABLE_STEP_MM`]; pieces that are steep, hold a joint or belong to a sampled
-    /// rail are left out (NaN).
-    fn tabulate_surface(&mut self) {
-        let (y_lo, y_hi) = self.y_range;
-        let n = ((y_hi - y_lo) / SURFACE_TABLE_STEP_MM).floor() as usize;
-        let h = SURFACE_TABLE_STEP_MM;
-        let joints: Vec<f64> = self
-            .profile
-            .joints()
-            .into_iter()
-            .map(|u| self.point_of(u)[0])
-            .collect();
-        let sampled = self.profile.is_sampled();
-        let nodes: Vec<RailPoint> = (0..=n)
-            .map(|i| {
-                let y = y_lo + h * i as f64;
-                self.invert(y, self.guess(y)).1
-            })
-            .collect();
-        let pieces = nodes
-            .windows(2)
-            .enumerate()
-            .map(|(i, w)| {
-                let (a, b) = (w[0], w[1]);
-                let (ya, yb) = (y_lo + h * i as f64, y_lo + h * (i + 1) as f64);
-                let holds_joint = joints.iter().any(|&j| (ya..=yb).contains(&j));
-                let steep = a.slope.abs().max(b.slope.abs()) > SURFACE_TABLE_MAX_SLOPE;
-                if sampled || holds_joint || steep || !(a.z.is_finite() && b.z.is_finite()) {
-                    return [f64::NAN; 6];
-                }
-                // Quintic Hermite in t: values, h * slopes and h^2 * second derivatives.
-                let (p0, p1) = (a.z, b.z);
-                let (m0, m1) = (h * a.slope, h * b.slope);
-                let (s0, s1) = (h * h * a.d2, h * h * b.d2);
-                let dp = p1 - p0;
-                [
-                    p0,
-                    m0,
-                    0.5 * s0,
-                    10.0 * dp - 6.0 * m0 - 4.0 * m1 - 1.5 * s0 + 0.5 * s1,
-                    -15.0 * dp + 8.0 * m0 + 7.0 * m1 + 1.5 * s0 - s1,
-                    6.0 * dp - 3.0 * m0 - 3.0 * m1 - 0.5 * s0 + 0.5 * s1,
-                ]
-            })
-            .collect();
-        self.surface_table = SurfaceTable {
-            y0: y_lo,
-            inv_step: 1.0 / h,
-            pieces,
-        };
     }
 
     /// The start of the inversion at `y` (inside `y_range`): cubic Hermite interpolation of
@@ -563,89 +478,4 @@ fn refine_extremum(df: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn paper_layout() -> TrackLayout {
-        TrackLayout::standard(Inclination::parse("1:40").unwrap())
-    }
-
-    #[test]
-    fn uic60_at_1_in_40_has_its_top_43_03_mm_field_side_of_the_gauge_point() {
-        let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
-        // Gauge point exactly at half the gauge (bisection to 1e-15).
-        assert!((rail.gauge_point()[0] - 717.5).abs() < 1e-9);
-        assert!((rail.gauge_point()[1] + 14.0).abs() < 1e-9);
-        assert!(rail.top()[1].abs() < 1e-12);
-        // Reference value (the project's reference notes on the standard-gauge layout,
-        // outside this repository): 43.03 mm (2 decimals), so 760.53 from the track centre.
-        let offset = rail.top()[0] - rail.gauge_point()[0];
-        assert!((offset - 43.03).abs() < 0.005, "{offset}");
-    }
-
-    #[test]
-    fn top_offsets_for_other_inclinations() {
-        // Same reference notes: upright 35.98 mm, 1:20 46.5 mm (as many decimals as given).
-        for (incl, expected, tol) in [("vertical", 35.98, 0.005), ("1:20", 46.5, 0.05)] {
-            let layout = TrackLayout {
-                inclination: Inclination::parse(incl).unwrap(),
-                ..paper_layout()
-            };
-            let rail =
-                PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &layout).unwrap();
-            let offset = rail.top()[0] - rail.gauge_point()[0];
-            assert!((offset - expected).abs() < tol, "{incl}: {offset}");
-        }
-    }
-
-    #[test]
-    fn rail_inverse_is_exact() {
-        let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
-        let (lo, hi) = rail.profile().domain();
-        for i in 0..=200 {
-            let u = lo + (hi - lo) * f64::from(i) / 200.0;
-            let p = rail.point_of(u);
-            if let Some(r) = rail.at(p[0]) {
-                assert!((r.z - p[1]).abs() < 1e-10, "u = {u}");
-            }
-        }
-    }
-
-    #[test]
-    fn surface_table_matches_the_exact_inversion() {
-        // Every 1e-3 mm over the placed UIC60 at 1:40: the quintic pieces against Newton's
-        // inversion of the analytic head.
-        let rail =
-            PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
-        let (lo, hi) = rail.y_range();
-        let (mut tabulated, mut worst) = (0, [0.0f64; 3]);
-        let n = ((hi - lo) / 1e-3) as usize;
-        for i in 0..=n {
-            let y = lo + (hi - lo) * i as f64 / n as f64;
-            let (Some(t), Some(e)) = (rail.tabulated_at(y), rail.exact_at(y)) else {
-                continue;
-            };
-            tabulated += 1;
-            for (w, d) in worst.iter_mut().zip([
-                t.z - e.z,
-                t.slope - e.slope,
-                (t.d2 - e.d2) / (1.0 + e.d2.abs()),
-            ]) {
-                *w = w.max(d.abs());
-            }
-        }
-        println!(
-            "tabulated {tabulated} of {n}; max |dz| {:.1e}, |dslope| {:.1e}, |dZ''| rel {:.1e}",
-            worst[0], worst[1], worst[2]
-        );
-        // Most of the head is tabulated (the steep gauge face and the pieces at joints not).
-        assert!(tabulated > n * 3 / 4, "{tabulated} of {n}");
-        // Measured: 8.5e-13 mm, 1.5e-10 and 1.5e-8, all on the R13 corners at slopes 1.5 to
-        // 3, where the derivatives of Z(Y) are largest; limits 4 times that.
-        assert!(worst[0] < 4e-12, "z {:e}", worst[0]);
-        assert!(worst[1] < 6e-10, "slope {:e}", worst[1]);
-        assert!(worst[2] < 6e-8, "second derivative {:e}", worst[2]);
-    }
-}
+mod tests;

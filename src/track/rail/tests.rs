@@ -1,0 +1,125 @@
+//! The placed rail against exact inversions and known placements.
+
+use super::*;
+
+fn paper_layout() -> TrackLayout {
+    TrackLayout::standard(Inclination::parse("1:40").unwrap())
+}
+
+#[test]
+fn uic60_at_1_in_40_has_its_top_43_03_mm_field_side_of_the_gauge_point() {
+    let rail =
+        PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
+    // Gauge point exactly at half the gauge (bisection to 1e-15).
+    assert!((rail.gauge_point()[0] - 717.5).abs() < 1e-9);
+    assert!((rail.gauge_point()[1] + 14.0).abs() < 1e-9);
+    assert!(rail.top()[1].abs() < 1e-12);
+    // Reference value (the project's reference notes on the standard-gauge layout,
+    // outside this repository): 43.03 mm (2 decimals), so 760.53 from the track centre.
+    let offset = rail.top()[0] - rail.gauge_point()[0];
+    assert!((offset - 43.03).abs() < 0.005, "{offset}");
+}
+
+#[test]
+fn top_offsets_for_other_inclinations() {
+    // Same reference notes: upright 35.98 mm, 1:20 46.5 mm (as many decimals as given).
+    for (incl, expected, tol) in [("vertical", 35.98, 0.005), ("1:20", 46.5, 0.05)] {
+        let layout = TrackLayout {
+            inclination: Inclination::parse(incl).unwrap(),
+            ..paper_layout()
+        };
+        let rail = PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &layout).unwrap();
+        let offset = rail.top()[0] - rail.gauge_point()[0];
+        assert!((offset - expected).abs() < tol, "{incl}: {offset}");
+    }
+}
+
+#[test]
+fn rail_inverse_is_exact() {
+    let rail =
+        PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
+    let (lo, hi) = rail.profile().domain();
+    for i in 0..=200 {
+        let u = lo + (hi - lo) * f64::from(i) / 200.0;
+        let p = rail.point_of(u);
+        if let Some(r) = rail.at(p[0]) {
+            assert!((r.z - p[1]).abs() < 1e-10, "u = {u}");
+        }
+    }
+}
+
+/// Every 1e-3 mm over `rail`: the quintic pieces against Newton's inversion; the number
+/// of points tabulated, of points, and the largest differences in `Z`, the slope and
+/// `Z''` (relative).
+fn table_against_inversion(rail: &PlacedRail) -> (usize, usize, [f64; 3]) {
+    let (lo, hi) = rail.y_range();
+    let (mut tabulated, mut worst) = (0, [0.0f64; 3]);
+    let n = ((hi - lo) / 1e-3) as usize;
+    for i in 0..=n {
+        let y = lo + (hi - lo) * i as f64 / n as f64;
+        let table = rail.tabulated_at(y).or_else(|| rail.split_at(y));
+        let (Some(t), Some(e)) = (table, rail.exact_at(y)) else {
+            continue;
+        };
+        tabulated += 1;
+        for (w, d) in worst.iter_mut().zip([
+            t.z - e.z,
+            t.slope - e.slope,
+            (t.d2 - e.d2) / (1.0 + e.d2.abs()),
+        ]) {
+            *w = w.max(d.abs());
+        }
+    }
+    (tabulated, n, worst)
+}
+
+#[test]
+fn sampled_surface_table_matches_the_exact_inversion() {
+    // UIC60 sampled every 0.25 mm (joints included) and fitted by an interpolating spline,
+    // as the tradeoff study's sampled setting: the pieces that hold a knot are split there.
+    let points = Profile::uic60e1()
+        .sample(0.25)
+        .iter()
+        .map(|r| [r[0], r[1]])
+        .collect();
+    let points =
+        crate::profile::read::PointProfile::from_points(ProfileKind::Rail, "sampled", points)
+            .unwrap();
+    let profile = Profile::from_points(points, 0.0).unwrap();
+    let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
+    let splits = rail.splits.len();
+    let (tabulated, n, worst) = table_against_inversion(&rail);
+    println!(
+        "tabulated {tabulated} of {n} ({splits} split pieces); max |dz| {:.1e}, |dslope| {:.1e}, |dZ''| rel {:.1e}",
+        worst[0], worst[1], worst[2]
+    );
+    // One piece in 12.5 holds a knot (0.25 mm / 0.02 mm); as much of the head as on the
+    // analytic rail is tabulated.
+    assert!(splits > 200, "{splits}");
+    assert!(tabulated > n * 3 / 4, "{tabulated} of {n}");
+    // Measured: 2.0e-13 mm, 5.1e-11 and 7.8e-9 (the analytic rail: 8.5e-13, 1.5e-10,
+    // 1.5e-8); the analytic rail's limits.
+    assert!(worst[0] < 4e-12, "z {:e}", worst[0]);
+    assert!(worst[1] < 6e-10, "slope {:e}", worst[1]);
+    assert!(worst[2] < 6e-8, "second derivative {:e}", worst[2]);
+}
+
+#[test]
+fn surface_table_matches_the_exact_inversion() {
+    // Every 1e-3 mm over the placed UIC60 at 1:40: the quintic pieces against Newton's
+    // inversion of the analytic head.
+    let rail =
+        PlacedRail::place(Profile::uic60e1(), Inclination::VERTICAL, &paper_layout()).unwrap();
+    let (tabulated, n, worst) = table_against_inversion(&rail);
+    println!(
+        "tabulated {tabulated} of {n}; max |dz| {:.1e}, |dslope| {:.1e}, |dZ''| rel {:.1e}",
+        worst[0], worst[1], worst[2]
+    );
+    // Most of the head is tabulated (the steep gauge face and the pieces at joints not).
+    assert!(tabulated > n * 3 / 4, "{tabulated} of {n}");
+    // Measured: 8.5e-13 mm, 1.5e-10 and 1.5e-8, all on the R13 corners at slopes 1.5 to
+    // 3, where the derivatives of Z(Y) are largest; limits 4 times that.
+    assert!(worst[0] < 4e-12, "z {:e}", worst[0]);
+    assert!(worst[1] < 6e-10, "slope {:e}", worst[1]);
+    assert!(worst[2] < 6e-8, "second derivative {:e}", worst[2]);
+}
