@@ -88,6 +88,7 @@ pub mod profile;
 pub mod quasi_elastic;
 pub mod report;
 pub mod rigid;
+mod rng;
 pub mod scene;
 pub mod stage;
 pub mod stop;

@@ -16,6 +16,7 @@ use crate::profile::read::PointProfile;
 use crate::profile::{Profile, ProfileKind};
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{RigidSweep, Solver, Stop};
+use crate::rng::SplitMix64;
 use crate::scene::{ProfileRef, Scene};
 use crate::track::{Placement, SidePair};
 use std::time::Instant;
@@ -267,7 +268,7 @@ fn study_on_this_thread(
     let reference = run_once(scene, &reference_setting)?;
     let rounds = 1 + repeats.max(1);
     let total = rounds * settings.len();
-    let mut rng = SplitMix64(ORDER_SEED);
+    let mut rng = SplitMix64::new(ORDER_SEED);
     let mut errors_of: Vec<Option<Errors>> = vec![None; settings.len()];
     let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds - 1); settings.len()];
     let mut done = 0;
@@ -312,30 +313,6 @@ fn median(times: &[f64]) -> f64 {
         times[n / 2]
     } else {
         0.5 * (times[n / 2 - 1] + times[n / 2])
-    }
-}
-
-/// The SplitMix64 generator (Steele, Lea, Flood 2014): enough to shuffle a few settings
-/// reproducibly without a dependency.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// A uniformly random permutation of `0..n` (Fisher-Yates).
-    fn permutation(&mut self, n: usize) -> Vec<usize> {
-        let mut order: Vec<usize> = (0..n).collect();
-        for i in (1..n).rev() {
-            let j = (self.next() % (i as u64 + 1)) as usize;
-            order.swap(i, j);
-        }
-        order
     }
 }
 
@@ -422,7 +399,7 @@ mod tests {
 
     #[test]
     fn rounds_are_permutations_in_changing_orders() {
-        let mut rng = SplitMix64(ORDER_SEED);
+        let mut rng = SplitMix64::new(ORDER_SEED);
         let orders: Vec<Vec<usize>> = (0..6).map(|_| rng.permutation(17)).collect();
         for order in &orders {
             let mut sorted = order.clone();

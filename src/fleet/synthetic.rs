@@ -17,6 +17,7 @@
 //! [`csv_text`] writes the points as a wheel profile CSV file that the readers accept.
 
 use crate::profile::Profile;
+use crate::rng::SplitMix64;
 
 /// Lateral spacing of the generated points (mm): a MiniProf-like density.
 pub const STEP_MM: f64 = 0.25;
@@ -134,36 +135,6 @@ pub fn csv_text(seed: u64, index: u64) -> (String, Wear) {
         text.push_str(&format!("{s:.3},{f:.6}\n"));
     }
     (text, wear)
-}
-
-/// A small, well-known generator (Steele, Lea, Flood 2014), enough for test data: the same
-/// numbers on every platform, no dependency.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn new(seed: u64) -> Self {
-        SplitMix64(seed)
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `[0, 1)` with 53 random bits.
-    fn uniform(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Standard normal (Box-Muller; the second value is dropped: simple and deterministic).
-    fn normal(&mut self) -> f64 {
-        let u1 = 1.0 - self.uniform(); // in (0, 1]: ln is finite
-        let u2 = self.uniform();
-        (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
-    }
 }
 
 #[cfg(test)]
