@@ -582,3 +582,60 @@ fn an_interrupted_fleet_keeps_its_finished_rows() {
         assert_eq!(row["status"], "ok");
     }
 }
+
+/// The committed example fleet `reports/fleet/` is what the README's two commands write:
+/// the generated wheels (the example `worn_wheels`, seed 14) under `target/worn_wheels`, and
+/// the fleet of the CONTACT wheels and those, in the shell's glob order. Every file the
+/// fleet writes is compared byte for byte, so a change that moves a number, a chart or the
+/// page shows here and is committed with the regenerated folder.
+#[test]
+fn the_committed_example_fleet_regenerates() {
+    let generated = root().join("target/worn_wheels");
+    std::fs::create_dir_all(&generated).unwrap();
+    for i in 0..300 {
+        let (text, _) = synthetic::csv_text(14, i);
+        std::fs::write(generated.join(format!("worn_{i:04}.csv")), text).unwrap();
+    }
+    let listed = |dir: &str, ext: &str| -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(root().join(dir))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.ends_with(ext))
+            .map(|n| format!("{dir}/{n}"))
+            .collect();
+        names.sort(); // the shell's glob order in the C locale: bytes
+        names
+    };
+    let mut profiles = listed("tests/data/profiles", ".whl");
+    profiles.extend(listed("tests/data/profiles", ".prw"));
+    profiles.extend((0..300).map(|i| format!("target/worn_wheels/worn_{i:04}.csv")));
+    let out = scratch("example_fleet");
+    let o = bin()
+        .current_dir(root())
+        .arg("fleet")
+        .arg("reports/fleet/scene.toml")
+        .args(&profiles)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let committed = root().join("reports/fleet");
+    let mut compared = 0;
+    for entry in std::fs::read_dir(&out).unwrap() {
+        let name = entry.unwrap().file_name();
+        let name = name.to_string_lossy();
+        if name.starts_with('.') {
+            continue; // the manifest names the folder's own history
+        }
+        let fresh = std::fs::read(out.join(name.as_ref())).unwrap();
+        let kept = std::fs::read(committed.join(name.as_ref()))
+            .unwrap_or_else(|e| panic!("reports/fleet/{name}: {e}: commit the regenerated folder"));
+        assert!(
+            fresh == kept,
+            "reports/fleet/{name} differs from a fresh run: regenerate it with the README's commands and review the diff"
+        );
+        compared += 1;
+    }
+    assert!(compared >= 8, "only {compared} files compared");
+}
