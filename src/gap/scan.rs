@@ -85,13 +85,25 @@ impl SideGap<'_> {
         // that could be refined, so the minima that matter are found as without skipping.
         let (mut prev, mut here) = (f64::INFINITY, f64::INFINITY);
         for b in blocks.clone() {
-            let skip = bound(b, &bounds) > running + COARSE_MARGIN_MM;
-            for i in block_samples(b, first, last) {
-                let next = if skip {
+            let samples = block_samples(b, first, last);
+            if bound(b, &bounds) > running + COARSE_MARGIN_MM {
+                // In one step what its samples at +inf would do one by one: the first makes
+                // the sample before the block a minimum where it is not above its own left
+                // neighbour; after two, `prev` and `here` are both +inf.
+                if here <= prev && here < f64::INFINITY {
+                    lowest = lowest.min(here);
+                    record(&mut found, &mut count, here, samples.start - first - 1);
+                }
+                prev = if samples.len() > 1 {
                     f64::INFINITY
                 } else {
-                    self.coarse_gap(i, pose)
+                    here
                 };
+                here = f64::INFINITY;
+                continue;
+            }
+            for i in samples {
+                let next = self.coarse_gap(i, pose);
                 running = running.min(next);
                 if here <= prev && here <= next && here < f64::INFINITY {
                     lowest = lowest.min(here);
