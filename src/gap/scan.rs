@@ -125,8 +125,14 @@ impl SideGap<'_> {
             .clone()
             .min_by(|&a, &b| boxed[a].total_cmp(&boxed[b]))
             .unwrap_or(blocks.start);
-        let mut running = block_samples(b, first, last)
-            .fold(f64::INFINITY, |m, i| m.min(self.coarse_gap(i, pose)));
+        // Its gaps are kept for the loop below, which reaches it too (its bound lies below
+        // them, so it is not skipped).
+        let first_block = block_samples(b, first, last);
+        let mut first_gaps = [f64::INFINITY; SCAN_BLOCK];
+        for (g, i) in first_gaps.iter_mut().zip(first_block.clone()) {
+            *g = self.coarse_gap(i, pose);
+        }
+        let mut running = first_gaps.iter().fold(f64::INFINITY, |m, &g| m.min(g));
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
         let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
@@ -156,7 +162,11 @@ impl SideGap<'_> {
                 continue;
             }
             for i in samples {
-                let next = self.coarse_gap(i, pose);
+                let next = if first_block.contains(&i) {
+                    first_gaps[i - first_block.start]
+                } else {
+                    self.coarse_gap(i, pose)
+                };
                 running = running.min(next);
                 if here <= prev && here <= next && here < f64::INFINITY {
                     lowest = lowest.min(here);
