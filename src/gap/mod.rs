@@ -24,6 +24,7 @@ use scan::SCAN_BLOCK;
 use tabulated::Tables;
 
 pub use contact::ContactPoint;
+pub(crate) use scan::PoseBox;
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
 /// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].

@@ -6,16 +6,74 @@
 //! of [`SCAN_BLOCK`] wheel samples at once (their lowest point against the highest rail point
 //! under them) and skip blocks that cannot hold a basin or a low region. The unit tests in
 //! `gap/tests.rs` (`skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan`) check
-//! that the scans find exactly what a full scan finds.
+//! that the scans find exactly what a full scan finds. A scan reads block bounds made once
+//! for a box of poses about it ([`PoseBox`]) and bounds at its own pose only the blocks those
+//! leave, which changes the work, not the basins.
 
 use super::{Basin, COARSE_MARGIN_MM, SideGap, SidePose};
+
+/// Half the width in `delta` of the box of poses a [`PoseBox`] holds (mm): ten positions of
+/// a sweep at 0.1 mm steps on either side of the pose it was made at. Measured on the paper
+/// sweep (instructions of `rigid_default`, with [`POSE_BOX_SIN`] at 1e-3 times this): 0.5
+/// mm 18.9M, 1 mm 18.5M, 2 mm 18.7M (a wider box makes fewer boxes but looser bounds, so
+/// more blocks are bounded at their pose).
+pub(crate) const POSE_BOX_DELTA_MM: f64 = 1.0;
+/// Half the width in `sin(phi)` of the box of poses a [`PoseBox`] holds: a roll change of
+/// 1e-3 rad moves a wheel point by at most 1e-3 times its distance from the reference point
+/// (half the profile's width, about 70 mm) vertically relative to it, and by 1e-3 x 500 mm
+/// laterally (the common motion of the whole wheel is taken out, see [`PoseBox`]).
+pub(crate) const POSE_BOX_SIN: f64 = 1e-3;
+
+/// Lower bounds of every block's coarse gaps that hold for a whole box of poses:
+/// `|delta - delta0| <=` [`POSE_BOX_DELTA_MM`] and `|sin phi - sin phi0| <=`
+/// [`POSE_BOX_SIN`] about the pose `(delta0, phi0)` they were made at. A scan at a pose
+/// inside the box reads them instead of bounding each block at its pose, and bounds at its
+/// pose only the blocks these do not already skip.
+///
+/// The bound, by interval arithmetic over the box (`s = sin phi`, `c = cos phi`, both in
+/// their intervals over the box; a block's `Yw` and `Zw` in theirs): the coarse gap of a
+/// wheel point is `g = s Yw + c Zw - Zr(Y)` with `Y = delta + c Yw - s Zw`, so
+/// `g - (s Yc + c Zc) = s (Yw - Yc) + c (Zw - Zc) - Zr(Y)` is at least the lowest the
+/// first two terms reach over the box minus the highest table height over the lateral span
+/// `Y` can cover in the box. `(Yc, Zc)` is one wheel point, the same for all blocks: the
+/// motion `s Yc + c Zc` that the roll gives the whole wheel (0.75 mm per mrad at the
+/// tread's 750 mm lever arm) is added back at the scanned pose, so that only the motion of
+/// a block relative to that point (`|Yw - Yc|`, at most half the profile's width) loosens
+/// the bound. The unit test
+/// `pose_box_bounds_are_below_every_sample_of_their_block_in_the_box` checks the bound on
+/// the corners of boxes along the paper sweep.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct PoseBox {
+    /// `(delta0, sin phi0)`, `None` until made.
+    centre: Option<(f64, f64)>,
+    /// Per block, the lower bound of `g - (s Yc + c Zc)` over the box.
+    pub(super) bounds: Vec<f64>,
+}
+
+impl PoseBox {
+    /// Whether `pose` lies in the box (false before the first scan).
+    #[inline]
+    pub(super) fn holds(&self, pose: &SidePose) -> bool {
+        self.centre.is_some_and(|(delta, sin)| {
+            (pose.delta - delta).abs() <= POSE_BOX_DELTA_MM
+                && (pose.sin - sin).abs() <= POSE_BOX_SIN
+        })
+    }
+}
+
+/// The range of `a b` for `a` in `[a.0, a.1]` and `b` in `[b.0, b.1]`.
+#[inline]
+fn product(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    let p = [a.0 * b.0, a.0 * b.1, a.1 * b.0, a.1 * b.1];
+    (
+        p.iter().fold(f64::INFINITY, |m, &v| m.min(v)),
+        p.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v)),
+    )
+}
 
 /// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
 /// wheel point against the highest rail point under it) is too high to matter is skipped.
 pub(super) const SCAN_BLOCK: usize = 8;
-/// Block bounds kept on the stack by a scan (a wheel of 256 mm at the coarse step); a scan
-/// over more computes them twice.
-const MAX_SCAN_BLOCKS: usize = 128;
 
 /// The coarse samples of block `b` inside `first..last`.
 #[inline]
@@ -40,7 +98,11 @@ fn record(found: &mut [(f64, usize); 16], count: &mut usize, g: f64, i: usize) {
 impl SideGap<'_> {
     /// Basins of the gap found by the coarse scan: brackets around every sampled local
     /// minimum within [`COARSE_MARGIN_MM`] of the lowest, lowest first.
-    pub(crate) fn basins(&self, pose: &SidePose, out: &mut Vec<Basin>) {
+    ///
+    /// `pose_box` holds block bounds for a box of poses (made here when `pose` lies outside
+    /// it): blocks it shows too high are skipped without bounding them at `pose`. Which
+    /// blocks are skipped changes the work, not the basins.
+    pub(crate) fn basins(&self, pose: &SidePose, pose_box: &mut PoseBox, out: &mut Vec<Basin>) {
         out.clear();
         // Only wheel samples that can lie above the rail.
         let (first, last) = self.over_rail(pose);
@@ -51,30 +113,26 @@ impl SideGap<'_> {
         }
         // The lowest sample is a sampled local minimum, and the lowest of them: a block
         // whose bound lies more than the margin above some sample's gap holds no minimum
-        // that is refined. The block with the lowest bound gives that sample first.
-        let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
-        let mut bounds = [0.0; MAX_SCAN_BLOCKS];
-        let stored = blocks.len() <= MAX_SCAN_BLOCKS;
-        let bound = |b: usize, bounds: &[f64]| {
-            if stored {
-                bounds[b - blocks.start]
-            } else {
-                self.block_bound(b, pose)
-            }
-        };
-        let mut best = (f64::INFINITY, blocks.start);
-        for b in blocks.clone() {
-            let v = self.block_bound(b, pose);
-            if stored {
-                bounds[b - blocks.start] = v;
-            }
-            if v < best.0 {
-                best = (v, b);
-            }
+        // that is refined. The block with the lowest box bound gives that sample first.
+        if !pose_box.holds(pose) || pose_box.bounds.len() != self.blocks.len() {
+            self.fill_pose_box(pose, pose_box);
         }
-        let b = best.1;
-        let mut running = block_samples(b, first, last)
-            .fold(f64::INFINITY, |m, i| m.min(self.coarse_gap(i, pose)));
+        let [yc, zc] = self.box_reference();
+        let common = pose.sin * yc + pose.cos * zc;
+        let boxed = &pose_box.bounds;
+        let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
+        let b = blocks
+            .clone()
+            .min_by(|&a, &b| boxed[a].total_cmp(&boxed[b]))
+            .unwrap_or(blocks.start);
+        // Its gaps are kept for the loop below, which reaches it too (its bound lies below
+        // them, so it is not skipped).
+        let first_block = block_samples(b, first, last);
+        let mut first_gaps = [f64::INFINITY; SCAN_BLOCK];
+        for (g, i) in first_gaps.iter_mut().zip(first_block.clone()) {
+            *g = self.coarse_gap(i, pose);
+        }
+        let mut running = first_gaps.iter().fold(f64::INFINITY, |m, &g| m.min(g));
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
         let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
@@ -85,10 +143,27 @@ impl SideGap<'_> {
         // that could be refined, so the minima that matter are found as without skipping.
         let (mut prev, mut here) = (f64::INFINITY, f64::INFINITY);
         for b in blocks.clone() {
-            let skip = bound(b, &bounds) > running + COARSE_MARGIN_MM;
-            for i in block_samples(b, first, last) {
-                let next = if skip {
+            let samples = block_samples(b, first, last);
+            let above = running + COARSE_MARGIN_MM;
+            if boxed[b] + common > above || self.block_bound(b, pose) > above {
+                // In one step what its samples at +inf would do one by one: the first makes
+                // the sample before the block a minimum where it is not above its own left
+                // neighbour; after two, `prev` and `here` are both +inf.
+                if here <= prev && here < f64::INFINITY {
+                    lowest = lowest.min(here);
+                    record(&mut found, &mut count, here, samples.start - first - 1);
+                }
+                prev = if samples.len() > 1 {
                     f64::INFINITY
+                } else {
+                    here
+                };
+                here = f64::INFINITY;
+                continue;
+            }
+            for i in samples {
+                let next = if first_block.contains(&i) {
+                    first_gaps[i - first_block.start]
                 } else {
                     self.coarse_gap(i, pose)
                 };
@@ -147,6 +222,46 @@ impl SideGap<'_> {
             .heights()
             .max_over(y_lo, y_hi)
             .map_or(f64::INFINITY, |rail| z_lo - rail)
+    }
+
+    /// The wheel point `(Yc, Zc)` whose motion with the roll [`PoseBox`] takes out: the
+    /// middle coarse sample.
+    #[inline]
+    pub(super) fn box_reference(&self) -> [f64; 2] {
+        let [_, yw, zw] = self.coarse[self.coarse.len() / 2];
+        [yw, zw]
+    }
+
+    /// Makes `pose_box` the box about `pose`: every block's bound over it.
+    pub(super) fn fill_pose_box(&self, pose: &SidePose, pose_box: &mut PoseBox) {
+        let [yc, zc] = self.box_reference();
+        let (d, sin) = (pose.delta, pose.sin);
+        let s = (sin - POSE_BOX_SIN, sin + POSE_BOX_SIN);
+        // cos phi = sqrt(1 - sin^2) (|phi| < 90 degrees) falls with |sin phi|.
+        let cos = |v: f64| (1.0 - v * v).sqrt();
+        let c_hi = if s.0 <= 0.0 && s.1 >= 0.0 {
+            1.0
+        } else {
+            cos(s.0).max(cos(s.1))
+        };
+        let c = (cos(s.0).min(cos(s.1)), c_hi);
+        let neg_s = (-s.1, -s.0);
+        let heights = self.pair.rail.heights();
+        pose_box.centre = Some((d, sin));
+        pose_box.bounds.clear();
+        pose_box
+            .bounds
+            .extend(self.blocks.iter().map(|&[yw_lo, yw_hi, zw_lo, zw_hi]| {
+                let cy = product(c, (yw_lo, yw_hi));
+                let sz = product(neg_s, (zw_lo, zw_hi));
+                let y_lo = d - POSE_BOX_DELTA_MM + cy.0 + sz.0;
+                let y_hi = d + POSE_BOX_DELTA_MM + cy.1 + sz.1;
+                let z_lo =
+                    product(s, (yw_lo - yc, yw_hi - yc)).0 + product(c, (zw_lo - zc, zw_hi - zc)).0;
+                heights
+                    .max_over(y_lo, y_hi)
+                    .map_or(f64::INFINITY, |rail| z_lo - rail)
+            }));
     }
 
     /// Stretches of the wheel (`(s_lo, s_hi)`, increasing, disjoint) where the coarse gap

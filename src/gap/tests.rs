@@ -1,6 +1,6 @@
 //! The scans with block skipping against full scans, and the block bounds.
 
-use super::scan::SCAN_BLOCK;
+use super::scan::{POSE_BOX_DELTA_MM, POSE_BOX_SIN, SCAN_BLOCK};
 use super::*;
 use crate::scene::Scene;
 
@@ -47,6 +47,10 @@ fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
     let placement = placement();
     let side = SideGap::new(&placement.left, 1.0);
     let (mut basins, mut regions) = (Vec::new(), Vec::new());
+    // One box carried from pose to pose (the poses near the jumps lie in each other's
+    // boxes), and one made afresh at every pose: both scans find the same basins.
+    let (mut carried, mut carried_held) = (PoseBox::default(), 0);
+    let mut fresh_basins = Vec::new();
     let mut skipped_any = false;
     let mut several_basins = 0;
     for pose in poses() {
@@ -55,7 +59,10 @@ fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
             continue;
         };
         // Basins: brackets around the sampled local minima within the margin.
-        side.basins(&pose, &mut basins);
+        carried_held += usize::from(carried.holds(&pose));
+        side.basins(&pose, &mut carried, &mut basins);
+        side.basins(&pose, &mut PoseBox::default(), &mut fresh_basins);
+        assert_eq!(basins, fresh_basins, "carried and fresh box at {pose:?}");
         let mut expected: Vec<(f64, Basin)> = Vec::new();
         for (k, &(i, g)) in gaps.iter().enumerate() {
             let prev = if k > 0 { gaps[k - 1].1 } else { f64::INFINITY };
@@ -112,6 +119,10 @@ fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
         several_basins > 10,
         "{several_basins} poses with two basins to refine"
     );
+    assert!(
+        carried_held > 50,
+        "the carried box held {carried_held} times"
+    );
 }
 
 #[test]
@@ -127,4 +138,63 @@ fn block_bounds_are_below_every_sample_of_their_block() {
             );
         }
     }
+}
+
+/// A pose from its side-frame shift and `sin(phi)` (`cos(phi) > 0`).
+fn pose_of(delta: f64, sin: f64) -> SidePose {
+    SidePose {
+        delta,
+        cos: (1.0 - sin * sin).sqrt(),
+        sin,
+    }
+}
+
+#[test]
+fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
+    let placement = placement();
+    let side = SideGap::new(&placement.left, 1.0);
+    let [yc, zc] = side.box_reference();
+    let mut pose_box = PoseBox::default();
+    // Blocks within the margin of the lowest sample by the box bound but not by the bound
+    // at the pose: where the box loosens the bound (it must, a little).
+    let (mut looser, mut skipped) = (0, 0);
+    for centre in poses().iter().step_by(7) {
+        side.fill_pose_box(centre, &mut pose_box);
+        // The corners of the box (a hair inside it), the centre and the middles of its edges.
+        let (dd, ds) = (
+            POSE_BOX_DELTA_MM * (1.0 - 1e-12),
+            POSE_BOX_SIN * (1.0 - 1e-12),
+        );
+        for (fd, fs) in [-1.0, 0.0, 1.0]
+            .iter()
+            .flat_map(|&a| [-1.0, 0.0, 1.0].map(|b| (a, b)))
+        {
+            let pose = pose_of(centre.delta + fd * dd, centre.sin + fs * ds);
+            assert!(
+                pose_box.holds(&pose),
+                "{pose:?} not in the box at {centre:?}"
+            );
+            let common = pose.sin * yc + pose.cos * zc;
+            let gaps = all_gaps(&side, &pose);
+            let lowest = gaps.iter().map(|g| g.1).fold(f64::INFINITY, f64::min);
+            for &(i, g) in &gaps {
+                let bound = pose_box.bounds[i / SCAN_BLOCK] + common;
+                assert!(
+                    bound <= g,
+                    "sample {i}: box bound {bound} above gap {g} at {pose:?} (box at {centre:?})"
+                );
+            }
+            for b in gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1 {
+                let (boxed, here) = (pose_box.bounds[b] + common, side.block_bound(b, &pose));
+                let cut = lowest + COARSE_MARGIN_MM;
+                looser += usize::from(boxed <= cut && here > cut);
+                skipped += usize::from(boxed > cut);
+            }
+        }
+    }
+    assert!(
+        looser > 0,
+        "the box bounds never looser than the bounds at the pose"
+    );
+    assert!(skipped > 1000, "the box bounds skipped {skipped} blocks");
 }

@@ -14,7 +14,7 @@ pub(super) fn solve_no_roll(sides: &[SideGap; 2], y_ws: f64, scratch: &mut Scrat
         SidePose::new(-1.0, y_ws, 0.0),
     ];
     for k in 0..2 {
-        sides[k].basins(&p[k], &mut scratch.basins[k]);
+        sides[k].basins(&p[k], &mut scratch.boxes[k], &mut scratch.basins[k]);
         scratch.minima[k].clear();
     }
     let [b0, b1] = &mut scratch.basins;

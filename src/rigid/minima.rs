@@ -2,13 +2,15 @@
 //! step both the default roll solver and the level wheelset take per evaluation.
 
 use super::TWO_POINT_GAP_TOL_MM;
-use crate::gap::{self, Basin, GapPoint, SideGap, SidePose};
+use crate::gap::{self, Basin, GapPoint, PoseBox, SideGap, SidePose};
 
 /// Buffers reused across positions (no allocation per position). The basins of the last
 /// solution start the next position (continuation): its scan at the solution verifies them.
 #[derive(Debug, Default)]
 pub(super) struct Scratch {
     pub(super) basins: [Vec<Basin>; 2],
+    /// Per side, the block bounds of the scans over a box of poses about the last ones.
+    pub(super) boxes: [PoseBox; 2],
     /// The minima found in `basins` at the current pose, reused after a verification scan
     /// at that same pose for the basins that contain them.
     pub(super) minima: [Vec<GapPoint>; 2],

@@ -167,7 +167,7 @@ impl Iteration {
         self.fresh = self.scan;
         if self.scan {
             for k in 0..2 {
-                sides[k].basins(&poses[k], &mut scratch.basins[k]);
+                sides[k].basins(&poses[k], &mut scratch.boxes[k], &mut scratch.basins[k]);
             }
             self.scan = false;
             self.scanned_theta = self.theta;
