@@ -110,10 +110,23 @@ fn assert_row_is_report(row: &HashMap<String, String>, report: &Path) {
                 }
             }
         }
-        let (_, cell, y, side) = best.expect("some Hertz ellipse");
+        let (_, cell, _, _) = best.expect("some Hertz ellipse");
         assert_eq!(p0, cell, "max_p0_MPa of {}", row["id"]);
-        assert_eq!(&row["max_p0_y_ws_mm"], y);
-        assert_eq!(row["max_p0_side"], side);
+        // The fleet picks the largest unrounded p0; positions whose printed p0 ties with it
+        // (a symmetric scene's mirrored positions) are equally right as far as the report
+        // shows.
+        let tied: Vec<(&str, &str)> = hertz
+            .iter()
+            .flat_map(|h| ["left", "right"].map(|side| (h, side)))
+            .filter(|(h, side)| h[&format!("{side}_p0_MPa")] == cell)
+            .map(|(h, side)| (h["y_ws_mm"].as_str(), side))
+            .collect();
+        let at = (row["max_p0_y_ws_mm"].as_str(), row["max_p0_side"].as_str());
+        assert!(
+            tied.contains(&at),
+            "{at:?} not among {tied:?} of {}",
+            row["id"]
+        );
     }
 }
 
