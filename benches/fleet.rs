@@ -91,7 +91,8 @@ fn one_profile_read_and_place(bencher: divan::Bencher) {
     });
 }
 
-/// The clone of the shared rails that each profile's placement takes.
+/// What each profile's placement takes of the shared rails: two reference counts (it was a
+/// copy of both rails' tables, 0.06 ms, before they were shared).
 #[divan::bench(sample_count = 200)]
 fn shared_rails_clone(bencher: divan::Bencher) {
     let rails = pipeline::place_rails(&template()).unwrap();

@@ -6,7 +6,8 @@
 
 use divan::black_box;
 use std::path::Path;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
+use wheelrail::cache::PlacementCache;
 use wheelrail::profile::read::PointProfile;
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
@@ -63,7 +64,7 @@ fn sampled_points() -> &'static (Points, Points) {
 
 /// The sampled wheel and rail checked, fitted (interpolating splines) and placed as the
 /// paper scene places the analytic ones (`pipeline::place`): each profile fitted once, the
-/// wheel placed on both sides, the rail placed once and copied to the right side.
+/// wheel placed on both sides, the rail placed once and shared by both sides.
 fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
     let analytic = placement();
     let layout = analytic.layout();
@@ -72,13 +73,15 @@ fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
         Profile::from_points(points, 0.0).unwrap()
     };
     let wheel = fit(ProfileKind::Wheel, wheel);
-    let rail = PlacedRail::place(
-        fit(ProfileKind::Rail, rail),
-        scene().rail_profile_inclination(),
-        layout,
-    )
-    .unwrap();
-    let side = |pair: &SidePair, rail: PlacedRail| {
+    let rail = Arc::new(
+        PlacedRail::place(
+            fit(ProfileKind::Rail, rail),
+            scene().rail_profile_inclination(),
+            layout,
+        )
+        .unwrap(),
+    );
+    let side = |pair: &SidePair, rail: Arc<PlacedRail>| {
         let wheel =
             PlacedWheel::place(wheel.clone(), pair.wheel().nominal_radius_mm(), layout).unwrap();
         SidePair::new(wheel, rail)
@@ -114,10 +117,24 @@ fn rigid_sampled() -> RigidSweep {
     )
 }
 
-/// Loading and placing the four profiles.
+/// Loading and placing the four profiles (cold: the rail's tables built).
 #[divan::bench]
 fn place() -> Placement {
     pipeline::place(black_box(scene())).unwrap()
+}
+
+/// The same placement from a cache that holds it (another scene of the run placed the
+/// same profiles on the same track): the profiles' keys, the rail shared, the wheels
+/// placed and the sides checked.
+#[divan::bench]
+fn place_cached() -> Placement {
+    static CACHE: OnceLock<PlacementCache> = OnceLock::new();
+    let cache = CACHE.get_or_init(|| {
+        let cache = PlacementCache::new();
+        pipeline::place_cached(scene(), &cache).unwrap();
+        cache
+    });
+    pipeline::place_cached(black_box(scene()), cache).unwrap()
 }
 
 /// The rigid sweep with the project's solver.

@@ -26,6 +26,21 @@ fn compute_only() -> Scene {
     ])
 }
 
+/// The EN 15302 reference pair (R-UIC519A on S-UIC519A, 141 positions, the Δr figure in
+/// SVG: `benches/data/en15302_e1_delta_r.toml`) as `wheelrail report` runs it, in memory:
+/// the scene and its two 1000-point files read, fitted and placed, the rigid sweep, the
+/// tables, the figure and the page rendered (the process start and the folder written are
+/// what the whole command adds: README, Speed).
+#[divan::bench(sample_count = 20)]
+fn en15302_delta_r_report_in_memory(bencher: divan::Bencher) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/data/en15302_e1_delta_r.toml");
+    bencher.bench(|| {
+        let scene = Scene::load(divan::black_box(&path)).unwrap();
+        let results = pipeline::run(&scene).unwrap();
+        outputs::render(&scene, &results, &[]).unwrap()
+    });
+}
+
 #[divan::bench(sample_count = 20)]
 fn paper_scene_without_rendering(bencher: divan::Bencher) {
     let scene = compute_only();

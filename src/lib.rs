@@ -75,6 +75,7 @@
 
 #[cfg(feature = "cli")]
 pub mod app;
+pub mod cache;
 pub mod conicity;
 pub mod cost;
 pub mod error;

@@ -12,13 +12,15 @@
 //! computes that stage and the stages it depends on ([`Stage::requires`]), nothing else, and
 //! records what it ran in a [`RunRecord`] (printed by `wheelrail report --timings`).
 
+use crate::cache::{PlacementCache, ProfileKey, RailKey};
 use crate::conicity;
 use crate::hertz;
-use crate::profile::ProfileKind;
+use crate::profile::{Profile, ProfileKind};
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep};
-use crate::scene::Scene;
+use crate::scene::{ProfileRef, Scene};
 use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, SidePair};
+use std::sync::Arc;
 use std::time::Instant;
 
 pub use crate::stage::{Figure, Stage};
@@ -143,6 +145,28 @@ pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
 /// As [`run`], and `gate`'s error.
 pub fn run_gated(
     scene: &Scene,
+    gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
+) -> Result<Results, crate::Error> {
+    run_placed(scene, place, gate)
+}
+
+/// [`run_gated`], placing the profiles through `cache` ([`place_cached`]): for the scenes
+/// of one run that share profiles (`wheelrail report a.toml b.toml`).
+///
+/// # Errors
+/// As [`run_gated`].
+pub fn run_gated_cached(
+    scene: &Scene,
+    cache: &PlacementCache,
+    gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
+) -> Result<Results, crate::Error> {
+    run_placed(scene, |scene| place_cached(scene, cache), gate)
+}
+
+/// [`run_gated`] with the placement made by `place`.
+fn run_placed(
+    scene: &Scene,
+    place: impl FnOnce(&Scene) -> Result<Placement, crate::Error>,
     gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
 ) -> Result<Results, crate::Error> {
     let mut record = RunRecord::default();
@@ -283,6 +307,18 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
     assemble(scene, wheels, rails)
 }
 
+/// [`place`], taking the fitted profiles and placed rails from `cache` where a scene run
+/// before had the same ones (see [`PlacementCache`]) and leaving this scene's there: the
+/// same placement to the last digit.
+///
+/// # Errors
+/// As [`place`].
+pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, crate::Error> {
+    let wheels = place_wheels_in(scene, Some(cache))?;
+    let rails = place_rails_in(scene, Some(cache))?;
+    assemble(scene, wheels, rails)
+}
+
 /// The error of placing the profile of `key`.
 fn placement_error(scene: &Scene, key: &'static str, e: PlacementError) -> crate::Error {
     crate::scene::SceneError::Profile {
@@ -293,6 +329,21 @@ fn placement_error(scene: &Scene, key: &'static str, e: PlacementError) -> crate
     .into()
 }
 
+/// Loads `scene`'s profile `r` of `kind` (the scene key `key`), through `cache` if given.
+fn load_profile(
+    scene: &Scene,
+    cache: Option<&PlacementCache>,
+    r: &ProfileRef,
+    kind: ProfileKind,
+    key: &'static str,
+) -> Result<Profile, crate::Error> {
+    let load = || scene.load_profile(r, kind, key).map_err(crate::Error::from);
+    match cache {
+        Some(cache) => cache.profile(ProfileKey::of(scene, r, kind), load),
+        None => load(),
+    }
+}
+
 /// Loads the scene's left and right wheel profiles and places them. The right wheel takes
 /// the left's profile when the scene names the same one (the usual case): read, fitted and
 /// placed once.
@@ -300,39 +351,90 @@ fn placement_error(scene: &Scene, key: &'static str, e: PlacementError) -> crate
 /// # Errors
 /// [`crate::Error::Scene`] naming the profile key.
 pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], crate::Error> {
+    place_wheels_in(scene, None)
+}
+
+/// [`place_wheels`], with the profiles from `cache` when given.
+fn place_wheels_in(
+    scene: &Scene,
+    cache: Option<&PlacementCache>,
+) -> Result<[PlacedWheel; 2], crate::Error> {
     let keys = scene.wheel_profile_keys;
     let place = |i: usize, profile| {
         PlacedWheel::place(profile, scene.nominal_radius_mm[i], &scene.layout)
             .map_err(|e| placement_error(scene, keys[i], e))
     };
-    let left = place(
-        0,
-        scene.load_profile(&scene.wheel_profiles[0], ProfileKind::Wheel, keys[0])?,
-    )?;
+    let load = |i: usize| {
+        load_profile(
+            scene,
+            cache,
+            &scene.wheel_profiles[i],
+            ProfileKind::Wheel,
+            keys[i],
+        )
+    };
+    let left = place(0, load(0)?)?;
     let right_profile = if scene.wheel_profiles[1] == scene.wheel_profiles[0] {
         left.profile().clone()
     } else {
-        scene.load_profile(&scene.wheel_profiles[1], ProfileKind::Wheel, keys[1])?
+        load(1)?
     };
     let right = place(1, right_profile)?;
     Ok([left, right])
 }
 
-/// Loads the scene's left and right rail profiles and places them (the right rail is the
-/// left one when the scene names the same profile).
+/// Loads the scene's left and right rail profiles and places them; the right rail is the
+/// left one, shared, when the scene names the same profile.
 ///
 /// # Errors
 /// [`crate::Error::Scene`] naming the profile key.
-pub fn place_rails(scene: &Scene) -> Result<[PlacedRail; 2], crate::Error> {
+pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], crate::Error> {
+    place_rails_in(scene, None)
+}
+
+/// [`place_rails`], through `cache` when given (see [`place_cached`]).
+///
+/// # Errors
+/// As [`place_rails`].
+pub fn place_rails_cached(
+    scene: &Scene,
+    cache: &PlacementCache,
+) -> Result<[Arc<PlacedRail>; 2], crate::Error> {
+    place_rails_in(scene, Some(cache))
+}
+
+/// [`place_rails`], with the profiles and rails from `cache` when given.
+fn place_rails_in(
+    scene: &Scene,
+    cache: Option<&PlacementCache>,
+) -> Result<[Arc<PlacedRail>; 2], crate::Error> {
     let keys = scene.rail_profile_keys;
-    let place = |i: usize| -> Result<PlacedRail, crate::Error> {
-        let rail = scene.load_profile(&scene.rail_profiles[i], ProfileKind::Rail, keys[i])?;
-        PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
-            .map_err(|e| placement_error(scene, keys[i], e))
+    let place = |i: usize| -> Result<Arc<PlacedRail>, crate::Error> {
+        let r = &scene.rail_profiles[i];
+        let profile_key = cache.and_then(|_| ProfileKey::of(scene, r, ProfileKind::Rail));
+        let place = || {
+            // On a miss the profile may still be cached (a rail of another layout).
+            let load = || scene.load_profile(r, ProfileKind::Rail, keys[i]);
+            let rail = match cache {
+                Some(cache) => cache.profile(profile_key.clone(), load)?,
+                None => load()?,
+            };
+            PlacedRail::place(rail, scene.rail_profile_inclination, &scene.layout)
+                .map_err(|e| placement_error(scene, keys[i], e))
+        };
+        match cache {
+            Some(cache) => {
+                let key = profile_key
+                    .clone()
+                    .map(|k| RailKey::of(k, scene.rail_profile_inclination, &scene.layout));
+                cache.rail(key, place)
+            }
+            None => place().map(Arc::new),
+        }
     };
     let left = place(0)?;
     let right = if scene.rail_profiles[1] == scene.rail_profiles[0] {
-        left.clone()
+        Arc::clone(&left)
     } else {
         place(1)?
     };
@@ -349,7 +451,7 @@ pub fn place_rails(scene: &Scene) -> Result<[PlacedRail; 2], crate::Error> {
 pub fn assemble(
     scene: &Scene,
     wheels: [PlacedWheel; 2],
-    rails: [PlacedRail; 2],
+    rails: [Arc<PlacedRail>; 2],
 ) -> Result<Placement, crate::Error> {
     let wheel_keys = scene.wheel_profile_keys;
     let [left_wheel, right_wheel] = wheels;

@@ -6,6 +6,7 @@
 //! fleet`: their status says why). Errors name the file, line or key.
 
 use crate::Error;
+use crate::cache::PlacementCache;
 use crate::outputs::{self, CSV_FORMAT, OutputFile};
 use crate::pipeline;
 use crate::profile::Profile;
@@ -192,7 +193,9 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
 
 /// Runs independent scenes in parallel (rayon, one per core). A single sweep stays
 /// sequential: each position starts from the previous one's solution (continuation).
-/// Every scene is reported; the first error is returned after all have run.
+/// Scenes with the same profiles and track share their fitted profiles and placed rails
+/// (one [`PlacementCache`] for the run). Every scene is reported; the first error is
+/// returned after all have run.
 fn report_batch(scenes: &[PathBuf], timings: bool, allow_long: bool) -> Result<ExitCode, Error> {
     use rayon::prelude::*;
     // Each scene writes its own folder: two scenes of one folder would overwrite each other.
@@ -206,9 +209,10 @@ fn report_batch(scenes: &[PathBuf], timings: bool, allow_long: bool) -> Result<E
             )));
         }
     }
+    let cache = PlacementCache::new();
     let results: Vec<Result<ExitCode, Error>> = scenes
         .par_iter()
-        .map(|s| report(s, None, timings, allow_long))
+        .map(|s| report_in(s, None, timings, allow_long, Some(&cache)))
         .collect();
     let mut first_error = None;
     for (scene, r) in scenes.iter().zip(results) {
@@ -229,10 +233,23 @@ fn report(
     timings: bool,
     allow_long: bool,
 ) -> Result<ExitCode, Error> {
+    report_in(scene_path, out, timings, allow_long, None)
+}
+
+/// [`report`], placing the profiles through `cache` when given (a run of several scenes).
+fn report_in(
+    scene_path: &Path,
+    out: Option<&Path>,
+    timings: bool,
+    allow_long: bool,
+    cache: Option<&PlacementCache>,
+) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
-    let results = pipeline::run_gated(&scene, |placement| {
-        within_budget(&scene, placement, allow_long)
-    })?;
+    let gate = |placement: &_| within_budget(&scene, placement, allow_long);
+    let results = match cache {
+        Some(cache) => pipeline::run_gated_cached(&scene, cache, gate)?,
+        None => pipeline::run_gated(&scene, gate)?,
+    };
     if timings {
         for (stage, seconds) in &results.record.stages {
             eprintln!("{:<20} {:>10.3} ms", stage.name(), 1e3 * seconds);

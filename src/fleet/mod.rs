@@ -23,6 +23,7 @@ pub mod synthetic;
 
 pub use inputs::{Inputs, Item, Shard, items_of_files, parse_pairs, unique_ids};
 
+use crate::cache::PlacementCache;
 use crate::conicity::Parameters;
 use crate::pipeline::{self, Results, Stage};
 use crate::profile::Source;
@@ -30,6 +31,7 @@ use crate::scene::{ProfileRef, Scene, SceneError};
 use crate::track::{PlacedRail, PlacedWheel, Side};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The largest Hertz pressure of one pair over its sweep.
@@ -133,7 +135,10 @@ pub struct Fleet {
     inputs: Inputs,
     stages: Vec<Stage>,
     wheels: Option<[PlacedWheel; 2]>,
-    rails: Option<[PlacedRail; 2]>,
+    rails: Option<[Arc<PlacedRail>; 2]>,
+    /// The items' placed rails when a pairs file lists rails (pairs often share a rail
+    /// file; see [`PlacementCache`]).
+    rail_cache: Option<PlacementCache>,
 }
 
 impl Fleet {
@@ -171,12 +176,14 @@ impl Fleet {
             stages.push(Stage::Hertz);
         }
         let stages = pipeline::closed_stages(&template, &stages);
+        let rail_cache = matches!(inputs, Inputs::Pairs { rails: true }).then(PlacementCache::new);
         Ok(Fleet {
             template,
             inputs,
             stages,
             wheels,
             rails,
+            rail_cache,
         })
     }
 
@@ -228,7 +235,8 @@ impl Fleet {
     }
 
     /// Places `item`'s profiles (its files read, fitted and placed as a report does; the
-    /// template's shared profiles cloned) and runs the fleet's stages on them.
+    /// template's wheels cloned, its rails shared; a rail file of a pairs file placed once
+    /// for all the pairs that list it) and runs the fleet's stages on them.
     ///
     /// # Errors
     /// The message of the first file that cannot be read or placed (naming the file and
@@ -240,9 +248,10 @@ impl Fleet {
             (None, Some(shared)) => Ok(shared.clone()),
         }
         .map_err(message)?;
-        let rails = match (&item.rails, &self.rails) {
-            (Some(_), _) | (None, None) => pipeline::place_rails(&scene),
-            (None, Some(shared)) => Ok(shared.clone()),
+        let rails = match (&item.rails, &self.rails, &self.rail_cache) {
+            (Some(_), _, Some(cache)) => pipeline::place_rails_cached(&scene, cache),
+            (Some(_), _, None) | (None, None, _) => pipeline::place_rails(&scene),
+            (None, Some(shared), _) => Ok(shared.clone()),
         }
         .map_err(message)?;
         let placement = pipeline::assemble(&scene, wheels, rails).map_err(message)?;

@@ -39,8 +39,10 @@
 
 #[cfg(feature = "cli")]
 pub mod chart;
+mod csv_out;
 pub mod golden;
 pub mod html;
+mod number;
 pub mod table;
 
 #[cfg(feature = "cli")]

@@ -24,6 +24,7 @@
 //!   changed line in a diff. Not-a-number is `NaN`, infinities are `inf` and `-inf`.
 //! * Text is quoted only when needed (commas, quotes, line breaks), as RFC 4180 says.
 
+use super::csv_out::{end_csv_record, push_csv_field, push_csv_record};
 use std::fmt;
 
 /// The values of one column: all numbers or all text.
@@ -355,22 +356,23 @@ impl Table {
         if self.columns.is_empty() {
             return out;
         }
-        let mut writer = csv::WriterBuilder::new()
-            .terminator(csv::Terminator::Any(b'\n'))
-            .from_writer(Vec::new());
-        // Writing into a Vec cannot fail, and every record has the header's length.
-        let expect = "CSV writer into memory";
-        writer.write_record(self.column_names()).expect(expect);
-        let mut record: Vec<String> = Vec::with_capacity(self.columns.len());
+        // The csv crate's quoting (`QuoteStyle::Necessary`, `\n` records: see
+        // `push_csv_field`), written directly: numbers never need quotes.
+        let mut bytes = Vec::with_capacity(16 * self.columns.len() * (self.n_rows() + 1));
+        push_csv_record(&mut bytes, self.column_names().map(str::as_bytes));
         for row in 0..self.n_rows() {
-            record.clear();
-            record.extend(self.columns.iter().map(|c| match &c.data {
-                ColumnData::Numeric(v) => format_number(v[row], format),
-                ColumnData::Text(v) => v[row].clone(),
-            }));
-            writer.write_record(&record).expect(expect);
+            let start = bytes.len();
+            for (i, c) in self.columns.iter().enumerate() {
+                if i > 0 {
+                    bytes.push(b',');
+                }
+                match &c.data {
+                    ColumnData::Numeric(v) => push_number(&mut bytes, v[row], format),
+                    ColumnData::Text(v) => push_csv_field(&mut bytes, v[row].as_bytes()),
+                }
+            }
+            end_csv_record(&mut bytes, start);
         }
-        let bytes = writer.into_inner().expect(expect);
         out.push_str(&String::from_utf8(bytes).expect("CSV of UTF-8 strings is UTF-8"));
         out
     }
@@ -445,26 +447,42 @@ impl Table {
 /// assert_eq!(format_number(760.53, NumberFormat::Significant(3)), "7.61e2");
 /// ```
 pub fn format_number(x: f64, format: NumberFormat) -> String {
+    let mut out = Vec::new();
+    push_number(&mut out, x, format);
+    String::from_utf8(out).expect("numbers are ASCII")
+}
+
+/// Appends [`format_number`]'s text of `x` to `out`.
+fn push_number(out: &mut Vec<u8>, x: f64, format: NumberFormat) {
+    use std::io::Write;
     if x.is_nan() {
-        return "NaN".to_owned();
+        out.extend_from_slice(b"NaN");
+        return;
     }
     if x.is_infinite() {
-        return if x > 0.0 { "inf" } else { "-inf" }.to_owned();
+        out.extend_from_slice(if x > 0.0 { b"inf" } else { b"-inf" });
+        return;
     }
-    match format {
+    // Writing to a Vec cannot fail.
+    let _ = match format {
         NumberFormat::Shortest => {
             let a = x.abs();
             if a == 0.0 || (1e-4..1e15).contains(&a) {
-                format!("{x}")
+                write!(out, "{x}")
             } else {
-                format!("{x:e}")
+                write!(out, "{x:e}")
             }
         }
         NumberFormat::Significant(n) => {
-            let digits = usize::from(n.clamp(1, 17)) - 1;
-            format!("{x:.digits$e}")
+            let digits = n.clamp(1, 17);
+            if super::number::push_significant(out, x, u32::from(digits)) {
+                Ok(())
+            } else {
+                let prec = usize::from(digits) - 1;
+                write!(out, "{x:.prec$e}")
+            }
         }
-    }
+    };
 }
 
 #[cfg(test)]

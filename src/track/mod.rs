@@ -14,6 +14,7 @@
 
 use crate::profile::{Profile, ProfileKind};
 use std::fmt;
+use std::sync::Arc;
 
 mod heights;
 mod layout;
@@ -136,12 +137,16 @@ impl Side {
 }
 
 /// One side of the track: a wheel and the rail under it.
+///
+/// The placed rail is shared, not copied: both sides of a track with one rail profile, the
+/// pairs of a fleet and the scenes of a run with a [`crate::cache::PlacementCache`] hold the
+/// same tables (cloning a side pair clones the wheel and counts one more user of the rail).
 #[derive(Debug, Clone)]
 pub struct SidePair {
     /// The wheel, fixed to the wheelset.
     pub(crate) wheel: PlacedWheel,
     /// The placed rail.
-    pub(crate) rail: PlacedRail,
+    pub(crate) rail: Arc<PlacedRail>,
 }
 
 /// Both sides of a wheelset on its track.
@@ -170,15 +175,18 @@ impl SidePair {
     ) -> Result<SidePair, PlacementError> {
         Ok(SidePair {
             wheel: PlacedWheel::place(wheel, nominal_radius_mm, layout)?,
-            rail: PlacedRail::place(rail, rail_profile_inclination, layout)?,
+            rail: Arc::new(PlacedRail::place(rail, rail_profile_inclination, layout)?),
         })
     }
 
-    /// A placed wheel on a placed rail: for a caller that places a rail once and puts many
-    /// wheels on it (a fleet). [`Placement::new`] checks that both were placed for its
-    /// layout.
-    pub fn new(wheel: PlacedWheel, rail: PlacedRail) -> SidePair {
-        SidePair { wheel, rail }
+    /// A placed wheel on a placed rail, owned or shared (`Arc<PlacedRail>`): for a caller
+    /// that places a rail once and puts many wheels on it (a fleet, both sides of a track).
+    /// [`Placement::new`] checks that both were placed for its layout.
+    pub fn new(wheel: PlacedWheel, rail: impl Into<Arc<PlacedRail>>) -> SidePair {
+        SidePair {
+            wheel,
+            rail: rail.into(),
+        }
     }
 
     /// The wheel, fixed to the wheelset.
@@ -188,6 +196,11 @@ impl SidePair {
 
     /// The placed rail.
     pub fn rail(&self) -> &PlacedRail {
+        &self.rail
+    }
+
+    /// The placed rail, shared: to put it under another wheel without copying its tables.
+    pub fn shared_rail(&self) -> &Arc<PlacedRail> {
         &self.rail
     }
 
@@ -265,7 +278,8 @@ impl Placement {
     }
 
     /// A wheelset whose two wheels have the same profile and radius on two rails of the same
-    /// profile (each side in its mirrored side frame): the usual case, placed once.
+    /// profile (each side in its mirrored side frame): the usual case, placed once (the
+    /// right side shares the left's rail).
     ///
     /// `rail_profile_inclination` is the inclination the rail profile data already has
     /// (upright: `Inclination::VERTICAL`); the layout's inclination is the track's.

@@ -83,48 +83,55 @@ pub struct PlacedRail {
 
 /// The rail profile sampled every [`PLACEMENT_SCAN_STEP_MM`] for its placement.
 struct Scan {
-    /// Profile coordinates of the samples.
-    us: Vec<f64>,
-    /// Every sample's rotated point and tangent `[Y, Z, dY/du, dZ/du]`, from one evaluation
-    /// each.
-    samples: Vec<[f64; 4]>,
+    /// The profile coordinates of the samples: `lo + (hi - lo) i / n`.
+    domain: (f64, f64),
+    n: usize,
+    /// Every sample's rotated point `[Y, Z]`, from one evaluation each.
+    points: Vec<[f64; 2]>,
+    /// Whether the rotated tangent at each sample is steep or turns back (see
+    /// [`Scan::running_surface`]).
+    steep: Vec<bool>,
 }
 
 impl Scan {
     fn of(profile: &Profile, rotation: UnitComplex<f64>) -> Scan {
         let (lo, hi) = profile.domain();
         let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
-        let us: Vec<f64> = (0..=n)
-            .map(|i| lo + (hi - lo) * i as f64 / n as f64)
-            .collect();
-        let samples = us
-            .iter()
-            .map(|&u| {
+        let (points, steep) = (0..=n)
+            .map(|i| {
+                let u = lo + (hi - lo) * i as f64 / n as f64;
                 let [v, d1, _] = profile.eval(u);
                 let p = rotation * Point2::new(u, v);
                 let t = rotation * Vector2::new(1.0, d1);
-                [p.x, p.y, t.x, t.y]
+                ([p.x, p.y], t.x <= 0.0 || t.y.abs() > MAX_RAIL_SLOPE * t.x)
             })
-            .collect();
-        Scan { us, samples }
+            .unzip();
+        Scan {
+            domain: (lo, hi),
+            n,
+            points,
+            steep,
+        }
+    }
+
+    /// The profile coordinate of sample `i`.
+    fn u(&self, i: usize) -> f64 {
+        let (lo, hi) = self.domain;
+        lo + (hi - lo) * i as f64 / self.n as f64
     }
 
     /// The running surface `(u_lo, u_hi)`: the connected stretch around the top sample
     /// `i_top` where Y(u) increases and the placed slope stays below [`MAX_RAIL_SLOPE`].
     fn running_surface(&self, i_top: usize) -> (f64, f64) {
-        let steep = |i: usize| {
-            let [_, _, ty, tz] = self.samples[i];
-            ty <= 0.0 || tz.abs() > MAX_RAIL_SLOPE * ty
-        };
         let mut i_lo = i_top;
-        while i_lo > 0 && !steep(i_lo - 1) {
+        while i_lo > 0 && !self.steep[i_lo - 1] {
             i_lo -= 1;
         }
         let mut i_hi = i_top;
-        while i_hi + 1 < self.us.len() && !steep(i_hi + 1) {
+        while i_hi + 1 < self.points.len() && !self.steep[i_hi + 1] {
             i_hi += 1;
         }
-        (self.us[i_lo], self.us[i_hi])
+        (self.u(i_lo), self.u(i_hi))
     }
 }
 
@@ -170,6 +177,8 @@ impl PlacedRail {
         rail.gauge_point = rail.to_side(gp);
         rail.top = rail.to_side(top);
         rail.surface = scan.running_surface(i_top);
+        // Freed before the tables are built, which reuse its memory.
+        drop(scan);
         rail.y_range = (
             rail.point_of(rail.surface.0)[0],
             rail.point_of(rail.surface.1)[0],
@@ -184,14 +193,14 @@ impl PlacedRail {
     /// Top of the rail in the rotated profile frame: the maximum of Z(u), refined by
     /// bisection on dZ/du (concave near the top); with the index of the highest sample.
     fn find_top(&self, scan: &Scan) -> (usize, [f64; 2]) {
-        let (us, samples) = (&scan.us, &scan.samples);
-        let i_top = (0..us.len())
-            .max_by(|&a, &b| samples[a][1].total_cmp(&samples[b][1]))
+        let points = &scan.points;
+        let i_top = (0..points.len())
+            .max_by(|&a, &b| points[a][1].total_cmp(&points[b][1]))
             .unwrap_or(0);
         let u_top = refine_extremum(
             |u| self.rotated_tangent(u)[1],
-            us[i_top.saturating_sub(1)],
-            us[(i_top + 1).min(us.len() - 1)],
+            scan.u(i_top.saturating_sub(1)),
+            scan.u((i_top + 1).min(points.len() - 1)),
         );
         (i_top, self.rotated(u_top))
     }
@@ -199,9 +208,9 @@ impl PlacedRail {
     /// Gauge point in the rotated profile frame: the most gauge-side (smallest Y) point with
     /// Z >= `floor` (the top less the gauge point depth).
     fn find_gauge_point(&self, scan: &Scan, floor: f64) -> Result<[f64; 2], PlacementError> {
-        let (us, samples) = (&scan.us, &scan.samples);
+        let points = &scan.points;
         let mut best: Option<(usize, f64)> = None;
-        for (i, p) in samples.iter().enumerate() {
+        for (i, p) in points.iter().enumerate() {
             if p[1] >= floor && best.is_none_or(|(_, y)| p[0] < y) {
                 best = Some((i, p[0]));
             }
@@ -211,17 +220,25 @@ impl PlacedRail {
                 profile: self.profile.name().to_string(),
             });
         };
-        let below = |i: usize| samples[i][1] < floor;
+        let below = |i: usize| points[i][1] < floor;
         let u_gp = if i_gp > 0 && below(i_gp - 1) {
             // The depth line cuts the head between two samples: bisect Z(u) = floor.
-            bisect(|u| self.rotated(u)[1] - floor, us[i_gp - 1], us[i_gp])
-        } else if i_gp + 1 < us.len() && below(i_gp + 1) {
-            bisect(|u| self.rotated(u)[1] - floor, us[i_gp + 1], us[i_gp])
+            bisect(
+                |u| self.rotated(u)[1] - floor,
+                scan.u(i_gp - 1),
+                scan.u(i_gp),
+            )
+        } else if i_gp + 1 < points.len() && below(i_gp + 1) {
+            bisect(
+                |u| self.rotated(u)[1] - floor,
+                scan.u(i_gp + 1),
+                scan.u(i_gp),
+            )
         } else {
             refine_extremum(
                 |u| self.rotated_tangent(u)[0],
-                us[i_gp.saturating_sub(1)],
-                us[(i_gp + 1).min(us.len() - 1)],
+                scan.u(i_gp.saturating_sub(1)),
+                scan.u((i_gp + 1).min(points.len() - 1)),
             )
         };
         Ok(self.rotated(u_gp))
