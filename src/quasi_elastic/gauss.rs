@@ -1,6 +1,7 @@
 //! The Gauss-Legendre integration of the weighted averages over one low region: panels of
 //! a few weight widths on the smooth pieces between joints, 8 nodes (4 on short pieces).
 
+use super::weight::exp_neg;
 use super::{Average, BARRIER_EPS, FIELDS, Pass, Work, barrier_maxima, fields_of};
 use crate::gap::{SideGap, SidePose};
 
@@ -186,7 +187,7 @@ impl Gauss<'_, '_> {
                         current.min_gap = current.min_gap.min(d);
                         let z = d / self.eps;
                         if z <= self.cutoff {
-                            current.add(0.5 * h * w * (-z).exp(), &fields_of(self.side, &p));
+                            current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
                         }
                     }
                 }

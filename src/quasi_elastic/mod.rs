@@ -203,11 +203,12 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
     }
 }
 
-/// Number of averaged fields per node (see [`side_average`]).
 mod gauss;
+mod weight;
 
 use gauss::gauss_region;
 
+/// Number of averaged fields per node (see [`side_average`]).
 const FIELDS: usize = 8;
 
 /// Buffers reused across positions.
