@@ -173,6 +173,8 @@ impl Gauss<'_, '_> {
                 };
                 for j in 0..panels {
                     let mid = a + (j as f64 + 0.5) * h;
+                    // The panel's `m` nodes and gaps, appended at once.
+                    let (mut s_of, mut d_of, mut m) = ([0.0; 8], [0.0; 8], 0);
                     // Nodes in increasing `s`: the lower half from the panel's start inwards.
                     let lower = xs.iter().zip(ws).rev().map(|(x, w)| (-x, *w));
                     let upper = xs.iter().zip(ws).map(|(x, w)| (*x, *w));
@@ -182,14 +184,16 @@ impl Gauss<'_, '_> {
                             continue;
                         };
                         let d = p.g + self.offset;
-                        nodes.push(s);
-                        gaps.push(d);
+                        (s_of[m], d_of[m]) = (s, d);
+                        m += 1;
                         current.min_gap = current.min_gap.min(d);
                         let z = d / self.eps;
                         if z <= self.cutoff {
                             current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
                         }
                     }
+                    nodes.extend_from_slice(&s_of[..m]);
+                    gaps.extend_from_slice(&d_of[..m]);
                 }
             }
             if breaks[k + 1].1 {

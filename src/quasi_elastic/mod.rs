@@ -450,6 +450,14 @@ fn include_rigid_point(regions: &mut Vec<(f64, f64)>, s_rigid: f64, domain: (f64
 fn barrier_maxima(gaps: &[f64], barrier: f64) -> Vec<usize> {
     let n = gaps.len();
     let mut out = Vec::new();
+    // Most regions have no interior local maximum at all (a gap falling, then rising).
+    let falls_then_rises = gaps
+        .windows(2)
+        .skip_while(|w| w[1] < w[0])
+        .all(|w| w[1] >= w[0]);
+    if falls_then_rises {
+        return out;
+    }
     let mut run_min = gaps.first().copied().unwrap_or(f64::INFINITY);
     let mut i = 1;
     while i + 1 < n {
