@@ -9,6 +9,12 @@
 //! no block the one-level scan would have scanned, and the regions are those of a full
 //! scan (checked in `gap/tests.rs`,
 //! `skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan`).
+//!
+//! The quasi-elastic pass starts from the rigid contact point, where the gap is lowest: the
+//! run of low samples around it is followed sample by sample (its blocks would not be
+//! skipped anyway), and only the rest of the wheel is scanned by bounds. Every sample's
+//! status is still known exactly, so the regions are the same from any start
+//! (`following_the_run_from_any_start_finds_the_regions_of_the_scan`).
 
 use super::scan::{SCAN_BLOCK, block_samples};
 use super::{SideGap, SidePose};
@@ -23,7 +29,22 @@ impl SideGap<'_> {
     /// Stretches of the wheel (`(s_lo, s_hi)`, increasing, disjoint) where the coarse gap
     /// lies below `threshold` (mm, same reference as [`GapPoint::g`](super::GapPoint)),
     /// each widened by one coarse step so that the fine gap below the threshold lies inside.
+    #[cfg(test)]
     pub(crate) fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
+        self.low_regions_from(pose, threshold, None, out);
+    }
+
+    /// [`low_regions`](SideGap::low_regions), knowing that the gap is likely low at the
+    /// wheel coordinate `start` (the rigid contact point): the run of low samples around it
+    /// is followed sample by sample, without bounds, and only the rest of the wheel is
+    /// scanned by blocks. The same regions for any `start`.
+    pub(crate) fn low_regions_from(
+        &self,
+        pose: &SidePose,
+        threshold: f64,
+        start: Option<f64>,
+        out: &mut Vec<(f64, f64)>,
+    ) {
         out.clear();
         // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
         // not low, exactly as the table would answer.
@@ -36,10 +57,51 @@ impl SideGap<'_> {
             open: None,
             out,
         };
+        let low = |i: usize| self.coarse_gap(i, pose) < threshold;
+        let start = start.map(|s| {
+            let i = self.coarse.partition_point(|c| c[0] < s);
+            i.clamp(first, last - 1)
+        });
+        match start {
+            Some(i) if low(i) => {
+                // The run a..=b around i, and the high samples a - 1 and b + 1 (if any).
+                let (mut a, mut b) = (i, i);
+                while a > first && low(a - 1) {
+                    a -= 1;
+                }
+                while b + 1 < last && low(b + 1) {
+                    b += 1;
+                }
+                if a > first {
+                    self.scan_blocks(pose, threshold, first..a - 1, &mut runs);
+                    runs.high(a - 1);
+                }
+                runs.low(a);
+                if b + 1 < last {
+                    runs.high(b + 1);
+                    self.scan_blocks(pose, threshold, b + 2..last, &mut runs);
+                }
+            }
+            _ => self.scan_blocks(pose, threshold, first..last, &mut runs),
+        }
+        runs.high(last);
+    }
+
+    /// The coarse samples `samples` into `runs`, by groups of blocks, then blocks, then
+    /// samples, each level skipped where its bound reaches the threshold.
+    fn scan_blocks(&self, pose: &SidePose, threshold: f64, samples: Range<usize>, runs: &mut Runs) {
+        let Range {
+            start: first,
+            end: last,
+        } = samples;
+        if first >= last {
+            return;
+        }
         let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
         for group in blocks.clone().step_by(GROUP_BLOCKS) {
             let group = group..(group + GROUP_BLOCKS).min(blocks.end);
-            // A group or block whose bound reaches the threshold has no low sample.
+            // A group or block whose bound reaches the threshold has no low sample (the
+            // bound covers every sample of its blocks, in `samples` or not).
             if self.extent_bound(self.extent(group.clone()), pose) >= threshold {
                 runs.high((group.start * SCAN_BLOCK).max(first));
                 continue;
@@ -58,7 +120,6 @@ impl SideGap<'_> {
                 }
             }
         }
-        runs.high(last);
     }
 
     /// The wheel extents `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of a run of blocks.
@@ -157,5 +218,49 @@ mod tests {
             }
         }
         assert!(2 * skipped > groups, "{skipped} of {groups} groups skipped");
+    }
+
+    /// Following the run around a start point finds the regions of the scan without one
+    /// (itself checked against a full scan in `gap::tests`), from the rigid contact point,
+    /// from 41 points along the wheel and from outside it, at thresholds from 1e-3 to 10 mm
+    /// above the rigid minimum and at the sampled local maxima of the gap.
+    #[test]
+    fn following_the_run_from_any_start_finds_the_regions_of_the_scan() {
+        let scene = crate::scene::Scene::from_toml("", "t", std::path::Path::new(".")).unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let ys: Vec<f64> = (0..=80).map(|i| -20.0 + 0.5 * f64::from(i)).collect();
+        let sweep = crate::rigid::search(&placement, &ys, crate::rigid::Solver::default());
+        let (mut expected, mut found) = (Vec::new(), Vec::new());
+        let mut followed = 0;
+        for (side, sign, k) in [(&placement.left, 1.0, 0), (&placement.right, -1.0, 1)] {
+            let side = SideGap::new(side, sign);
+            let (lo, hi) = side.domain;
+            for p in &sweep.positions {
+                let pose = SidePose::new(sign, p.y_ws, p.roll);
+                let rigid = p.contact[k].unwrap().s;
+                let g = side.at(rigid, &pose).unwrap().g;
+                // Thresholds above the rigid minimum, and at each sampled local maximum of
+                // the gap: that sample alone is high between low neighbours.
+                let (first, last) = side.over_rail(&pose);
+                let gap = |i: usize| side.coarse_gap(i, &pose);
+                let maxima = (first + 1..last - 1)
+                    .filter(|&i| gap(i - 1) < gap(i) && gap(i + 1) < gap(i))
+                    .map(gap);
+                let above = [1e-3, 3e-3, 0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0].map(|a| g + a);
+                for threshold in above.into_iter().chain(maxima) {
+                    side.low_regions(&pose, threshold, &mut expected);
+                    let along = (0..=40).map(|j| lo + (hi - lo) * f64::from(j) / 40.0);
+                    for start in [rigid, lo - 5.0, hi + 5.0].into_iter().chain(along) {
+                        side.low_regions_from(&pose, threshold, Some(start), &mut found);
+                        assert_eq!(found, expected, "from {start} at {pose:?}, {threshold}");
+                        let i = side.coarse.partition_point(|c| c[0] < start);
+                        followed += usize::from(
+                            side.coarse_gap(i.clamp(first, last - 1), &pose) < threshold,
+                        );
+                    }
+                }
+            }
+        }
+        assert!(followed > 5000, "a run was followed {followed} times");
     }
 }

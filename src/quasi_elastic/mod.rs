@@ -275,9 +275,10 @@ fn side_average(
     let limit = settings.cutoff * eps;
     // Regions where the gap may be below the cut-off; the coarse gap errs by less than
     // the margin (see gap::COARSE_MARGIN_MM).
-    side.low_regions(
+    side.low_regions_from(
         &pose,
         at_rigid.g + limit + crate::gap::COARSE_MARGIN_MM,
+        Some(s_rigid),
         &mut work.regions,
     );
     include_rigid_point(&mut work.regions, s_rigid, side.wheel().profile().domain());
