@@ -120,6 +120,11 @@ pub(super) fn gauss_region(
         let (mut a, mut b) = (work.nodes[i - 1], work.nodes[i + 1]);
         for _ in 0..60 {
             let m = 0.5 * (a + b);
+            // Once the midpoint rounds onto an end, further halvings keep it there (or
+            // collapse the bracket onto it): the refined barrier is `m` itself.
+            if !(a < m && m < b) {
+                break;
+            }
             match side.at(m, pose) {
                 Some(p) if p.dg < 0.0 => b = m,
                 _ => a = m,
