@@ -191,7 +191,11 @@ impl Gauss<'_, '_> {
                         let d = p.g + self.offset;
                         (s_of[m], d_of[m]) = (s, d);
                         m += 1;
-                        current.min_gap = current.min_gap.min(d);
+                        // f64::min without its NaN handling: the minimum is never NaN, and a
+                        // NaN gap compares false as f64::min ignores it.
+                        if d < current.min_gap {
+                            current.min_gap = d;
+                        }
                         let z = d / self.eps;
                         if z <= self.cutoff {
                             current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
