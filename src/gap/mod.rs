@@ -8,11 +8,12 @@
 //! `d(s) = z(s) - Zrail(Y(s))`; without the axle height `h` it is `g(s) = d(s) - h`.
 //!
 //! The layer both contact searches ([`crate::rigid`], [`crate::quasi_elastic`]) stand on:
-//! the pose and the gap at a wheel point (here), the coarse scans for basins and low
-//! regions (`scan.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
+//! the pose and the gap at a wheel point (here), the coarse scans for basins (`scan.rs`) and
+//! low regions (`low.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
 //! profiles (`tabulated.rs`); and the [`ContactPoint`] both searches report (`contact.rs`).
 
 mod contact;
+mod low;
 mod minimum;
 mod scan;
 mod tabulated;

@@ -1,6 +1,6 @@
 //! The coarse scans of the wheel against the rail's height table: the basins of the gap
-//! (brackets to refine) and its low regions (what the quasi-elastic pass integrates), with
-//! blocks of samples skipped where a bound shows they cannot matter.
+//! (brackets to refine) here, its low regions (what the quasi-elastic pass integrates) in
+//! `low.rs`, with blocks of samples skipped where a bound shows they cannot matter.
 //!
 //! The height table keeps block maxima in a sparse table, so that a scan can bound the gap
 //! of [`SCAN_BLOCK`] wheel samples at once (their lowest point against the highest rail point
@@ -77,7 +77,7 @@ pub(super) const SCAN_BLOCK: usize = 8;
 
 /// The coarse samples of block `b` inside `first..last`.
 #[inline]
-fn block_samples(b: usize, first: usize, last: usize) -> std::ops::Range<usize> {
+pub(super) fn block_samples(b: usize, first: usize, last: usize) -> std::ops::Range<usize> {
     (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last)
 }
 
@@ -262,47 +262,6 @@ impl SideGap<'_> {
                     .max_over(y_lo, y_hi)
                     .map_or(f64::INFINITY, |rail| z_lo - rail)
             }));
-    }
-
-    /// Stretches of the wheel (`(s_lo, s_hi)`, increasing, disjoint) where the coarse gap
-    /// lies below `threshold` (mm, same reference as [`GapPoint::g`]), each widened by one
-    /// coarse step so that the fine gap below the threshold lies inside.
-    pub(crate) fn low_regions(&self, pose: &SidePose, threshold: f64, out: &mut Vec<(f64, f64)>) {
-        out.clear();
-        let n = self.coarse.len();
-        // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
-        // not low, exactly as the table would answer.
-        let (first, last) = self.over_rail(pose);
-        if first >= last {
-            return;
-        }
-        let mut open: Option<usize> = None;
-        let close = |first_low: usize, i: usize, out: &mut Vec<(f64, f64)>| {
-            let lo = self.coarse[first_low.saturating_sub(1)][0];
-            let hi = self.coarse[i.min(n - 1)][0];
-            match out.last_mut() {
-                Some(last) if last.1 >= lo => last.1 = hi,
-                _ => out.push((lo, hi)),
-            }
-        };
-        for b in first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1 {
-            // A block whose bound reaches the threshold has no low sample.
-            let skip = self.block_bound(b, pose) >= threshold;
-            for i in block_samples(b, first, last) {
-                let low = !skip && self.coarse_gap(i, pose) < threshold;
-                match (low, open) {
-                    (true, None) => open = Some(i),
-                    (false, Some(first_low)) => {
-                        close(first_low, i, out);
-                        open = None;
-                    }
-                    _ => {}
-                }
-            }
-        }
-        if let Some(first_low) = open {
-            close(first_low, last, out);
-        }
     }
 
     /// The index range of the coarse samples that can lie above the rail at `pose`:

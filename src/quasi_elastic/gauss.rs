@@ -1,6 +1,7 @@
 //! The Gauss-Legendre integration of the weighted averages over one low region: panels of
 //! a few weight widths on the smooth pieces between joints, 8 nodes (4 on short pieces).
 
+use super::weight::exp_neg;
 use super::{Average, BARRIER_EPS, FIELDS, Pass, Work, barrier_maxima, fields_of};
 use crate::gap::{SideGap, SidePose};
 
@@ -119,6 +120,11 @@ pub(super) fn gauss_region(
         let (mut a, mut b) = (work.nodes[i - 1], work.nodes[i + 1]);
         for _ in 0..60 {
             let m = 0.5 * (a + b);
+            // Once the midpoint rounds onto an end, further halvings keep it there (or
+            // collapse the bracket onto it): the refined barrier is `m` itself.
+            if !(a < m && m < b) {
+                break;
+            }
             match side.at(m, pose) {
                 Some(p) if p.dg < 0.0 => b = m,
                 _ => a = m,
@@ -172,6 +178,8 @@ impl Gauss<'_, '_> {
                 };
                 for j in 0..panels {
                     let mid = a + (j as f64 + 0.5) * h;
+                    // The panel's `m` nodes and gaps, appended at once.
+                    let (mut s_of, mut d_of, mut m) = ([0.0; 8], [0.0; 8], 0);
                     // Nodes in increasing `s`: the lower half from the panel's start inwards.
                     let lower = xs.iter().zip(ws).rev().map(|(x, w)| (-x, *w));
                     let upper = xs.iter().zip(ws).map(|(x, w)| (*x, *w));
@@ -181,14 +189,20 @@ impl Gauss<'_, '_> {
                             continue;
                         };
                         let d = p.g + self.offset;
-                        nodes.push(s);
-                        gaps.push(d);
-                        current.min_gap = current.min_gap.min(d);
+                        (s_of[m], d_of[m]) = (s, d);
+                        m += 1;
+                        // f64::min without its NaN handling: the minimum is never NaN, and a
+                        // NaN gap compares false as f64::min ignores it.
+                        if d < current.min_gap {
+                            current.min_gap = d;
+                        }
                         let z = d / self.eps;
                         if z <= self.cutoff {
-                            current.add(0.5 * h * w * (-z).exp(), &fields_of(self.side, &p));
+                            current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
                         }
                     }
+                    nodes.extend_from_slice(&s_of[..m]);
+                    gaps.extend_from_slice(&d_of[..m]);
                 }
             }
             if breaks[k + 1].1 {
