@@ -133,26 +133,6 @@ impl SideGap<'_> {
             });
         [run[0][0], run[run.len() - 1][1], z_lo, z_hi]
     }
-
-    /// A lower bound of the coarse gaps of the wheel samples within `extent` at `pose`
-    /// (`+inf` when none can be above the rail): the lowest they can be, against the highest
-    /// the rail table is under the lateral span they can cover. The bound of
-    /// `SideGap::block_bound` for any extent.
-    #[inline]
-    fn extent_bound(&self, [yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4], pose: &SidePose) -> f64 {
-        let (cos, sin) = (pose.cos, pose.sin);
-        // Y = delta + cos Yw - sin Zw, z = sin Yw + cos Zw (cos > 0); Yw and Zw vary
-        // independently within their ranges, so the extremes lie at range ends.
-        let (a, c) = (-sin * zw_lo, -sin * zw_hi);
-        let y_lo = pose.delta + cos * yw_lo + a.min(c);
-        let y_hi = pose.delta + cos * yw_hi + a.max(c);
-        let z_lo = (sin * yw_lo).min(sin * yw_hi) + cos * zw_lo;
-        self.pair
-            .rail
-            .heights()
-            .max_over(y_lo, y_hi)
-            .map_or(f64::INFINITY, |rail| z_lo - rail)
-    }
 }
 
 /// The runs of low coarse samples of a scan, closed into regions as the scan goes.

@@ -20,7 +20,7 @@ mod tabulated;
 #[cfg(test)]
 mod tests;
 
-use crate::track::{PlacedWheel, RailPoint, SidePair, WheelPoint};
+use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
 use scan::SCAN_BLOCK;
 use tabulated::Tables;
 
@@ -113,6 +113,8 @@ impl GapPoint {
 pub struct SideGap<'a> {
     /// The wheel and rail of the side.
     pub pair: &'a SidePair,
+    /// The rail of `pair`, behind its `Arc` once here rather than at every evaluation.
+    rail: &'a PlacedRail,
     /// +1 left, -1 right.
     pub sign: f64,
     coarse: Vec<[f64; 3]>,
@@ -158,6 +160,7 @@ impl<'a> SideGap<'a> {
             .collect();
         SideGap {
             pair,
+            rail: pair.rail(),
             sign,
             coarse,
             blocks,
@@ -212,7 +215,7 @@ impl<'a> SideGap<'a> {
         }
         let wheel = self.pair.wheel.at(s);
         let [y, z_rel] = pose.apply(wheel.y, wheel.z);
-        let rail = self.pair.rail.at(y)?;
+        let rail = self.rail.at(y)?;
         // dZw/ds = -F' and dYw/ds = 1; wheel.slope = -F', wheel.d2 = -F''.
         let f1 = -wheel.slope;
         let f2 = -wheel.d2;

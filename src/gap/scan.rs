@@ -197,19 +197,28 @@ impl SideGap<'_> {
     pub(super) fn coarse_gap(&self, i: usize, pose: &SidePose) -> f64 {
         let [_, yw, zw] = self.coarse[i];
         let [y, z] = pose.apply(yw, zw);
-        self.pair
-            .rail
+        self.rail
             .heights()
             .height(y)
             .map_or(f64::INFINITY, |zr| z - zr)
     }
 
     /// A lower bound of the coarse gaps of block `b` at `pose` (`+inf` when none of its
-    /// samples can be above the rail): the lowest its points can be, against the highest
-    /// the rail table is under the lateral span they can cover.
+    /// samples can be above the rail): [`Self::extent_bound`] of the block.
     #[inline]
     pub(super) fn block_bound(&self, b: usize, pose: &SidePose) -> f64 {
-        let [yw_lo, yw_hi, zw_lo, zw_hi] = self.blocks[b];
+        self.extent_bound(self.blocks[b], pose)
+    }
+
+    /// A lower bound of the coarse gaps of the wheel samples within `extent` at `pose`
+    /// (`+inf` when none can be above the rail): the lowest they can be, against the highest
+    /// the rail table is under the lateral span they can cover.
+    #[inline]
+    pub(super) fn extent_bound(
+        &self,
+        [yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4],
+        pose: &SidePose,
+    ) -> f64 {
         let (cos, sin) = (pose.cos, pose.sin);
         // Y = delta + cos Yw - sin Zw, z = sin Yw + cos Zw (cos > 0); Yw and Zw vary
         // independently within their ranges, so the extremes lie at range ends.
@@ -217,8 +226,7 @@ impl SideGap<'_> {
         let y_lo = pose.delta + cos * yw_lo + a.min(c);
         let y_hi = pose.delta + cos * yw_hi + a.max(c);
         let z_lo = (sin * yw_lo).min(sin * yw_hi) + cos * zw_lo;
-        self.pair
-            .rail
+        self.rail
             .heights()
             .max_over(y_lo, y_hi)
             .map_or(f64::INFINITY, |rail| z_lo - rail)
@@ -246,7 +254,7 @@ impl SideGap<'_> {
         };
         let c = (cos(s.0).min(cos(s.1)), c_hi);
         let neg_s = (-s.1, -s.0);
-        let heights = self.pair.rail.heights();
+        let heights = self.rail.heights();
         pose_box.centre = Some((d, sin));
         pose_box.bounds.clear();
         pose_box
@@ -267,7 +275,7 @@ impl SideGap<'_> {
     /// The index range of the coarse samples that can lie above the rail at `pose`:
     /// `Y = delta + Yw +- |sin phi| |Zw|`, with one sample more on each side.
     pub(super) fn over_rail(&self, pose: &SidePose) -> (usize, usize) {
-        let (y_lo, y_hi) = self.pair.rail.y_range();
+        let (y_lo, y_hi) = self.rail.y_range();
         // Y = delta + cos Yw - sin Zw differs from delta + Yw by at most
         // |sin| |Zw| + (1 - cos) |Yw|, with |Zw| <= r0 + 100 and |Yw| <= taping line + 100:
         // the second term is 13 mm at a roll of 0.19 rad (very unequal wheel radii).
