@@ -16,6 +16,9 @@ pub(super) struct Scratch {
     pub(super) minima: [Vec<GapPoint>; 2],
     /// Whether `basins` holds the basins of a previous solution.
     pub(super) warm: bool,
+    /// Per side, `(s, s_next)`: the basin centred on the previous contact point `s` starts
+    /// the next position at the predicted `s_next` (continuation).
+    pub(super) moved: [Option<(f64, f64)>; 2],
 }
 
 /// The lowest minimum of one side over its basins, and a second one within the two-point
@@ -72,4 +75,23 @@ pub(super) fn side_minimum(
     basins.truncate(kept);
     minima.drain(..known);
     best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
+}
+
+impl Scratch {
+    /// Moves the warm basin centred on each side's previous contact point to where the
+    /// contact point is predicted (see [`Scratch::moved`]); the others stay.
+    pub(super) fn move_contact_basins(&mut self, same_minimum_mm: f64) {
+        for (basins, moved) in self.basins.iter_mut().zip(&mut self.moved) {
+            let Some((from, to)) = moved.take() else {
+                continue;
+            };
+            if let Some(b) = basins
+                .iter_mut()
+                .find(|b| (0.5 * (b.0 + b.1) - from).abs() <= same_minimum_mm)
+            {
+                let half = 0.5 * (b.1 - b.0);
+                *b = (to - half, to + half);
+            }
+        }
+    }
 }

@@ -397,7 +397,9 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         let mut path = Continuation::new(centre.roll);
         indices
             .map(|i| {
-                let p = solve(sweep_mm[i], path.predict(sweep_mm[i]), &mut scratch);
+                let y = sweep_mm[i];
+                scratch.moved = path.moved_contacts(y);
+                let p = solve(y, path.predict(y), &mut scratch);
                 path.push(&p);
                 p
             })
