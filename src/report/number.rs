@@ -185,15 +185,9 @@ mod tests {
 
     #[test]
     fn agrees_with_the_standard_formatting() {
-        // SplitMix64 over the bits of numbers from 1e-20 to 1e20, both signs.
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
-            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = state;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            z ^ (z >> 31)
-        };
+        // Random numbers from 1e-20 to 1e20, both signs.
+        let mut rng = crate::rng::SplitMix64::new(0x9e37_79b9_7f4a_7c15);
+        let mut next = || rng.next_u64();
         let (mut fast, mut total) = (0, 0);
         for _ in 0..1_000_000 {
             let r = next();
