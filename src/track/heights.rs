@@ -33,12 +33,13 @@ impl HeightTable {
         let (lo, hi) = rail.y_range();
         let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
         let step = (hi - lo) / n as f64;
-        let mut z: Vec<f64> = (0..=n)
-            .map(|i| {
-                rail.at((lo + i as f64 * step).min(hi))
-                    .map_or(f64::NAN, |p| p.z)
-            })
-            .collect();
+        // One entry more than the grid (the last repeated), allocated once: pushing onto an
+        // exactly collected vector would copy it into one twice its size.
+        let mut z: Vec<f64> = Vec::with_capacity(n + 2);
+        z.extend((0..=n).map(|i| {
+            rail.at((lo + i as f64 * step).min(hi))
+                .map_or(f64::NAN, |p| p.z)
+        }));
         z.push(z[n]);
         // Every interpolated height between entries i and i + 1 lies below the maximum of
         // block i / B, which includes the first entry of the next block.
