@@ -169,16 +169,24 @@ impl Runs<'_, '_, '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::rigid::{RigidSweep, Solver, search};
+    use crate::track::Placement;
+
+    /// The paper placement and its rigid sweep over `n + 1` positions 0.5 mm apart from
+    /// `from` (mm).
+    fn paper_sweep(from: f64, n: u32) -> (Placement, RigidSweep) {
+        let placement = super::super::tests::placement();
+        let ys: Vec<f64> = (0..=n).map(|i| from + 0.5 * f64::from(i)).collect();
+        let sweep = search(&placement, &ys, Solver::default());
+        (placement, sweep)
+    }
 
     /// A group's bound lies below the bound of each of its blocks (so a skipped group
     /// skips only blocks the one-level scan skips: the regions equal a full scan's, as
     /// `gap::tests` checks), and over the paper sweep groups are skipped.
     #[test]
     fn group_bounds_lie_below_their_blocks_and_rule_out_most_of_the_wheel() {
-        let scene = crate::scene::Scene::from_toml("", "t", std::path::Path::new(".")).unwrap();
-        let placement = crate::pipeline::place(&scene).unwrap();
-        let ys: Vec<f64> = (0..=60).map(|i| -15.0 + 0.5 * f64::from(i)).collect();
-        let sweep = crate::rigid::search(&placement, &ys, crate::rigid::Solver::default());
+        let (placement, sweep) = paper_sweep(-15.0, 60);
         let side = SideGap::new(&placement.left, 1.0);
         let (mut groups, mut skipped) = (0, 0);
         for p in &sweep.positions {
@@ -206,10 +214,7 @@ mod tests {
     /// above the rigid minimum and at the sampled local maxima of the gap.
     #[test]
     fn following_the_run_from_any_start_finds_the_regions_of_the_scan() {
-        let scene = crate::scene::Scene::from_toml("", "t", std::path::Path::new(".")).unwrap();
-        let placement = crate::pipeline::place(&scene).unwrap();
-        let ys: Vec<f64> = (0..=80).map(|i| -20.0 + 0.5 * f64::from(i)).collect();
-        let sweep = crate::rigid::search(&placement, &ys, crate::rigid::Solver::default());
+        let (placement, sweep) = paper_sweep(-20.0, 80);
         let (mut expected, mut found) = (Vec::new(), Vec::new());
         let mut followed = 0;
         for (side, sign, k) in [(&placement.left, 1.0, 0), (&placement.right, -1.0, 1)] {

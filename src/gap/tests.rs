@@ -4,7 +4,8 @@ use super::scan::{POSE_BOX_DELTA_MM, POSE_BOX_SIN, SCAN_BLOCK};
 use super::*;
 use crate::scene::Scene;
 
-fn placement() -> crate::track::Placement {
+/// The paper scene's placement (defaults of an empty scene file).
+pub(super) fn placement() -> crate::track::Placement {
     let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
     crate::pipeline::place(&scene).unwrap()
 }
