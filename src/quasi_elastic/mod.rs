@@ -451,16 +451,19 @@ fn include_rigid_point(regions: &mut Vec<(f64, f64)>, s_rigid: f64, domain: (f64
 /// Indices of the local maxima of `gaps` that rise more than `barrier` above the lowest
 /// gap on each side up to the neighbouring maxima (interior indices only).
 fn barrier_maxima(gaps: &[f64], barrier: f64) -> Vec<usize> {
-    // Most regions have no interior local maximum at all: their gap falls strictly, then
-    // never falls again (a maximum `i` would need gaps[i - 1] <= gaps[i] > gaps[i + 1]).
-    let falls_then_rises = gaps
-        .windows(2)
-        .skip_while(|w| w[1] < w[0])
-        .all(|w| w[1] >= w[0]);
-    if falls_then_rises {
+    // Most regions have no interior local maximum at all.
+    if falls_then_rises(gaps) {
         return Vec::new();
     }
     barrier_scan(gaps, barrier)
+}
+
+/// Whether `gaps` falls strictly, then never falls again: no interior local maximum (one
+/// at `i` would need `gaps[i - 1] <= gaps[i] > gaps[i + 1]`).
+fn falls_then_rises(gaps: &[f64]) -> bool {
+    gaps.windows(2)
+        .skip_while(|w| w[1] < w[0])
+        .all(|w| w[1] >= w[0])
 }
 
 /// [`barrier_maxima`] by a scan of every local maximum.
@@ -605,11 +608,7 @@ mod tests {
             }
             let scan = barrier_scan(&gaps, 0.5);
             assert_eq!(barrier_maxima(&gaps, 0.5), scan, "gaps {gaps:?}");
-            let falls_then_rises = gaps
-                .windows(2)
-                .skip_while(|w| w[1] < w[0])
-                .all(|w| w[1] >= w[0]);
-            shortcut += usize::from(falls_then_rises);
+            shortcut += usize::from(falls_then_rises(&gaps));
             with_barriers += usize::from(!scan.is_empty());
         }
         assert!(
