@@ -16,9 +16,6 @@ pub(super) struct Scratch {
     pub(super) minima: [Vec<GapPoint>; 2],
     /// Whether `basins` holds the basins of a previous solution.
     pub(super) warm: bool,
-    /// Per side, `(s, s_next)`: the basin centred on the previous contact point `s` starts
-    /// the next position at the predicted `s_next` (continuation).
-    pub(super) moved: [Option<(f64, f64)>; 2],
 }
 
 /// The lowest minimum of one side over its basins, and a second one within the two-point
@@ -78,11 +75,16 @@ pub(super) fn side_minimum(
 }
 
 impl Scratch {
-    /// Moves the warm basin centred on each side's previous contact point to where the
-    /// contact point is predicted (see [`Scratch::moved`]); the others stay.
-    pub(super) fn move_contact_basins(&mut self, same_minimum_mm: f64) {
-        for (basins, moved) in self.basins.iter_mut().zip(&mut self.moved) {
-            let Some((from, to)) = moved.take() else {
+    /// Moves the warm basin centred on each side's previous contact point `s` to the
+    /// predicted contact point `s_next`, `moved = [(s, s_next)]` per side (continuation); the
+    /// others stay.
+    pub(super) fn move_contact_basins(
+        &mut self,
+        moved: [Option<(f64, f64)>; 2],
+        same_minimum_mm: f64,
+    ) {
+        for (basins, moved) in self.basins.iter_mut().zip(moved) {
+            let Some((from, to)) = moved else {
                 continue;
             };
             if let Some(b) = basins

@@ -398,7 +398,13 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         indices
             .map(|i| {
                 let y = sweep_mm[i];
-                scratch.moved = path.moved_contacts(y);
+                // The default solver follows warm basins: each contact's starts where the
+                // continuation predicts the contact point.
+                if let Solver::Default(settings) = &solver
+                    && scratch.warm
+                {
+                    scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
+                }
                 let p = solve(y, path.predict(y), &mut scratch);
                 path.push(&p);
                 p

@@ -92,8 +92,8 @@ struct Iteration {
 
 /// Newton on the roll with the exact derivative of `F = m_L - m_R`, safeguarded by a
 /// bracket. The minima are followed in the basins of the previous solution (or of a scan
-/// at `theta0` when there are none), each contact's basin moved to where the continuation
-/// predicts its contact point ([`Scratch::moved`]); a root is accepted only when a scan at that very pose
+/// at `theta0` when there are none; the search moves each contact's basin to where the
+/// continuation predicts its contact point); a root is accepted only when a scan at that very pose
 /// found the basins it was computed from (the global check), otherwise the scan is made
 /// there and the iteration goes on with its basins.
 pub(super) fn solve_default(
@@ -103,10 +103,6 @@ pub(super) fn solve_default(
     theta0: f64,
     scratch: &mut Scratch,
 ) -> Position {
-    if scratch.warm {
-        scratch.move_contact_basins(settings.same_minimum_mm);
-    }
-    scratch.moved = [None, None];
     let mut it = Iteration {
         y_ws,
         theta: theta0,
