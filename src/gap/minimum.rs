@@ -87,7 +87,13 @@ impl SideGap<'_> {
         best
     }
 
-    fn newton_in(&self, mut lo: f64, mut hi: f64, s0: f64, pose: &SidePose) -> Option<GapPoint> {
+    pub(super) fn newton_in(
+        &self,
+        mut lo: f64,
+        mut hi: f64,
+        s0: f64,
+        pose: &SidePose,
+    ) -> Option<GapPoint> {
         // The bracket ends are evaluated only when needed: to start off the rail, to know
         // which side of the rail a step left, or as candidates when the iteration did not
         // end at a smooth interior minimum.

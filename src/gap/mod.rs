@@ -11,7 +11,11 @@
 //! the pose and the gap at a wheel point (here), the coarse scans for basins (`scan.rs`) and
 //! low regions (`low.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
 //! profiles (`tabulated.rs`); and the [`ContactPoint`] both searches report (`contact.rs`).
+//! The rigid search's minimum is certified global at the solution (`certify.rs`, on the
+//! bounds of `bound.rs`): no point of the gap lies lower by more than a stated tolerance.
 
+mod bound;
+mod certify;
 mod contact;
 mod low;
 mod minimum;
@@ -24,8 +28,10 @@ use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
 use scan::SCAN_BLOCK;
 use tabulated::Tables;
 
+pub use bound::CERTIFY_TOL_MM;
+pub use certify::Certificate;
 pub use contact::ContactPoint;
-pub(crate) use scan::PoseBox;
+pub(crate) use scan::{PoseBox, Scanned};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
 /// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].
@@ -120,6 +126,11 @@ pub struct SideGap<'a> {
     coarse: Vec<[f64; 3]>,
     /// Per block of [`SCAN_BLOCK`] coarse samples: `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]`.
     blocks: Vec<[f64; 4]>,
+    /// Per block of [`SCAN_BLOCK`] coarse cells (from its first sample up to the next
+    /// block's first): the same ranges over the whole wheel between, from the
+    /// [`PlacedWheel::cells`] bounds, so that a bound from them holds for every point of the
+    /// wheel there (the scan for basins and the certificate read them).
+    cert_blocks: Vec<[f64; 4]>,
     tabulated: Option<Tables>,
     /// The wheel profile's domain: beyond it the profile is clamped, and a point there
     /// would be a phantom of the wheel's end displaced sideways.
@@ -131,6 +142,22 @@ pub struct SideGap<'a> {
     rail_break_ys: Vec<f64>,
     /// The wheel profile's breaks and the ends of its domain, increasing.
     wheel_breaks: Vec<f64>,
+}
+
+/// `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of the wheel over the cells `b B..(b + 1) B` of the coarse
+/// grid (`B` = [`SCAN_BLOCK`]; the last block's one cell where it holds the last sample
+/// alone), for each of the `count` blocks.
+fn certified_blocks(wheel: &PlacedWheel, coarse: &[[f64; 3]], count: usize) -> Vec<[f64; 4]> {
+    let n = coarse.len() - 1;
+    let cells = wheel.cells(n);
+    (0..count)
+        .map(|b| {
+            let i = (b * SCAN_BLOCK).min(n - 1);
+            let j = ((b + 1) * SCAN_BLOCK).min(n);
+            let z = cells.over(i, j).z;
+            [coarse[i][1], coarse[j][1], z.0, z.1]
+        })
+        .collect()
 }
 
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
@@ -147,7 +174,7 @@ impl<'a> SideGap<'a> {
                 [s, p.y, p.z]
             })
             .collect();
-        let blocks = coarse
+        let blocks: Vec<[f64; 4]> = coarse
             .chunks(SCAN_BLOCK)
             .map(|c| {
                 let (z_lo, z_hi) = c
@@ -158,12 +185,14 @@ impl<'a> SideGap<'a> {
                 [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
             })
             .collect();
+        let cert_blocks = certified_blocks(&pair.wheel, &coarse, blocks.len());
         SideGap {
             pair,
             rail: pair.rail(),
             sign,
             coarse,
             blocks,
+            cert_blocks,
             tabulated: None,
             domain: (lo, hi),
             joints: pair.wheel.profile().joints(),

@@ -9,6 +9,15 @@
 //! that the scans find exactly what a full scan finds. A scan reads block bounds made once
 //! for a box of poses about it ([`PoseBox`]) and bounds at its own pose only the blocks those
 //! leave, which changes the work, not the basins.
+//!
+//! The scan for basins bounds its blocks rigorously: the wheel over the block's cells (not
+//! only its samples, [`crate::track::PlacedWheel`] cell bounds) against the highest the
+//! exact rail can be under the lateral span they cover, widened by a step of the height
+//! table (so that the bound lies below the table's samples too, which interpolate exact
+//! heights at most a step away). A block it skips is then a block whose every point lies
+//! above the lowest sample plus [`COARSE_MARGIN_MM`], which the certificate of the global
+//! minimum at the same pose (`certify.rs`) reads together with the samples the scan
+//! evaluated ([`Scanned`]).
 
 use super::{Basin, COARSE_MARGIN_MM, SideGap, SidePose};
 
@@ -48,6 +57,15 @@ pub(crate) struct PoseBox {
     centre: Option<(f64, f64)>,
     /// Per block, the lower bound of `g - (s Yc + c Zc)` over the box.
     pub(super) bounds: Vec<f64>,
+    /// Per block, the same for every point of its cells against the exact rail (the
+    /// certificate's, `certify.rs`).
+    pub(super) certified: Vec<f64>,
+    /// Per block, the lateral span its cells can cover in the box.
+    pub(super) spans: Vec<[f64; 2]>,
+    /// Per block, the certificate's cushion over the box (`certify.rs`), NaN until asked.
+    pub(super) cushions: Vec<f64>,
+    /// The ranges of `cos phi` and `sin phi` over the box.
+    pub(super) trig: [(f64, f64); 2],
 }
 
 impl PoseBox {
@@ -69,6 +87,44 @@ fn product(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
         p.iter().fold(f64::INFINITY, |m, &v| m.min(v)),
         p.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v)),
     )
+}
+
+/// What a scan for basins saw at its pose, for the certificate of the global minimum there
+/// (`certify.rs`): which blocks it evaluated, their samples' coarse gaps, the lowest of them.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Scanned {
+    /// The pose scanned, `None` before the first scan.
+    pub(super) pose: Option<SidePose>,
+    /// The coarse samples that can lie above the rail, `first..last` ([`SideGap::over_rail`]).
+    pub(super) range: (usize, usize),
+    /// Per coarse sample, its coarse gap where its block was evaluated (stale elsewhere).
+    pub(super) gaps: Vec<f64>,
+    /// Per block, the scan (counted in `generation`) that last evaluated its samples: no
+    /// clearing per scan.
+    stamps: Vec<u32>,
+    /// The number of the last scan.
+    generation: u32,
+    /// Per block the scan evaluated, the lowest coarse gap of its samples.
+    pub(super) block_min: Vec<f64>,
+    /// The lowest coarse gap the scan evaluated: every skipped block lies above it plus
+    /// [`COARSE_MARGIN_MM`] at every point.
+    pub(super) lowest: f64,
+    /// The certificate's per-minimum zones (a buffer reused, `certify.rs`).
+    pub(super) zones: Vec<(usize, usize)>,
+}
+
+impl Scanned {
+    /// Whether the scan evaluated the samples of block `b`.
+    #[inline]
+    pub(super) fn evaluated(&self, b: usize) -> bool {
+        self.stamps[b] == self.generation
+    }
+
+    /// Records that the samples of block `b` were evaluated.
+    #[inline]
+    pub(super) fn mark(&mut self, b: usize) {
+        self.stamps[b] = self.generation;
+    }
 }
 
 /// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
@@ -101,13 +157,34 @@ impl SideGap<'_> {
     ///
     /// `pose_box` holds block bounds for a box of poses (made here when `pose` lies outside
     /// it): blocks it shows too high are skipped without bounding them at `pose`. Which
-    /// blocks are skipped changes the work, not the basins.
-    pub(crate) fn basins(&self, pose: &SidePose, pose_box: &mut PoseBox, out: &mut Vec<Basin>) {
+    /// blocks are skipped changes the work, not the basins. `scanned` receives what the
+    /// scan saw, for the certificate at this pose.
+    pub(crate) fn basins(
+        &self,
+        pose: &SidePose,
+        pose_box: &mut PoseBox,
+        scanned: &mut Scanned,
+        out: &mut Vec<Basin>,
+    ) {
         out.clear();
         // Only wheel samples that can lie above the rail.
         let (first, last) = self.over_rail(pose);
         let coarse = &self.coarse[first..last];
         let n = coarse.len();
+        scanned.pose = Some(*pose);
+        scanned.range = (first, last);
+        scanned.lowest = f64::INFINITY;
+        if scanned.stamps.len() != self.blocks.len() {
+            scanned.gaps = vec![f64::INFINITY; self.coarse.len()];
+            scanned.block_min = vec![f64::INFINITY; self.blocks.len()];
+            scanned.stamps = vec![0; self.blocks.len()];
+        }
+        scanned.generation = scanned.generation.wrapping_add(1);
+        if scanned.generation == 0 {
+            // Wrapped: stamps of old scans could match again.
+            scanned.stamps.fill(0);
+            scanned.generation = 1;
+        }
         if n == 0 {
             return;
         }
@@ -161,12 +238,16 @@ impl SideGap<'_> {
                 here = f64::INFINITY;
                 continue;
             }
+            scanned.mark(b);
+            let mut block_min = f64::INFINITY;
             for i in samples {
                 let next = if first_block.contains(&i) {
                     first_gaps[i - first_block.start]
                 } else {
                     self.coarse_gap(i, pose)
                 };
+                scanned.gaps[i] = next;
+                block_min = block_min.min(next);
                 running = running.min(next);
                 if here <= prev && here <= next && here < f64::INFINITY {
                     lowest = lowest.min(here);
@@ -175,7 +256,9 @@ impl SideGap<'_> {
                 prev = here;
                 here = next;
             }
+            scanned.block_min[b] = block_min;
         }
+        scanned.lowest = running;
         // The last sample has no right neighbour.
         if here <= prev && here < f64::INFINITY {
             lowest = lowest.min(here);
@@ -232,6 +315,22 @@ impl SideGap<'_> {
             .map_or(f64::INFINITY, |rail| z_lo - rail)
     }
 
+    /// A lower bound of the gap of the whole wheel over the cells of block `b` (its
+    /// samples and the next block's first, and every point between) at `pose` against the
+    /// exact rail, `+inf` where none of it can be above the rail: the lowest the wheel can
+    /// be there against the highest the rail is under the lateral span it covers
+    /// ([`PlacedRail::binned_max_height`](crate::track::PlacedRail)) widened by a step of
+    /// the height table, so that it lies below the coarse gap of each sample too.
+    #[inline]
+    pub(super) fn certified_block_bound(&self, b: usize, pose: &SidePose) -> f64 {
+        let [yw_lo, yw_hi, zw_lo, zw_hi] = self.cert_blocks[b];
+        let [y_lo, y_hi, z_lo] = super::bound::span(pose, (yw_lo, yw_hi), (zw_lo, zw_hi));
+        let w = crate::track::HEIGHT_TABLE_STEP_MM;
+        self.rail
+            .binned_max_height(y_lo - w, y_hi + w)
+            .map_or(f64::INFINITY, |rail| z_lo - rail)
+    }
+
     /// The wheel point `(Yc, Zc)` whose motion with the roll [`PoseBox`] takes out: the
     /// middle coarse sample.
     #[inline]
@@ -240,7 +339,10 @@ impl SideGap<'_> {
         [yw, zw]
     }
 
-    /// Makes `pose_box` the box about `pose`: every block's bound over it.
+    /// Makes `pose_box` the box about `pose`: every block's bound over it, for the scan (its
+    /// samples against the height table) and for the certificate (every point of its cells
+    /// against the exact rail, as in [`SideGap::certified_block_bound`]); the certificate's
+    /// cushions of the box are computed when first asked for.
     pub(super) fn fill_pose_box(&self, pose: &SidePose, pose_box: &mut PoseBox) {
         let [yc, zc] = self.box_reference();
         let (d, sin) = (pose.delta, pose.sin);
@@ -254,22 +356,44 @@ impl SideGap<'_> {
         };
         let c = (cos(s.0).min(cos(s.1)), c_hi);
         let neg_s = (-s.1, -s.0);
+        // The lateral span over the box and the lowest height less the common motion of a
+        // block with wheel extents `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]`.
+        let extent = |[yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4]| {
+            let cy = product(c, (yw_lo, yw_hi));
+            let sz = product(neg_s, (zw_lo, zw_hi));
+            let z_lo =
+                product(s, (yw_lo - yc, yw_hi - yc)).0 + product(c, (zw_lo - zc, zw_hi - zc)).0;
+            [
+                d - POSE_BOX_DELTA_MM + cy.0 + sz.0,
+                d + POSE_BOX_DELTA_MM + cy.1 + sz.1,
+                z_lo,
+            ]
+        };
         let heights = self.rail.heights();
         pose_box.centre = Some((d, sin));
+        pose_box.trig = [c, s];
         pose_box.bounds.clear();
-        pose_box
-            .bounds
-            .extend(self.blocks.iter().map(|&[yw_lo, yw_hi, zw_lo, zw_hi]| {
-                let cy = product(c, (yw_lo, yw_hi));
-                let sz = product(neg_s, (zw_lo, zw_hi));
-                let y_lo = d - POSE_BOX_DELTA_MM + cy.0 + sz.0;
-                let y_hi = d + POSE_BOX_DELTA_MM + cy.1 + sz.1;
-                let z_lo =
-                    product(s, (yw_lo - yc, yw_hi - yc)).0 + product(c, (zw_lo - zc, zw_hi - zc)).0;
-                heights
-                    .max_over(y_lo, y_hi)
-                    .map_or(f64::INFINITY, |rail| z_lo - rail)
-            }));
+        pose_box.bounds.extend(self.blocks.iter().map(|&block| {
+            let [y_lo, y_hi, z_lo] = extent(block);
+            heights
+                .max_over(y_lo, y_hi)
+                .map_or(f64::INFINITY, |rail| z_lo - rail)
+        }));
+        // As in `certified_block_bound`: a step of the height table wider.
+        let w = crate::track::HEIGHT_TABLE_STEP_MM;
+        pose_box.certified.clear();
+        pose_box.spans.clear();
+        for &block in &self.cert_blocks {
+            let [y_lo, y_hi, z_lo] = extent(block);
+            pose_box.spans.push([y_lo, y_hi]);
+            pose_box.certified.push(
+                self.rail
+                    .binned_max_height(y_lo - w, y_hi + w)
+                    .map_or(f64::INFINITY, |rail| z_lo - rail),
+            );
+        }
+        pose_box.cushions.clear();
+        pose_box.cushions.resize(self.cert_blocks.len(), f64::NAN);
     }
 
     /// The index range of the coarse samples that can lie above the rail at `pose`:

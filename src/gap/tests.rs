@@ -61,8 +61,13 @@ fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
         };
         // Basins: brackets around the sampled local minima within the margin.
         carried_held += usize::from(carried.holds(&pose));
-        side.basins(&pose, &mut carried, &mut basins);
-        side.basins(&pose, &mut PoseBox::default(), &mut fresh_basins);
+        side.basins(&pose, &mut carried, &mut Scanned::default(), &mut basins);
+        side.basins(
+            &pose,
+            &mut PoseBox::default(),
+            &mut Scanned::default(),
+            &mut fresh_basins,
+        );
         assert_eq!(basins, fresh_basins, "carried and fresh box at {pose:?}");
         let mut expected: Vec<(f64, Basin)> = Vec::new();
         for (k, &(i, g)) in gaps.iter().enumerate() {

@@ -13,6 +13,7 @@
 //! [`Profile::convex_curvature`] is positive where the surface bulges towards the other body
 //! (wheel flange tip, rail crown).
 
+pub mod bounds;
 pub mod read;
 pub mod s1002;
 pub mod spline;

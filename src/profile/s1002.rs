@@ -10,6 +10,8 @@
 //! `s = -35`; its curvature jumps at every section joint. Both are kept as defined, not
 //! smoothed: a user should see them.
 
+use super::bounds::{DerivativeBounds, arc_bounds, polynomial_bounds};
+
 /// Lowest profile coordinate of the definition (back face of the flange), mm.
 pub const S_MIN: f64 = -70.0;
 /// Highest profile coordinate of the definition (field-side end of the outer slope), mm.
@@ -97,6 +99,44 @@ pub fn eval(s: f64) -> [f64; 3] {
     } else {
         convex_arc(ARC_H, s)
     }
+}
+
+/// Bounds of `F'` and `F''` over `[lo, hi]` (inside the domain): each section on its part
+/// of the interval, from its own formula (both one-sided limits at a joint).
+pub(super) fn derivative_bounds(lo: f64, hi: f64) -> DerivativeBounds {
+    // Sections from the flange back to the field side: `(start, end)` and their bounds.
+    let j = JOINTS;
+    let concave = |s: f64| {
+        let u = s + CD;
+        let root = (BD * BD - u * u).max(0.0).sqrt();
+        [AD - root, u / root, BD * BD / (root * root * root)]
+    };
+    let line = |slope: f64| DerivativeBounds {
+        d1: (slope, slope),
+        d2: (0.0, 0.0),
+    };
+    let mut b = DerivativeBounds::EMPTY;
+    let mut part = |start: f64, end: f64, f: &dyn Fn(f64, f64) -> DerivativeBounds| {
+        let (a, c) = (lo.max(start), hi.min(end));
+        if a <= c {
+            b = b.union(f(a, c));
+        }
+    };
+    part(S_MIN, j[6], &|a, c| {
+        arc_bounds(|s| convex_arc(ARC_H, s), -ARC_H.2, a, c)
+    });
+    part(j[6], j[5], &|a, c| {
+        arc_bounds(|s| convex_arc(ARC_G, s), -ARC_G.2, a, c)
+    });
+    part(j[5], j[4], &|a, c| {
+        arc_bounds(|s| convex_arc(ARC_F, s), -ARC_F.2, a, c)
+    });
+    part(j[4], j[3], &|_, _| line(-BE));
+    part(j[3], j[2], &|a, c| arc_bounds(concave, -CD, a, c));
+    part(j[2], j[1], &|a, c| polynomial_bounds(&C_POLY, a, c));
+    part(j[1], j[0], &|a, c| polynomial_bounds(&B_POLY, a, c));
+    part(j[0], S_MAX, &|_, _| line(-BA));
+    b
 }
 
 /// Value, first and second derivative of `sum c[k] s^k` by Horner's scheme.

@@ -13,6 +13,8 @@
 /// fillets begin about here on the 60E1 drawing.
 pub const FLANK_DEPTH_MM: f64 = 37.5;
 
+use super::bounds::{DerivativeBounds, arc_bounds};
+
 const R_CROWN: f64 = 300.0;
 const R_SHOULDER: f64 = 80.0;
 const R_CORNER: f64 = 13.0;
@@ -90,6 +92,47 @@ fn depth_of_half(u: f64) -> [f64; 3] {
         let slope = 1.0 / FLANK_OUTWARD_PER_DEPTH;
         [d3 + (u - y3) * slope, slope, 0.0]
     }
+}
+
+/// Bounds of `dz/dy` and `d2z/dy2` over `[lo, hi]` (inside the domain): each arc and the
+/// flank on its part of each half of the head, from its own formula (both one-sided limits
+/// at a joint).
+pub(super) fn derivative_bounds(lo: f64, hi: f64) -> DerivativeBounds {
+    let (y3, d3) = corner_flank_joint();
+    let w = half_width();
+    let slope = 1.0 / FLANK_OUTWARD_PER_DEPTH;
+    // Sections of the half head in u = |y|: depth formula and the u of its vertex.
+    type Section = (f64, f64, (f64, f64), f64);
+    let arcs: [Section; 3] = [
+        (0.0, Y_CROWN_END, (0.0, R_CROWN), R_CROWN),
+        (Y_CROWN_END, Y_SHOULDER_END, C_SHOULDER, R_SHOULDER),
+        (Y_SHOULDER_END, y3, C_CORNER, R_CORNER),
+    ];
+    let mut b = DerivativeBounds::EMPTY;
+    // y = sign * u: z = -depth(u), dz/dy = -sign depth', d2z/dy2 = -depth''.
+    for sign in [-1.0, 1.0] {
+        // The part of [lo, hi] on this half, in u.
+        let (u_lo, u_hi) = if sign > 0.0 {
+            (lo.max(0.0), hi)
+        } else {
+            (-hi.min(0.0), -lo)
+        };
+        if u_lo > u_hi {
+            continue;
+        }
+        let to_y = |[d, d1, d2]: [f64; 3]| [-d, -sign * d1, -d2];
+        for &(start, end, centre, r) in &arcs {
+            let (a, c) = (u_lo.max(start), u_hi.min(end));
+            if a <= c {
+                let f = |u: f64| to_y(arc_below_centre(centre, r, u));
+                b = b.union(arc_bounds(f, centre.0, a, c));
+            }
+        }
+        if u_hi >= y3 && u_lo <= w {
+            b.include(to_y([d3, slope, 0.0]));
+        }
+    }
+    b
 }
 
 /// Depth of the upper part of a circle (centre below the surface): depth = c_d - sqrt(r^2 - (u - c_y)^2).

@@ -2,7 +2,7 @@
 //! step both the default roll solver and the level wheelset take per evaluation.
 
 use super::TWO_POINT_GAP_TOL_MM;
-use crate::gap::{self, Basin, GapPoint, PoseBox, SideGap, SidePose};
+use crate::gap::{self, Basin, GapPoint, PoseBox, Scanned, SideGap, SidePose};
 
 /// Buffers reused across positions (no allocation per position). The basins of the last
 /// solution start the next position (continuation): its scan at the solution verifies them.
@@ -11,6 +11,8 @@ pub(super) struct Scratch {
     pub(super) basins: [Vec<Basin>; 2],
     /// Per side, the block bounds of the scans over a box of poses about the last ones.
     pub(super) boxes: [PoseBox; 2],
+    /// Per side, what the last scan for basins saw at its pose, for the certificate there.
+    pub(super) scanned: [Scanned; 2],
     /// The minima found in `basins` at the current pose, reused after a verification scan
     /// at that same pose for the basins that contain them.
     pub(super) minima: [Vec<GapPoint>; 2],
@@ -72,6 +74,51 @@ pub(super) fn side_minimum(
     basins.truncate(kept);
     minima.drain(..known);
     best.map(|b| (b, second.filter(|s| s.g - b.g <= TWO_POINT_GAP_TOL_MM)))
+}
+
+/// Certifies that `found` (the lowest minimum of one side at `pose` and a second one, from
+/// [`side_minimum`], whose `minima` and `basins` these are) is the global minimum of the gap
+/// ([`SideGap::certify_scanned`], with what the scan at `pose` saw); a lower point replaces
+/// it and starts a basin of its own (the old minimum becomes the second where in another
+/// basin and within the two-point tolerance). Whether a lower point was found.
+pub(super) fn certify_minimum(
+    side: &SideGap,
+    pose: &SidePose,
+    pose_box: &mut PoseBox,
+    scanned: &mut Scanned,
+    basins: &mut Vec<Basin>,
+    minima: &mut Vec<GapPoint>,
+    found: &mut (GapPoint, Option<GapPoint>),
+) -> bool {
+    let b = found.0;
+    let Some(p) = side
+        .certify_scanned(pose, b, minima, pose_box, scanned)
+        .lower
+    else {
+        return false;
+    };
+    minima.push(p);
+    basins.push((p.s - gap::COARSE_STEP_MM, p.s + gap::COARSE_STEP_MM));
+    let second = if (p.s - b.s).abs() > gap::SAME_BASIN_MM {
+        Some(b)
+    } else {
+        found.1
+    };
+    *found = (p, second.filter(|s| s.g - p.g <= TWO_POINT_GAP_TOL_MM));
+    true
+}
+
+/// After a scan at the pose where `minima` were found (in basins followed from elsewhere):
+/// keeps a basin about the lowest of them where the scan's `basins` miss it (a lower point
+/// the certificate found inside one bracket of a scan), so that the evaluation after the
+/// scan sees the same lowest gap.
+pub(super) fn keep_lowest_known(basins: &mut Vec<Basin>, minima: &[GapPoint]) {
+    let Some(low) = minima.iter().min_by(|p, q| p.g.total_cmp(&q.g)) else {
+        return;
+    };
+    if !basins.iter().any(|b| (b.0..=b.1).contains(&low.s)) {
+        basins.push((low.s - gap::COARSE_STEP_MM, low.s + gap::COARSE_STEP_MM));
+    }
 }
 
 impl Scratch {

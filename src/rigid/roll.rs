@@ -5,7 +5,7 @@
 //! roll, [`Iteration::check`] (the termination check) says whether and why to stop,
 //! [`Iteration::step`] moves the roll; the [`Bracket`] is their shared safeguard.
 
-use super::minima::{Scratch, side_minimum};
+use super::minima::{Scratch, certify_minimum, keep_lowest_known, side_minimum};
 use super::{Position, RollSettings, Stop, finish, no_contact};
 use crate::gap::{GapPoint, SideGap, SidePose};
 
@@ -117,7 +117,7 @@ pub(super) fn solve_default(
     };
     loop {
         it.iterations += 1;
-        let Some(e) = it.evaluate(sides, settings, scratch) else {
+        let Some(mut e) = it.evaluate(sides, settings, scratch) else {
             if it.recover_contact() {
                 continue;
             }
@@ -125,7 +125,16 @@ pub(super) fn solve_default(
             return no_contact(y_ws, it.theta, it.iterations);
         };
         it.observe(&e, settings);
-        match it.check(&e, settings) {
+        let mut verdict = it.check(&e, settings);
+        // The minima a root is accepted on are certified global (`gap::certify`); a lower
+        // point found changes `F` and the verdict. Only fresh evaluations stop: on followed
+        // basins a root is verified by a scan first, and the scan is what the certificate
+        // reads.
+        if matches!(verdict, Verdict::Stop(_)) && it.fresh && certify(sides, &mut e, scratch) {
+            it.observe(&e, settings);
+            verdict = it.check(&e, settings);
+        }
+        match verdict {
             Verdict::Stop(stop) => {
                 scratch.warm = stop == Stop::Converged;
                 let mut pos = finish(sides, y_ws, it.theta, e.mins, it.iterations, e.f);
@@ -142,6 +151,22 @@ pub(super) fn solve_default(
             Verdict::Step => it.step(&e),
         }
     }
+}
+
+/// Certifies the minima of both wheels in `e` ([`certify_minimum`]); whether a lower point
+/// was found (`e` then holds it and its `F`).
+fn certify(sides: &[SideGap; 2], e: &mut Evaluation, scratch: &mut Scratch) -> bool {
+    let mut lower = false;
+    for (k, side) in sides.iter().enumerate() {
+        let (basins, minima) = (&mut scratch.basins[k], &mut scratch.minima[k]);
+        let (pose_box, scanned) = (&mut scratch.boxes[k], &mut scratch.scanned[k]);
+        let found = &mut e.mins[k];
+        lower |= certify_minimum(side, &e.poses[k], pose_box, scanned, basins, minima, found);
+    }
+    if lower {
+        e.f = e.mins[0].0.g - e.mins[1].0.g;
+    }
+    lower
 }
 
 impl Iteration {
@@ -168,7 +193,12 @@ impl Iteration {
         self.fresh = self.scan;
         if self.scan {
             for k in 0..2 {
-                sides[k].basins(&poses[k], &mut scratch.boxes[k], &mut scratch.basins[k]);
+                let (boxes, scanned) = (&mut scratch.boxes[k], &mut scratch.scanned[k]);
+                sides[k].basins(&poses[k], boxes, scanned, &mut scratch.basins[k]);
+                if self.verify {
+                    // A lower minimum the certificate found at this pose stays.
+                    keep_lowest_known(&mut scratch.basins[k], &scratch.minima[k]);
+                }
             }
             self.scan = false;
             self.scanned_theta = self.theta;

@@ -27,10 +27,12 @@ pub use layout::{
     INCLINATION_RANGE_RAD, Inclination, LayoutError, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
     TAPING_LINE_FROM_INNER_FACE_MM, TrackLayout,
 };
+pub(crate) use rail::SurfaceBounds;
 pub use rail::{
     MAX_RAIL_SLOPE, PlacedRail, RailPoint, SURFACE_TABLE_MAX_SLOPE, SURFACE_TABLE_STEP_MM,
 };
 pub use wheel::{NOMINAL_RADIUS_RANGE_MM, PlacedWheel, WheelPoint, check_nominal_radius};
+pub(crate) use wheel::{WheelCell, WheelCells};
 
 /// Why a rail could not be placed.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,7 +1,9 @@
 //! A wheel fixed to the wheelset, in its side frame.
 
 use super::{PlacementError, TrackLayout, convex_from_second_derivative};
+use crate::profile::bounds::DerivativeBounds;
 use crate::profile::{Profile, ProfileKind};
+use std::sync::OnceLock;
 
 /// A wheel fixed to the wheelset, in the side frame relative to the wheelset centre.
 #[derive(Debug, Clone)]
@@ -9,6 +11,74 @@ pub struct PlacedWheel {
     profile: Profile,
     taping_line_mm: f64,
     nominal_radius_mm: f64,
+    /// [`PlacedWheel::cells`] of the first grid asked for, built on first use.
+    cells: OnceLock<WheelCells>,
+    /// The largest value jump of the profile at a section joint (mm).
+    value_jump_mm: f64,
+}
+
+/// Bounds of a placed wheel over one cell of a uniform grid of its profile coordinate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct WheelCell {
+    /// Ranges of `F'` and `F''` over the cell.
+    pub(crate) d: DerivativeBounds,
+    /// Range of `Z` (mm, relative to the axle, no roll) over the cell: the ends' heights
+    /// widened by the sag `max |F''| h^2 / 8` and by the value and slope jumps at joints
+    /// inside (`|jump of F| + |jump of F'| h`).
+    pub(crate) z: (f64, f64),
+    /// The value and slope jumps at joints inside (`|jump of F| + |jump of F'| h`, mm): what
+    /// a bound from the derivatives misses across them.
+    pub(crate) jump: f64,
+}
+
+/// The [`WheelCell`]s of a uniform grid, with a sparse table of their unions: the bounds
+/// over any run of cells in two lookups (two overlapping runs count the joints of their
+/// overlap twice in `jump`: an upper bound still).
+#[derive(Debug, Clone)]
+pub(crate) struct WheelCells {
+    /// `levels[k][i]`: the union of the cells `i..i + 2^k` (`levels[0]`: the cells).
+    levels: Vec<Vec<WheelCell>>,
+}
+
+impl WheelCells {
+    fn new(cells: Vec<WheelCell>) -> WheelCells {
+        let mut levels = vec![cells];
+        let mut span = 1;
+        while 2 * span <= levels[0].len() {
+            let below = &levels[levels.len() - 1];
+            let level = (0..below.len() - span)
+                .map(|i| below[i].union(below[i + span]))
+                .collect();
+            levels.push(level);
+            span *= 2;
+        }
+        WheelCells { levels }
+    }
+
+    /// The cells, in order.
+    pub(crate) fn cells(&self) -> &[WheelCell] {
+        &self.levels[0]
+    }
+
+    /// The bounds over the cells `i..j` (`i < j`): the union of theirs.
+    #[inline]
+    pub(crate) fn over(&self, i: usize, j: usize) -> WheelCell {
+        let k = (usize::BITS - 1 - (j - i).leading_zeros()) as usize;
+        let level = &self.levels[k];
+        level[i].union(level[j - (1 << k)])
+    }
+}
+
+impl WheelCell {
+    /// The bounds over two runs of cells together.
+    #[inline]
+    fn union(self, o: WheelCell) -> WheelCell {
+        WheelCell {
+            d: self.d.union(o.d),
+            z: (self.z.0.min(o.z.0), self.z.1.max(o.z.1)),
+            jump: self.jump + o.jump,
+        }
+    }
 }
 
 /// A point of a placed wheel relative to the wheelset centre (side frame, no roll).
@@ -73,9 +143,11 @@ impl PlacedWheel {
             });
         }
         Ok(PlacedWheel {
-            profile,
             taping_line_mm: layout.taping_line_mm(),
             nominal_radius_mm,
+            cells: OnceLock::new(),
+            value_jump_mm: value_jump(&profile),
+            profile,
         })
     }
 
@@ -105,4 +177,62 @@ impl PlacedWheel {
             d2: -d2,
         }
     }
+
+    /// The largest value jump of the profile at a section joint (mm; S1002: 1.2e-4 at
+    /// s = -35, 0 for a spline).
+    pub(crate) fn value_jump_mm(&self) -> f64 {
+        self.value_jump_mm
+    }
+
+    /// Bounds of the wheel over the `n` cells of the uniform grid
+    /// `s_i = lo + (hi - lo) i / n` of its domain `(lo, hi)`: built once for the first `n`
+    /// asked for, computed afresh for another.
+    pub(crate) fn cells(&self, n: usize) -> std::borrow::Cow<'_, WheelCells> {
+        let cells = self.cells.get_or_init(|| self.build_cells(n));
+        if cells.cells().len() == n {
+            std::borrow::Cow::Borrowed(cells)
+        } else {
+            std::borrow::Cow::Owned(self.build_cells(n))
+        }
+    }
+
+    /// Bounds of the wheel over `[a, b]`; `joints` are the profile's
+    /// [`joints`](Profile::joints). A joint at `a` is no jump inside (the profile is
+    /// evaluated on its field side there, as inside); one at `b` is.
+    pub(crate) fn cell(&self, a: f64, b: f64, joints: &[f64]) -> WheelCell {
+        let d = self.profile.derivative_bounds(a, b);
+        let jump: f64 = joints
+            .iter()
+            .copied()
+            .filter(|&j| a < j && j <= b)
+            .map(|j| {
+                let (p, q) = (self.profile.eval(j), self.profile.eval(j - 1e-12));
+                (p[0] - q[0]).abs() + (p[1] - q[1]).abs() * (b - a)
+            })
+            .sum();
+        let sag = d.d2_abs() * (b - a) * (b - a) / 8.0 + jump;
+        let (za, zb) = (self.at(a).z, self.at(b).z);
+        let pad = 1e-12 * za.abs().max(zb.abs());
+        WheelCell {
+            d,
+            z: (za.min(zb) - sag - pad, za.max(zb) + sag + pad),
+            jump,
+        }
+    }
+
+    fn build_cells(&self, n: usize) -> WheelCells {
+        let (lo, hi) = self.profile.domain();
+        let s = |i: usize| lo + (hi - lo) * i as f64 / n as f64;
+        let joints = self.profile.joints();
+        WheelCells::new((0..n).map(|i| self.cell(s(i), s(i + 1), &joints)).collect())
+    }
+}
+
+/// The largest value jump of `profile` at a section joint (mm).
+pub(crate) fn value_jump(profile: &Profile) -> f64 {
+    profile
+        .joints()
+        .into_iter()
+        .map(|j| (profile.eval(j)[0] - profile.eval(j - 1e-12)[0]).abs())
+        .fold(0.0, f64::max)
 }

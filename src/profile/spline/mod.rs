@@ -30,6 +30,7 @@ mod fornberg;
 pub use filter::{DEFAULT_FILTER_WAVELENGTH_MM, default_lambda, lambda_for_wavelength};
 pub use fornberg::fornberg_weights;
 
+use super::bounds::DerivativeBounds;
 use std::fmt;
 
 /// Signed curvature (1/mm) of a graph with slope `d1` and second derivative `d2` (1/mm):
@@ -175,6 +176,33 @@ impl SmoothingSpline {
             b + t * (2.0 * c + 3.0 * t * d),
             2.0 * c + 6.0 * t * d,
         ]
+    }
+
+    /// Bounds of `f'` and `f''` over `[lo, hi]` (inside the domain): per cubic piece,
+    /// `f''` is linear (extremes at the ends) and `f'` a parabola (ends or vertex).
+    pub(crate) fn derivative_bounds(&self, lo: f64, hi: f64) -> DerivativeBounds {
+        let mut b = DerivativeBounds::EMPTY;
+        let last = self.knots.len() - 2;
+        let mut i = self.interval(lo);
+        loop {
+            let (k0, k1) = (self.knots[i], self.knots[i + 1]);
+            let [_, p1, c, d] = self.coeffs[i];
+            let (t0, t1) = (lo.max(k0) - k0, hi.min(k1) - k0);
+            let at = |t: f64| [0.0, p1 + t * (2.0 * c + 3.0 * t * d), 2.0 * c + 6.0 * t * d];
+            b.include(at(t0));
+            b.include(at(t1));
+            if d != 0.0 {
+                let vertex = -c / (3.0 * d);
+                if t0 < vertex && vertex < t1 {
+                    b.include(at(vertex));
+                }
+            }
+            if i >= last || k1 >= hi {
+                break;
+            }
+            i += 1;
+        }
+        b
     }
 
     /// The knots: the x values the spline was fitted to (mm).

@@ -21,6 +21,7 @@ use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
 
 mod surface;
 
+pub(crate) use surface::SurfaceBounds;
 pub use surface::{SURFACE_TABLE_MAX_SLOPE, SURFACE_TABLE_STEP_MM};
 use surface::{Split, SurfaceTable};
 

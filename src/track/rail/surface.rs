@@ -2,6 +2,8 @@
 //! module's docs for what is tabulated and what falls back to the inversion).
 
 use super::{PlacedRail, RailPoint};
+use crate::profile::bounds::BOUND_PAD;
+use std::sync::OnceLock;
 
 /// Step of the piecewise-quintic table of the placed rail surface (mm). Each piece is the
 /// quintic Hermite interpolant of the exact `Z`, `Z'`, `Z''` at its ends. Against the exact
@@ -38,6 +40,62 @@ pub(super) struct SurfaceTable {
     y0: f64,
     inv_step: f64,
     pieces: Vec<[f64; 6]>,
+    /// Bounds of the surface per [`SURFACE_BIN_MM`], built on first use (by the certificate
+    /// of the gap's global minimum, not by the placement).
+    bins: OnceLock<Bins>,
+    /// The profile's section joints (its own coordinate), for the bounds.
+    joints: Vec<f64>,
+    /// The largest value jump of the profile at a joint (mm).
+    value_jump: f64,
+}
+
+/// The bounds of the surface per [`SURFACE_BIN_MM`] bin in a sparse table (`levels[k][i]`:
+/// the union over bins `i..i + 2^k`, `levels[0]` the bins), for the bounds over any run of
+/// bins in two lookups. Two overlapping runs count the joints of their overlap twice in
+/// `jump`: an upper bound still.
+#[derive(Debug, Clone, Default)]
+struct Bins {
+    levels: Vec<Vec<SurfaceBounds>>,
+}
+
+/// Width of the bins of [`PlacedRail::binned_bounds`] (mm): the coarse step of the wheel,
+/// so that a coarse cell of the gap covers one or two bins.
+pub(crate) const SURFACE_BIN_MM: f64 = 0.25;
+
+/// Bounds of the placed rail surface `Z(Y)` over an interval of `Y`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct SurfaceBounds {
+    /// Range of `dZ/dY`.
+    pub slope: (f64, f64),
+    /// Range of `d2Z/dY2` (1/mm).
+    pub d2: (f64, f64),
+    /// An upper bound of `Z` (mm).
+    pub z_max: f64,
+    /// What the section joints inside add to the deviation of `Z` from a curve with the
+    /// bounds above (mm): per joint its value jump plus its slope jump times the interval's
+    /// width (UIC60: 2.6e-7 mm and 3e-8 at the crown/shoulder joints, from the drawing's
+    /// rounded arc centres).
+    pub jump: f64,
+}
+
+impl SurfaceBounds {
+    /// No bound at all.
+    pub(crate) const UNBOUNDED: SurfaceBounds = SurfaceBounds {
+        slope: (f64::NEG_INFINITY, f64::INFINITY),
+        d2: (f64::NEG_INFINITY, f64::INFINITY),
+        z_max: f64::INFINITY,
+        jump: f64::INFINITY,
+    };
+
+    /// The union of two bounds (of adjacent intervals).
+    pub(crate) fn union(self, o: SurfaceBounds) -> SurfaceBounds {
+        SurfaceBounds {
+            slope: (self.slope.0.min(o.slope.0), self.slope.1.max(o.slope.1)),
+            d2: (self.d2.0.min(o.d2.0), self.d2.1.max(o.d2.1)),
+            z_max: self.z_max.max(o.z_max),
+            jump: self.jump + o.jump,
+        }
+    }
 }
 
 /// A table piece split at a spline knot: `t_knot` in `(0, 1)`, the quintic of `[0, t_knot]`
@@ -218,7 +276,160 @@ impl PlacedRail {
             y0: y_lo,
             inv_step: 1.0 / h,
             pieces,
+            bins: OnceLock::new(),
+            joints: self.profile.joints(),
+            value_jump: crate::track::wheel::value_jump(&self.profile),
         };
         self.splits = splits;
+    }
+}
+
+impl PlacedRail {
+    /// Rigorous bounds of the exact surface over `[y_lo, y_hi]` clipped to
+    /// [`PlacedRail::y_range`], `None` where that is empty: the profile coordinates of the
+    /// ends by inversion, the profile's [`derivative_bounds`](crate::profile::Profile::derivative_bounds)
+    /// between them, rotated. With the tangent `(ty, tz) = (cos - sin v', sin + cos v')`,
+    /// `dZ/dY = tz / ty` increases with `v'`, and `d2Z/dY2 = v'' / ty^3`; `Z` lies below
+    /// both lines through the end heights with the extreme slopes.
+    pub(crate) fn surface_bounds(&self, y_lo: f64, y_hi: f64) -> Option<SurfaceBounds> {
+        let (lo, hi) = self.y_range;
+        let (y_lo, y_hi) = (y_lo.max(lo), y_hi.min(hi));
+        // Also rejects NaN.
+        if y_lo
+            .partial_cmp(&y_hi)
+            .is_none_or(|o| o == std::cmp::Ordering::Greater)
+        {
+            return None;
+        }
+        let (u_lo, a) = self.invert(y_lo, self.guess(y_lo));
+        let (u_hi, b) = self.invert(y_hi, self.guess(y_hi));
+        let d = self
+            .profile
+            .derivative_bounds(u_lo.min(u_hi), u_lo.max(u_hi));
+        let (cos, sin) = self.cos_sin();
+        let ty = |d1: f64| cos - sin * d1;
+        let (ty_a, ty_b) = (ty(d.d1.0), ty(d.d1.1));
+        let (ty_min, ty_max) = (ty_a.min(ty_b), ty_a.max(ty_b));
+        let unbounded = (f64::NEG_INFINITY, f64::INFINITY);
+        let (slope, d2) = if ty_min > 0.0 {
+            let z1 = |d1: f64| (sin + cos * d1) / ty(d1);
+            let over = |v: f64| {
+                [
+                    v / (ty_min * ty_min * ty_min),
+                    v / (ty_max * ty_max * ty_max),
+                ]
+            };
+            let [p, q] = over(d.d2.0);
+            let [r, t] = over(d.d2.1);
+            let pad = |(lo, hi): (f64, f64)| {
+                let w = BOUND_PAD * lo.abs().max(hi.abs());
+                (lo - w, hi + w)
+            };
+            (
+                pad((z1(d.d1.0), z1(d.d1.1))),
+                pad((p.min(q).min(r).min(t), p.max(q).max(r).max(t))),
+            )
+        } else {
+            (unbounded, unbounded)
+        };
+        // Z <= z_a + s1 (y - y_lo) and Z <= z_b - s0 (y_hi - y): the lower of the two lines.
+        let w = y_hi - y_lo;
+        let (s0, s1) = slope;
+        let z_max = if s1 <= 0.0 {
+            a.z
+        } else if s0 >= 0.0 {
+            b.z
+        } else {
+            let t = ((b.z - a.z - s0 * w) / (s1 - s0)).clamp(0.0, w);
+            a.z + s1 * t
+        };
+        let jump = self
+            .surface_table
+            .joints
+            .iter()
+            .copied()
+            .filter(|&u| (u_lo..=u_hi).contains(&u))
+            .map(|u| {
+                let (p, q) = (self.profile.eval(u), self.profile.eval(u - 1e-12));
+                // dZ/dY changes by dv' / ty^2 for a change dv' of the profile's slope.
+                (p[0] - q[0]).abs() + (p[1] - q[1]).abs() / (ty_min * ty_min).max(1e-300) * w
+            })
+            .sum::<f64>();
+        Some(SurfaceBounds {
+            slope,
+            d2,
+            z_max: z_max + jump + BOUND_PAD * z_max.abs().max(1.0),
+            jump,
+        })
+    }
+
+    /// The largest value jump of the rail profile at a section joint (mm; UIC60: 2.6e-7, 0
+    /// for a spline).
+    pub(crate) fn value_jump_mm(&self) -> f64 {
+        self.surface_table.value_jump
+    }
+
+    /// Bounds of the surface over `[y_lo, y_hi]` (clipped as in
+    /// [`PlacedRail::surface_bounds`]), the union of those of the [`SURFACE_BIN_MM`] bins it
+    /// overlaps (its `jump` may count a joint twice): looser, and cheap after the first call.
+    pub(crate) fn binned_bounds(&self, y_lo: f64, y_hi: f64) -> Option<SurfaceBounds> {
+        let (level, i, j) = self.bins_over(y_lo, y_hi)?;
+        Some(level[i].union(level[j]))
+    }
+
+    /// An upper bound of the surface's height over `[y_lo, y_hi]` (clipped as in
+    /// [`PlacedRail::surface_bounds`]): the `z_max` of
+    /// [`binned_bounds`](PlacedRail::binned_bounds).
+    pub(crate) fn binned_max_height(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
+        let (level, i, j) = self.bins_over(y_lo, y_hi)?;
+        Some(level[i].z_max.max(level[j].z_max))
+    }
+
+    /// The level of the sparse table and the two runs of it (their first bins `i`, `j`) that
+    /// together cover the bins overlapping `[y_lo, y_hi]` clipped to the running surface
+    /// (one more where rounding could put an end on the wrong side of a bin edge), `None`
+    /// where that is empty.
+    #[inline]
+    fn bins_over(&self, y_lo: f64, y_hi: f64) -> Option<(&[SurfaceBounds], usize, usize)> {
+        let (lo, hi) = self.y_range;
+        let bins = self.surface_table.bins.get_or_init(|| self.build_bins());
+        let (y_lo, y_hi) = (y_lo.max(lo), y_hi.min(hi));
+        // Also rejects NaN.
+        if y_lo
+            .partial_cmp(&y_hi)
+            .is_none_or(|o| o == std::cmp::Ordering::Greater)
+        {
+            return None;
+        }
+        let last = bins.levels[0].len() - 1;
+        let bin =
+            |y: f64, widen: f64| (((y - lo) / SURFACE_BIN_MM + widen).max(0.0) as usize).min(last);
+        let (i, j) = (bin(y_lo, -1e-9), bin(y_hi, 1e-9));
+        let k = (usize::BITS - 1 - (j - i + 1).leading_zeros()) as usize;
+        Some((&bins.levels[k], i, j + 1 - (1 << k)))
+    }
+
+    fn build_bins(&self) -> Bins {
+        let (lo, hi) = self.y_range;
+        let n = ((hi - lo) / SURFACE_BIN_MM).ceil().max(1.0) as usize;
+        let bounds: Vec<SurfaceBounds> = (0..n)
+            .map(|i| {
+                let a = lo + SURFACE_BIN_MM * i as f64;
+                let b = if i + 1 == n { hi } else { a + SURFACE_BIN_MM };
+                self.surface_bounds(a, b)
+                    .unwrap_or(SurfaceBounds::UNBOUNDED)
+            })
+            .collect();
+        let mut levels = vec![bounds];
+        let mut span = 1;
+        while 2 * span <= n {
+            let below = &levels[levels.len() - 1];
+            let level = (0..=n - 2 * span)
+                .map(|j| below[j].union(below[j + span]))
+                .collect();
+            levels.push(level);
+            span *= 2;
+        }
+        Bins { levels }
     }
 }
