@@ -392,7 +392,8 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         .map_or(0, |(i, _)| i);
     // The two directions are independent continuations from the centre: they run in
     // parallel (rayon; measured 1.5 times faster on 2 cores than one sequential sweep) and
-    // give the same results on any number of threads.
+    // give the same results on any number of threads, or one after the other on the
+    // calling thread where starting the pool would cost more (see PARALLEL_MIN_HALF).
     let half = |indices: &mut dyn Iterator<Item = usize>| -> Vec<Position> {
         let mut scratch = Scratch::default();
         let mut path = Continuation::new(centre.roll);
@@ -412,10 +413,15 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
             })
             .collect()
     };
-    let (forward, mut backward) = rayon::join(
-        || half(&mut (start..sweep_mm.len())),
-        || half(&mut (0..start).rev()),
-    );
+    let forward = || half(&mut (start..sweep_mm.len()));
+    let backward = || half(&mut (0..start).rev());
+    let in_pool = rayon::current_thread_index().is_some();
+    let (forward, mut backward) =
+        if in_pool || start.min(sweep_mm.len() - start) >= PARALLEL_MIN_HALF {
+            rayon::join(forward, backward)
+        } else {
+            (forward(), backward())
+        };
     backward.reverse();
     positions.extend(backward);
     positions.extend(forward);
@@ -432,6 +438,17 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         jumps,
     }
 }
+
+/// Halves of a sweep shorter than this (positions) run one after the other on a calling
+/// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
+/// and the caller woken) costs about 0.15-0.2 ms (measured on the EN 15302 scene of
+/// `benches/data`, 141 positions: 5.45 ms with the pool against 5.31 ms without, medians
+/// of 200 interleaved runs on one thread), while a position costs 4-5 µs (34 k
+/// instructions for the level wheelset of that scene, 55 k for the default solver on the
+/// paper scene): a parallel half of 100 positions, 0.4-0.5 ms, saves about twice what the
+/// pool's start costs. Inside a pool (a fleet, several scenes, the quasi-elastic pass
+/// already run) joining costs microseconds and the halves always run in parallel.
+const PARALLEL_MIN_HALF: usize = 100;
 
 fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> Position {
     Position {
