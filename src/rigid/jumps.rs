@@ -2,13 +2,17 @@
 //! interval of a jump is shrunk by the secant root of the difference of the two competing
 //! minima, with bisection as the fallback.
 
+use super::level::join_sides;
 use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, side_index};
 use crate::gap::{self, SideGap, SidePose};
 use crate::track::Side;
 
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined to
-/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, cold)` solves one position, `cold` at the first
-/// of a refinement.
+/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, cold, only)` solves one position, `cold` at the
+/// first of a refinement; `only = Some(k)` asks for wheel `k` alone, which a `separable`
+/// solver (the level wheelset, whose wheels do not interact) answers with that wheel's
+/// half of the position (see `level.rs`): the refinement of a wheel's jump solves that
+/// wheel only, and the other wheel only at the two ends of a confirmed jump.
 ///
 /// A jump is where two local minima of the gap of one wheel, `A` (the contact before) and
 /// `B` (after), exchange the role of the lowest: `h = g_A - g_B`, both followed at the
@@ -20,7 +24,8 @@ use crate::track::Side;
 pub(super) fn find_jumps(
     sides: &[SideGap; 2],
     positions: &[Position],
-    mut solve: impl FnMut(f64, f64, bool) -> Position,
+    separable: bool,
+    mut solve: impl FnMut(f64, f64, bool, Option<usize>) -> Position,
 ) -> Vec<Jump> {
     let mut jumps = Vec::new();
     for w in positions.windows(2) {
@@ -33,6 +38,9 @@ pub(super) fn find_jumps(
             }
             let k = side_index(side);
             let (mut pa, mut pb) = (w[0], w[1]);
+            // Whether an end is a refinement's half position (separable solvers).
+            let (mut a_half, mut b_half) = (false, false);
+            let only = separable.then_some(k);
             let mut cold = true;
             let contact_s = |p: &Position| p.side(side).map_or(f64::NAN, |c| c.s);
             let motion = |pa: &Position, pb: &Position| (contact_s(pa) - contact_s(pb)).abs();
@@ -74,16 +82,16 @@ pub(super) fn find_jumps(
                     // From the roll of the lower end: the refinement follows the branch the
                     // sweep came on (where two rolls balance the wheelset, as near a fold of
                     // a measured flange, a start between the ends can land on the other).
-                    let mid = solve(y, pa.roll, cold);
+                    let mid = solve(y, pa.roll, cold, only);
                     cold = false;
                     let Some(m) = mid.side(side) else {
                         lost = true;
                         break;
                     };
                     if (m.s - contact_s(&pa)).abs() >= (m.s - contact_s(&pb)).abs() {
-                        pb = mid;
+                        (pb, b_half) = (mid, separable);
                     } else {
-                        pa = mid;
+                        (pa, a_half) = (mid, separable);
                     }
                 }
                 if lost {
@@ -93,6 +101,12 @@ pub(super) fn find_jumps(
             if let (Some(ca), Some(cb)) = (pa.side(side), pb.side(side))
                 && (ca.s - cb.s).abs() > JUMP_CONFIRM_MM
             {
+                // The other wheel at the ends of a confirmed jump, for its Δr.
+                let mut whole = |p: Position, half: bool| match half {
+                    true => join_sides(&p, &solve(p.y_ws, p.roll, false, Some(1 - k)), k),
+                    false => p,
+                };
+                let (pa, pb) = (whole(pa, a_half), whole(pb, b_half));
                 jumps.push(Jump {
                     side,
                     y_from: pa.y_ws,

@@ -376,12 +376,13 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     }
     // The settings are read by reference from here: one copy per sweep.
     let mut scratch = Scratch::default();
-    let solve = |y: f64, theta0: f64, scratch: &mut Scratch| match &solver {
+    // `only = Some(k)`: wheel k alone where the wheels do not interact (no roll).
+    let solve = |y: f64, theta0: f64, scratch: &mut Scratch, only: Option<usize>| match &solver {
         Solver::Default(settings) => solve_default(&sides, settings, y, theta0, scratch),
         Solver::Paper => solve_paper(&sides, y),
-        Solver::NoRoll => solve_no_roll(&sides, y, scratch),
+        Solver::NoRoll => solve_no_roll(&sides, y, scratch, only),
     };
-    let centre = solve(0.0, 0.0, &mut scratch);
+    let centre = solve(0.0, 0.0, &mut scratch, None);
     let mut positions = Vec::with_capacity(sweep_mm.len());
     // Continue outwards from the position nearest the centre, so each start is close.
     let start = sweep_mm
@@ -391,7 +392,8 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         .map_or(0, |(i, _)| i);
     // The two directions are independent continuations from the centre: they run in
     // parallel (rayon; measured 1.5 times faster on 2 cores than one sequential sweep) and
-    // give the same results on any number of threads.
+    // give the same results on any number of threads, or one after the other on the
+    // calling thread where starting the pool would cost more (see PARALLEL_MIN_HALF).
     let half = |indices: &mut dyn Iterator<Item = usize>| -> Vec<Position> {
         let mut scratch = Scratch::default();
         let mut path = Continuation::new(centre.roll);
@@ -405,23 +407,29 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
                 {
                     scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
                 }
-                let p = solve(y, path.predict(y), &mut scratch);
+                let p = solve(y, path.predict(y), &mut scratch, None);
                 path.push(&p);
                 p
             })
             .collect()
     };
-    let (forward, mut backward) = rayon::join(
-        || half(&mut (start..sweep_mm.len())),
-        || half(&mut (0..start).rev()),
-    );
+    let forward = || half(&mut (start..sweep_mm.len()));
+    let backward = || half(&mut (0..start).rev());
+    let in_pool = rayon::current_thread_index().is_some();
+    let (forward, mut backward) =
+        if in_pool || start.min(sweep_mm.len() - start) >= PARALLEL_MIN_HALF {
+            rayon::join(forward, backward)
+        } else {
+            (forward(), backward())
+        };
     backward.reverse();
     positions.extend(backward);
     positions.extend(forward);
     // Each bisection starts cold, then continues from its previous midpoint.
-    let jumps = find_jumps(&sides, &positions, |y, theta0, cold| {
+    let separable = solver == Solver::NoRoll;
+    let jumps = find_jumps(&sides, &positions, separable, |y, theta0, cold, only| {
         scratch.warm &= !cold;
-        solve(y, theta0, &mut scratch)
+        solve(y, theta0, &mut scratch, only)
     });
     RigidSweep {
         solver,
@@ -430,6 +438,17 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
         jumps,
     }
 }
+
+/// Halves of a sweep shorter than this (positions) run one after the other on a calling
+/// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
+/// and the caller woken) costs about 0.15-0.2 ms (measured on the EN 15302 scene of
+/// `benches/data`, 141 positions: 5.45 ms with the pool against 5.31 ms without, medians
+/// of 200 interleaved runs on one thread), while a position costs 4-5 µs (34 k
+/// instructions for the level wheelset of that scene, 55 k for the default solver on the
+/// paper scene): a parallel half of 100 positions, 0.4-0.5 ms, saves about twice what the
+/// pool's start costs. Inside a pool (a fleet, several scenes, the quasi-elastic pass
+/// already run) joining costs microseconds and the halves always run in parallel.
+const PARALLEL_MIN_HALF: usize = 100;
 
 fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> Position {
     Position {
@@ -453,34 +472,34 @@ fn finish(
 ) -> Position {
     // Both minimum gaps are (nearly) equal; the axle height closes the mean of them.
     let axle_height = -0.5 * (mins[0].0.g + mins[1].0.g);
-    let contact = [0, 1].map(|k| {
-        let (m, second) = mins[k];
-        let sign = sides[k].sign;
-        let phi = sign * theta;
-        Some(SideContact {
-            s: m.s,
-            y: sign * m.y,
-            z: m.rail.z,
-            r: sides[k].wheel().nominal_radius_mm() + sides[k].wheel().profile().eval(m.s)[0],
-            gamma: m.wheel.slope.atan() + phi,
-            rail_u: sides[k]
-                .pair
-                .rail
-                .profile_coordinate(m.y)
-                .unwrap_or(f64::NAN),
-            rail_tan_gamma: m.rail.slope,
-            wheel_curvature: m.wheel.curvature(),
-            rail_curvature: m.rail.curvature(),
-            second: second.map(|q| (q.s, q.g - m.g)),
-        })
-    });
     Position {
         y_ws,
         roll: theta,
         axle_height,
-        contact,
+        contact: [0, 1].map(|k| Some(side_contact(&sides[k], theta, mins[k]))),
         iterations,
         stop: Stop::Converged,
         residual: residual.abs(),
+    }
+}
+
+/// The contact of one wheel at its minimum gap `m` (with a second minimum) at roll `theta`.
+fn side_contact(
+    side: &SideGap,
+    theta: f64,
+    (m, second): (GapPoint, Option<GapPoint>),
+) -> SideContact {
+    let phi = side.sign * theta;
+    SideContact {
+        s: m.s,
+        y: side.sign * m.y,
+        z: m.rail.z,
+        r: side.wheel().nominal_radius_mm() + side.wheel().profile().eval(m.s)[0],
+        gamma: m.wheel.slope.atan() + phi,
+        rail_u: side.pair.rail.profile_coordinate(m.y).unwrap_or(f64::NAN),
+        rail_tan_gamma: m.rail.slope,
+        wheel_curvature: m.wheel.curvature(),
+        rail_curvature: m.rail.curvature(),
+        second: second.map(|q| (q.s, q.g - m.g)),
     }
 }

@@ -37,8 +37,8 @@ impl HeightTable {
         // exactly collected vector would copy it into one twice its size.
         let mut z: Vec<f64> = Vec::with_capacity(n + 2);
         z.extend((0..=n).map(|i| {
-            rail.at((lo + i as f64 * step).min(hi))
-                .map_or(f64::NAN, |p| p.z)
+            rail.height_at((lo + i as f64 * step).min(hi))
+                .unwrap_or(f64::NAN)
         }));
         z.push(z[n]);
         // Every interpolated height between entries i and i + 1 lies below the maximum of

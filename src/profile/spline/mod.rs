@@ -226,8 +226,10 @@ impl SmoothingSpline {
     fn interval(&self, x: f64) -> usize {
         let nb = self.buckets.len() - 1;
         let last = self.knots.len() - 2;
-        // Saturating float-to-int cast: NaN gives 0, huge values nb.
-        let k = (((x - self.knots[0]) * self.bucket_scale) as usize).min(nb);
+        // Saturating float-to-int cast: NaN gives 0, huge values nb. Through i32 (a bucket
+        // table is far shorter): one conversion, where usize costs a dozen instructions for
+        // its saturation and sign handling; the cast saturates and maps NaN to 0 as well.
+        let k = ((((x - self.knots[0]) * self.bucket_scale) as i32).max(0) as usize).min(nb);
         // The bucket's interval, then a step or two to the interval holding x (a bucket holds
         // one or two knots unless the spacing is very uneven, and rounding of the bucket edge
         // can put x one interval before the bucket's): one or two comparisons, where a binary

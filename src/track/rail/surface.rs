@@ -136,7 +136,7 @@ fn quintic_piece(a: RailPoint, b: RailPoint, h: f64, len: f64) -> [f64; 6] {
 /// The surface from the quintic `c` at `g` (in units of the step; `inv_step` = `1 / h`).
 #[inline]
 fn quintic_point(c: &[f64; 6], f: f64, inv_step: f64) -> RailPoint {
-    let z = c[0] + f * (c[1] + f * (c[2] + f * (c[3] + f * (c[4] + f * c[5]))));
+    let z = quintic_z(c, f);
     let dz = c[1] + f * (2.0 * c[2] + f * (3.0 * c[3] + f * (4.0 * c[4] + f * 5.0 * c[5])));
     let d2 = 2.0 * c[2] + f * (6.0 * c[3] + f * (12.0 * c[4] + f * 20.0 * c[5]));
     RailPoint {
@@ -146,7 +146,32 @@ fn quintic_point(c: &[f64; 6], f: f64, inv_step: f64) -> RailPoint {
     }
 }
 
+/// The height `Z` from the quintic `c` at `f`: the `z` of [`quintic_point`], by the same
+/// operations.
+#[inline]
+fn quintic_z(c: &[f64; 6], f: f64) -> f64 {
+    c[0] + f * (c[1] + f * (c[2] + f * (c[3] + f * (c[4] + f * c[5]))))
+}
+
 impl PlacedRail {
+    /// The height `Z` at `y`, the `z` of [`PlacedRail::at`] to the bit without its slope
+    /// and curvature (a sixth of its work on a tabulated piece): what the height table is
+    /// filled with. `None` outside [`PlacedRail::y_range`].
+    #[inline]
+    pub(in crate::track) fn height_at(&self, y: f64) -> Option<f64> {
+        let (y_lo, y_hi) = self.y_range();
+        if !(y_lo..=y_hi).contains(&y) {
+            return None;
+        }
+        let table = &self.surface_table;
+        let t = (y - table.y0) * table.inv_step;
+        let i = t as i32 as usize;
+        Some(match table.pieces.get(i) {
+            Some(c) if !c[0].is_nan() => quintic_z(c, t - i as f64),
+            _ => self.untabulated_at(y).z,
+        })
+    }
+
     /// The surface at `y` (inside `y_range`) from its quintic piece, `None` where `y` has no
     /// tabulated piece.
     #[inline]
@@ -217,61 +242,49 @@ impl PlacedRail {
         };
         knots.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut next_knot = 0;
-        let nodes: Vec<RailPoint> = (0..=n)
-            .map(|i| {
-                let y = y_lo + h * i as f64;
-                self.invert(y, self.guess(y)).1
-            })
-            .collect();
+        let node = |i: usize| {
+            let y = y_lo + h * i as f64;
+            self.invert(y, self.guess(y)).1
+        };
         let steep = |p: &RailPoint| !(p.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && p.z.is_finite());
-        let mut splits = Vec::new();
-        let pieces: Vec<[f64; 6]> = nodes
-            .windows(2)
-            .enumerate()
-            .map(|(i, w)| {
-                let (a, b) = (w[0], w[1]);
+        // A piece holds at most one split, at a knot of its own inside it: the knots on the
+        // surface bound the splits.
+        let on_surface = knots
+            .iter()
+            .filter(|k| (y_lo..=y_hi).contains(&k.0))
+            .count();
+        let mut splits = Vec::with_capacity(on_surface);
+        // The nodes are made as the pieces need them, each once: no table of them is kept.
+        let mut pieces: Vec<[f64; 6]> = Vec::with_capacity(n);
+        let mut b = node(0);
+        for i in 0..n {
+            let a = b;
+            b = node(i + 1);
+            let piece = {
                 let (ya, yb) = (y_lo + h * i as f64, y_lo + h * (i + 1) as f64);
                 let holds_joint = joints.iter().any(|&j| (ya..=yb).contains(&j));
                 if holds_joint || steep(&a) || steep(&b) {
-                    return [f64::NAN; 6];
-                }
-                // Knots strictly inside the piece (see KNOT_AT_END_T); the pieces come in
-                // increasing Y, so the first knot not below the piece is carried along.
-                while next_knot < knots.len() && knots[next_knot].0 < ya {
-                    next_knot += 1;
-                }
-                let mut inside = knots[next_knot..]
-                    .iter()
-                    .take_while(|k| k.0 <= yb)
-                    .map(|&(y, u)| ((y - ya) / h, u))
-                    .filter(|&(t, _)| t > KNOT_AT_END_T && t < 1.0 - KNOT_AT_END_T);
-                match (inside.next(), inside.next()) {
-                    (None, _) => quintic_piece(a, b, h, 1.0),
-                    (Some((t_knot, u)), None) => {
-                        let k = self.surface_at(u);
-                        if steep(&k) {
-                            return [f64::NAN; 6];
-                        }
-                        let part = |p, q, len| {
-                            if len >= MIN_SPLIT_T {
-                                quintic_piece(p, q, h, len)
-                            } else {
-                                [f64::NAN; 6]
-                            }
-                        };
-                        splits.push(Split {
-                            t_knot,
-                            below: part(a, k, t_knot),
-                            above: part(k, b, 1.0 - t_knot),
-                        });
-                        let mut marker = [f64::NAN; 6];
-                        marker[1] = (splits.len() - 1) as f64;
-                        marker
+                    [f64::NAN; 6]
+                } else {
+                    // Knots strictly inside the piece (see KNOT_AT_END_T); the pieces come in
+                    // increasing Y, so the first knot not below the piece is carried along.
+                    while next_knot < knots.len() && knots[next_knot].0 < ya {
+                        next_knot += 1;
                     }
-                    (Some(_), Some(_)) => [f64::NAN; 6],
+                    let mut inside = knots[next_knot..]
+                        .iter()
+                        .take_while(|k| k.0 <= yb)
+                        .map(|&(y, u)| ((y - ya) / h, u))
+                        .filter(|&(t, _)| t > KNOT_AT_END_T && t < 1.0 - KNOT_AT_END_T);
+                    match (inside.next(), inside.next()) {
+                        (None, _) => quintic_piece(a, b, h, 1.0),
+                        (Some((t_knot, u)), None) => self.split_piece(a, b, t_knot, u, &mut splits),
+                        (Some(_), Some(_)) => [f64::NAN; 6],
+                    }
                 }
-            })
-            .collect();
+            };
+            pieces.push(piece);
+        }
         self.surface_table = SurfaceTable {
             y0: y_lo,
             inv_step: 1.0 / h,
@@ -281,6 +294,39 @@ impl PlacedRail {
             value_jump: crate::track::wheel::value_jump(&self.profile),
         };
         self.splits = splits;
+    }
+
+    /// The piece from nodes `a` to `b` split at the knot `u` of a sampled rail, at `t_knot`
+    /// of the piece: its two quintics pushed onto `splits`, and the marker `[NaN, k, ..]`
+    /// that points to them (NaN where the knot is steep).
+    fn split_piece(
+        &self,
+        a: RailPoint,
+        b: RailPoint,
+        t_knot: f64,
+        u: f64,
+        splits: &mut Vec<Split>,
+    ) -> [f64; 6] {
+        let h = SURFACE_TABLE_STEP_MM;
+        let k = self.surface_at(u);
+        if !(k.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && k.z.is_finite()) {
+            return [f64::NAN; 6];
+        }
+        let part = |p, q, len| {
+            if len >= MIN_SPLIT_T {
+                quintic_piece(p, q, h, len)
+            } else {
+                [f64::NAN; 6]
+            }
+        };
+        splits.push(Split {
+            t_knot,
+            below: part(a, k, t_knot),
+            above: part(k, b, 1.0 - t_knot),
+        });
+        let mut marker = [f64::NAN; 6];
+        marker[1] = (splits.len() - 1) as f64;
+        marker
     }
 }
 

@@ -123,3 +123,30 @@ fn surface_table_matches_the_exact_inversion() {
     assert!(worst[1] < 6e-10, "slope {:e}", worst[1]);
     assert!(worst[2] < 6e-8, "second derivative {:e}", worst[2]);
 }
+
+/// The heights the height table is filled with are the surface's heights to the bit, on
+/// tabulated, split and inverted pieces alike (analytic and sampled UIC60).
+#[test]
+fn heights_are_the_surface_heights_to_the_bit() {
+    let points = Profile::uic60e1()
+        .sample(0.25)
+        .iter()
+        .map(|r| [r[0], r[1]])
+        .collect();
+    let points =
+        crate::profile::read::PointProfile::from_points(ProfileKind::Rail, "sampled", points)
+            .unwrap();
+    let sampled = Profile::from_points(points, 0.0).unwrap();
+    for profile in [Profile::uic60e1(), sampled] {
+        let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
+        let (lo, hi) = rail.y_range();
+        let n = 20_000;
+        for i in 0..=n {
+            let y = lo + (hi - lo) * f64::from(i) / f64::from(n);
+            let z = rail.at(y).map(|p| p.z.to_bits());
+            assert_eq!(rail.height_at(y).map(f64::to_bits), z, "y = {y}");
+        }
+        assert_eq!(rail.height_at(lo - 1e-9), None);
+        assert_eq!(rail.height_at(hi + 1e-9), None);
+    }
+}
