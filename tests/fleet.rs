@@ -652,3 +652,36 @@ fn the_committed_example_fleet_regenerates() {
     }
     assert!(compared >= 8, "only {compared} files compared");
 }
+
+/// Generated wheel 49 of the example fleet (seed 14) at `y_ws = +-3.1` mm: the scan at the
+/// root puts two minima of one wheel 0.27 mm apart in one bracket (s = 16.287 and 16.554 mm)
+/// and Newton finds the higher; the certificate finds the lower, and the basin of the next
+/// scan that holds both must take the lower known one, not the first (which cycled between
+/// the two roots 1.6e-8 rad apart up to the iteration cap and lost the row's conicity).
+/// Every position of the fleet's sweep converges.
+#[test]
+fn two_minima_in_one_bracket_of_a_generated_wheel_converge() {
+    let dir = scratch("fleet_worn_0049");
+    let wheel = dir.join("worn_0049.csv");
+    std::fs::write(&wheel, synthetic::csv_text(14, 49).0).unwrap();
+    let template = std::fs::read_to_string(root().join("reports/fleet/scene.toml")).unwrap();
+    let text = template.replace(
+        "profile = \"S1002\"",
+        &format!("profile = \"{}\"", wheel.display()),
+    );
+    let scene = wheelrail::scene::Scene::from_toml(&text, "worn_0049.toml", &dir).unwrap();
+    let placement = wheelrail::pipeline::place(&scene).unwrap();
+    let sweep = wheelrail::rigid::search(
+        &placement,
+        scene.sweep_mm(),
+        wheelrail::rigid::Solver::default(),
+    );
+    for p in &sweep.positions {
+        assert_eq!(
+            p.stop,
+            wheelrail::stop::Stop::Converged,
+            "y_ws = {}",
+            p.y_ws
+        );
+    }
+}

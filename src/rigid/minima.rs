@@ -41,9 +41,12 @@ pub(super) fn side_minimum(
     let known = minima.len();
     for i in 0..basins.len() {
         let b = basins[i];
+        // The lowest of them: a basin of a scan can hold two minima (the certificate's
+        // lower one and the one Newton found in it), and the higher is no minimum of it.
         let reuse = minima[..known]
             .iter()
-            .find(|q| (b.0..=b.1).contains(&q.s))
+            .filter(|q| (b.0..=b.1).contains(&q.s))
+            .min_by(|p, q| p.g.total_cmp(&q.g))
             .copied();
         let Some(p) = reuse.or_else(|| side.minimum(b, None, pose)) else {
             continue;
