@@ -170,3 +170,172 @@ fn the_bound_from_both_ends_is_exact_for_a_parabola() {
         }
     }
 }
+
+/// The cases of the dense tests of the bounds: the paper's profiles at 1:40 and vertical,
+/// and noisy measured-like ones (the noise of `tests/stress.rs`).
+fn bound_cases() -> Vec<(String, SidePair)> {
+    let mut cases = vec![
+        (
+            "analytic 1:40".to_string(),
+            pair(Profile::s1002(), Profile::uic60e1(), "1:40"),
+        ),
+        (
+            "analytic vertical".to_string(),
+            pair(Profile::s1002(), Profile::uic60e1(), "vertical"),
+        ),
+    ];
+    for (seed, incl) in [(3u64, "1:40"), (4, "vertical"), (5, "1:20")] {
+        let wheel = noisy(&Profile::s1002(), 0.55, 20.0, seed);
+        let rail = noisy(&Profile::uic60e1(), 0.55, 5.0, seed ^ 1);
+        cases.push((format!("noisy seed {seed} {incl}"), pair(wheel, rail, incl)));
+    }
+    cases
+}
+
+/// The gap every `h / 400` over the coarse cells `i..j` (`None` off the rail).
+fn dense(side: &SideGap, pose: &SidePose, i: usize, j: usize) -> Vec<(f64, Option<f64>)> {
+    let (a, b) = (side.coarse[i][0], side.coarse[j][0]);
+    let n = 400 * (j - i);
+    (0..=n)
+        .map(|k| {
+            let s = a + (b - a) * k as f64 / n as f64;
+            (s, side.at(s, pose).map(|p| p.g))
+        })
+        .collect()
+}
+
+/// On random blocks and poses of analytic and noisy profiles, a dense sample of the exact gap
+/// (every 0.000625 mm) never lies below the bounds the certificate skips cells with: the
+/// interpolation bound on the coarse samples with the block's cushion at the pose and over a
+/// box of poses about another pose, the block's rigorous bound, and the convexity bound about
+/// the minimum; and the gap's second differences lie within `curvature_range` on cells
+/// without joints. The bounds are close enough to be tested: some cushion is below 1e-3 mm
+/// and some convexity bound within 1e-3 mm of the sampled gap.
+#[test]
+fn the_cushion_and_convexity_bounds_lie_below_a_dense_sample() {
+    use super::super::PoseBox;
+    use super::super::scan::SCAN_BLOCK;
+    use super::{curvature_range, pose_trig, span};
+    let mut rng = crate::rng::SplitMix64::new(20_261_123);
+    let mut uniform =
+        |lo: f64, hi: f64| lo + (hi - lo) * (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+    let (mut blocks, mut tight_cushion, mut convex, mut tight_convex, mut curved) = (0, 0, 0, 0, 0);
+    for (name, pair) in bound_cases() {
+        for sign in [1.0, -1.0] {
+            let side = SideGap::new(&pair, sign);
+            let n = side.coarse.len() - 1;
+            let cells = side.pair.wheel.cells(n);
+            let h = side.coarse[1][0] - side.coarse[0][0];
+            for _ in 0..12 {
+                let (y_ws, roll) = (uniform(-11.0, 11.0), uniform(-3e-3, 3e-3));
+                let pose = SidePose::new(sign, y_ws, roll);
+                let Some((best, _)) = basin_minimum(&side, &pose) else {
+                    continue;
+                };
+                // A box about a pose nearby that holds `pose`.
+                let mut pose_box = PoseBox::default();
+                let near =
+                    SidePose::new(sign, y_ws + uniform(-0.9, 0.9), roll + uniform(-8e-4, 8e-4));
+                side.fill_pose_box(&near, &mut pose_box);
+                assert!(pose_box.holds(&pose));
+                // The block of the contact, its neighbours and a random one.
+                let at = (((best.s - side.coarse[0][0]) / h) as usize).min(n - 1);
+                let random = (uniform(0.0, 1.0) * n as f64) as usize;
+                for i0 in [at, at.saturating_sub(SCAN_BLOCK), at + SCAN_BLOCK, random] {
+                    let b = i0.min(n - 1) / SCAN_BLOCK;
+                    let (i, j) = side.block_cells(b);
+                    let samples = dense(&side, &pose, i, j);
+                    let lowest = samples
+                        .iter()
+                        .filter_map(|x| x.1)
+                        .fold(f64::INFINITY, f64::min);
+                    let bound = side.certified_block_bound(b, &pose);
+                    assert!(
+                        bound <= lowest,
+                        "{name} y {y_ws} b {b}: {bound} above {lowest}"
+                    );
+                    let cushion = side.block_cushion(b, &cells, &pose);
+                    let boxed = side.box_cushion(b, &cells, &pose_box);
+                    for c in i..j {
+                        let (ga, gb) = (side.coarse_gap(c, &pose), side.coarse_gap(c + 1, &pose));
+                        if ga.max(gb) == f64::INFINITY || !cushion.is_finite() {
+                            continue;
+                        }
+                        for (s, g) in &samples[400 * (c - i)..=400 * (c + 1 - i)] {
+                            let g = g.expect("a cell with both samples over the rail");
+                            for (what, cu) in [("pose", cushion), ("box", boxed)] {
+                                assert!(
+                                    g >= ga.min(gb) - cu,
+                                    "{name} y {y_ws} s {s} ({what}): {g} below {} - {cu}",
+                                    ga.min(gb)
+                                );
+                            }
+                        }
+                        tight_cushion += usize::from(cushion < 1e-3);
+                    }
+                    blocks += 1;
+                    // The second differences every 0.01 mm on each joint-free cell.
+                    for c in i..j {
+                        let w = cells.cells()[c];
+                        let [y_lo, y_hi, _] =
+                            span(&pose, (side.coarse[c][1], side.coarse[c + 1][1]), w.z);
+                        let Some(r) = side.pair.rail.binned_bounds(y_lo, y_hi) else {
+                            continue;
+                        };
+                        if w.jump > 0.0 || r.jump > 0.0 {
+                            continue;
+                        }
+                        let (m, big_m) = curvature_range(pose_trig(&pose), &w.d, &r);
+                        let d = 0.01;
+                        for k in 1..25 {
+                            let s = side.coarse[c][0] + d * f64::from(k);
+                            let g = |s: f64| side.at(s, &pose).map(|p| p.g);
+                            let (Some(g0), Some(g1), Some(g2)) = (g(s - d), g(s), g(s + d)) else {
+                                continue;
+                            };
+                            // The second difference is g'' at a point within d of s (inside
+                            // the cell), up to the rounding of the three gaps near 460 mm
+                            // (4 x 5e-14 / d^2 = 2e-9 per mm).
+                            let second = (g0 - 2.0 * g1 + g2) / (d * d);
+                            let slack = 1e-8;
+                            assert!(
+                                second >= m - slack && second <= big_m + slack,
+                                "{name} y {y_ws} s {s}: g'' {second} outside [{m}, {big_m}]"
+                            );
+                            curved += 1;
+                        }
+                    }
+                }
+                // Convexity about the minimum, out to 6 coarse cells either side.
+                for off in [-6i64, -3, -1, 0, 1, 3, 6] {
+                    let c = (at as i64 + off).clamp(0, n as i64 - 1) as usize;
+                    let Some((low, lo, hi)) = side.convex_bound(c, &best, &pose, &cells) else {
+                        continue;
+                    };
+                    let samples = dense(&side, &pose, lo, hi);
+                    let lowest = samples
+                        .iter()
+                        .filter_map(|x| x.1)
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(
+                        low <= lowest,
+                        "{name} y {y_ws} cells {lo}..{hi}: {low} above {lowest}"
+                    );
+                    convex += 1;
+                    tight_convex += usize::from(lowest - low < 1e-3);
+                }
+            }
+        }
+    }
+    eprintln!(
+        "{blocks} blocks, {curved} second differences, {convex} convex zones ({tight_convex} tight), {tight_cushion} cushions below 1e-3 mm"
+    );
+    assert!(
+        blocks > 200 && curved > 1000 && convex > 100,
+        "{blocks} {curved} {convex}"
+    );
+    assert!(
+        tight_cushion > 100 && tight_convex > 20,
+        "{tight_cushion} {tight_convex}"
+    );
+}

@@ -200,7 +200,7 @@ impl SideGap<'_> {
     }
 
     /// The coarse cells `i..j` of block `b` (`i < j`).
-    fn block_cells(&self, b: usize) -> (usize, usize) {
+    pub(super) fn block_cells(&self, b: usize) -> (usize, usize) {
         let n = self.coarse.len() - 1;
         ((b * SCAN_BLOCK).min(n - 1), ((b + 1) * SCAN_BLOCK).min(n))
     }
@@ -208,7 +208,7 @@ impl SideGap<'_> {
     /// What the interpolation bound on the coarse samples of a cell of block `b` subtracts
     /// (mm) at every pose of `pose_box`: as [`SideGap::block_cushion`] over the box's lateral
     /// span of the block and its ranges of `cos phi` and `sin phi`.
-    fn box_cushion(&self, b: usize, cells: &WheelCells, pose_box: &PoseBox) -> f64 {
+    pub(super) fn box_cushion(&self, b: usize, cells: &WheelCells, pose_box: &PoseBox) -> f64 {
         let (i, j) = self.block_cells(b);
         let [y_lo, y_hi] = pose_box.spans[b];
         let trig = pose_box.trig;
@@ -220,7 +220,7 @@ impl SideGap<'_> {
     /// (mm) at `pose`: `max(M, 0) h^2 / 8` for the largest `g''` over the block, the
     /// profiles' joint terms, the height table's interpolation error, [`EXACT_PAD_MM`];
     /// `+inf` where the rail is not bounded there.
-    fn block_cushion(&self, b: usize, cells: &WheelCells, pose: &SidePose) -> f64 {
+    pub(super) fn block_cushion(&self, b: usize, cells: &WheelCells, pose: &SidePose) -> f64 {
         let (i, j) = self.block_cells(b);
         let w = cells.over(i, j);
         let [y_lo, y_hi, _] = span(pose, (self.coarse[i][1], self.coarse[j][1]), w.z);
@@ -266,9 +266,8 @@ impl SideGap<'_> {
     }
 
     /// Whether the coarse cell `i` lies no lower than the threshold by convexity about the
-    /// nearest known minimum `p` (`g'' >= 0` on the cells from `p`'s to `i`, all over the
-    /// rail: `g >= p.g - |p.dg| L` less the joint terms, `L` their length); the cells shown
-    /// join `p`'s zone.
+    /// nearest known minimum (`g'' >= 0` on the cells from its cell to `i`: see
+    /// [`SideGap::convex_bound`]); the cells shown join that minimum's zone.
     fn convex_about_known(&self, i: usize, pose: &SidePose, pass: &mut Pass) -> bool {
         if pass.zones.iter().any(|&(lo, hi)| lo <= i && i < hi) {
             return true;
@@ -282,29 +281,48 @@ impl SideGap<'_> {
         else {
             return false;
         };
-        let n = self.coarse.len() - 1;
-        let h = self.coarse[1][0] - self.coarse[0][0];
-        let ik = (((p.s - self.coarse[0][0]) / h).max(0.0) as usize).min(n - 1);
-        let (lo, hi) = (i.min(ik), (i + 1).max(ik + 1));
-        let w = pass.cells.over(lo, hi);
-        let [y_lo, y_hi, _] = span(pose, (self.coarse[lo][1], self.coarse[hi][1]), w.z);
-        let (r_lo, r_hi) = self.pair.rail.y_range();
-        if y_lo < r_lo || y_hi > r_hi {
-            return false;
-        }
-        let Some(r) = self.pair.rail.binned_bounds(y_lo, y_hi) else {
+        let Some((low, lo, hi)) = self.convex_bound(i, p, pose, pass.cells) else {
             return false;
         };
-        let (m, _) = curvature_range(pose_trig(pose), &w.d, &r);
-        let length = self.coarse[hi][0] - self.coarse[lo][0];
-        // The wheel's slope jumps count over the whole length, not a cell's.
-        let jumps = joint_terms(w.jump * (length / h).max(1.0), &r, pose.sin.abs());
-        let low = p.g - p.dg.abs() * length - jumps - EXACT_PAD_MM;
-        if m < 0.0 || low < pass.threshold() {
+        if low < pass.threshold() {
             return false;
         }
         let zone = &mut pass.zones[k];
         *zone = (zone.0.min(lo), zone.1.max(hi));
         true
+    }
+
+    /// A lower bound `(low, lo, hi)` of the gap at `pose` on the coarse cells `lo..hi` from
+    /// the minimum `p`'s cell to the coarse cell `i`, where the gap is convex there
+    /// (`g'' >= 0`, all over the rail): `g >= p.g - |p.dg| L` less the joint terms, `L` their
+    /// length (the tangent at `p` lies below a convex function; `p.dg` is 0 at a smooth
+    /// minimum, not at one held at a joint or a bracket end). `None` where convexity is not
+    /// shown.
+    pub(super) fn convex_bound(
+        &self,
+        i: usize,
+        p: &GapPoint,
+        pose: &SidePose,
+        cells: &WheelCells,
+    ) -> Option<(f64, usize, usize)> {
+        let n = self.coarse.len() - 1;
+        let h = self.coarse[1][0] - self.coarse[0][0];
+        let ik = (((p.s - self.coarse[0][0]) / h).max(0.0) as usize).min(n - 1);
+        let (lo, hi) = (i.min(ik), (i + 1).max(ik + 1));
+        let w = cells.over(lo, hi);
+        let [y_lo, y_hi, _] = span(pose, (self.coarse[lo][1], self.coarse[hi][1]), w.z);
+        let (r_lo, r_hi) = self.pair.rail.y_range();
+        if y_lo < r_lo || y_hi > r_hi {
+            return None;
+        }
+        let r = self.pair.rail.binned_bounds(y_lo, y_hi)?;
+        let (m, _) = curvature_range(pose_trig(pose), &w.d, &r);
+        if m < 0.0 {
+            return None;
+        }
+        let length = self.coarse[hi][0] - self.coarse[lo][0];
+        // The wheel's slope jumps count over the whole length, not a cell's.
+        let jumps = joint_terms(w.jump * (length / h).max(1.0), &r, pose.sin.abs());
+        Some((p.g - p.dg.abs() * length - jumps - EXACT_PAD_MM, lo, hi))
     }
 }
