@@ -201,11 +201,17 @@ impl Occupancy {
         }
         let step = OCCUPANCY_CELL_PX as usize;
         let mut best: Option<(i64, (i32, i32))> = None;
+        // A box is looked at only where it would be nearer than the best so far, and a row
+        // only where its nearest place would be (a distance is at least 4 times the row's
+        // distance to the nearer corner row): the same place as testing every box in scan
+        // order (12,741 boxes for the EN 15302 Δr chart, 2 M instructions), for a fraction.
+        let beats =
+            |best: Option<(i64, (i32, i32))>, distance: i64| best.is_none_or(|(d, _)| distance < d);
         for y in (y0..=y1).step_by(step).chain(std::iter::once(y1)) {
+            if !beats(best, 4 * i64::from((y - y0).min(y1 - y))) {
+                continue;
+            }
             for x in (x0..=x1).step_by(step).chain(std::iter::once(x1)) {
-                if !self.is_free((x, y, x + w, y + h)) {
-                    continue;
-                }
                 let distance = corners
                     .iter()
                     .enumerate()
@@ -215,11 +221,111 @@ impl Occupancy {
                     })
                     .min()
                     .unwrap_or(0);
+                if beats(best, distance) && self.is_free((x, y, x + w, y + h)) {
+                    best = Some((distance, (x, y)));
+                }
+            }
+        }
+        best.map(|(_, at)| at)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The grid of `cells` (row-major, `cols` wide) over a plot at `(left, top)`.
+    fn grid(left: i32, top: i32, cols: usize, cells: &[bool]) -> Occupancy {
+        let rows = cells.len() / cols;
+        let mut sums = vec![0u32; (cols + 1) * (rows + 1)];
+        for row in 0..rows {
+            for col in 0..cols {
+                sums[(row + 1) * (cols + 1) + col + 1] = u32::from(cells[row * cols + col])
+                    + sums[row * (cols + 1) + col + 1]
+                    + sums[(row + 1) * (cols + 1) + col]
+                    - sums[row * (cols + 1) + col];
+            }
+        }
+        Occupancy {
+            left,
+            top,
+            cols,
+            rows,
+            sums,
+        }
+    }
+
+    /// The scan `free_spot` prunes: every box in scan order, the first of least distance.
+    fn every_box(o: &Occupancy, plot: PxRect, (w, h): (i32, i32)) -> Option<(i32, i32)> {
+        let (x0, x1) = (plot.0 + LEGEND_INSET_PX, plot.2 - LEGEND_INSET_PX - w);
+        let (y0, y1) = (plot.1 + LEGEND_INSET_PX, plot.3 - LEGEND_INSET_PX - h);
+        let corners = [(x1, y0), (x0, y0), (x1, y1), (x0, y1)];
+        let step = OCCUPANCY_CELL_PX as usize;
+        let mut best: Option<(i64, (i32, i32))> = None;
+        for y in (y0..=y1).step_by(step).chain(std::iter::once(y1)) {
+            for x in (x0..=x1).step_by(step).chain(std::iter::once(x1)) {
+                if !o.is_free((x, y, x + w, y + h)) {
+                    continue;
+                }
+                let distance = (0..4)
+                    .map(|i| {
+                        let (cx, cy) = corners[i];
+                        4 * i64::from((x - cx).abs() + (y - cy).abs()) + i as i64
+                    })
+                    .min()
+                    .unwrap();
                 if best.is_none_or(|(d, _)| distance < d) {
                     best = Some((distance, (x, y)));
                 }
             }
         }
         best.map(|(_, at)| at)
+    }
+
+    #[test]
+    fn the_pruned_scan_finds_the_place_of_the_full_scan() {
+        // Random blobs over a plot of odd size (the last row and column are partial), all
+        // corners taken so that the scan runs; densities from empty to nearly full.
+        let mut rng = crate::rng::SplitMix64::new(20_261_123);
+        let plot: PxRect = (37, 21, 37 + 401, 21 + 277);
+        let (cols, rows) = (401 / 6 + 1, 277 / 6 + 1);
+        let (mut found, mut none) = (0, 0);
+        for case in 0..300 {
+            let mut cells = vec![false; cols * rows];
+            let blobs = case % 40;
+            for _ in 0..blobs {
+                let (c, r) = (
+                    (rng.next_u64() % cols as u64) as usize,
+                    (rng.next_u64() % rows as u64) as usize,
+                );
+                let radius = 1 + (rng.next_u64() % 8) as usize;
+                for rr in r.saturating_sub(radius)..(r + radius).min(rows) {
+                    for cc in c.saturating_sub(radius)..(c + radius).min(cols) {
+                        cells[rr * cols + cc] = true;
+                    }
+                }
+            }
+            for (r, c) in [(0, 0), (0, cols - 1), (rows - 1, 0), (rows - 1, cols - 1)] {
+                cells[r * cols + c] = true;
+            }
+            let o = grid(plot.0, plot.1, cols, &cells);
+            let size = (
+                20 + (rng.next_u64() % 150) as i32,
+                10 + (rng.next_u64() % 100) as i32,
+            );
+            let want = every_box(&o, plot, size);
+            assert_eq!(
+                o.free_spot(plot, size, LegendPosition::Auto),
+                want,
+                "case {case}"
+            );
+            if want.is_some() {
+                found += 1
+            } else {
+                none += 1
+            }
+        }
+        // Both outcomes are exercised.
+        assert!(found > 100 && none > 10, "{found} found, {none} none");
     }
 }
