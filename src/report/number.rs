@@ -128,7 +128,16 @@ const PAIRS: [[u8; 2]; 100] = {
 
 /// Writes the `n` digits of `q` as `d.ddd` (`d` alone for one digit), `e` and `k`.
 fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
-    // The digits two at a time from the last (an odd count starts with a pair's second).
+    // The text is put together on the stack and appended once: at most a sign, 17 digits,
+    // the point, `e`, a sign and 3 digits (26 bytes).
+    let mut text = [0u8; 32];
+    let mut len = 0;
+    if negative {
+        text[0] = b'-';
+        len = 1;
+    }
+    // The digits two at a time from the last (an odd count starts with a pair's second),
+    // into their places after the leading digit and the point.
     let mut digits = [0u8; 18];
     let mut q = q;
     let mut end = 18;
@@ -139,27 +148,32 @@ fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
         end -= 2;
     }
     let digits = &digits[18 - n..];
-    if negative {
-        out.push(b'-');
-    }
-    out.push(digits[0]);
+    text[len] = digits[0];
+    len += 1;
     if n > 1 {
-        out.push(b'.');
-        out.extend_from_slice(&digits[1..]);
+        text[len] = b'.';
+        text[len + 1..len + n].copy_from_slice(&digits[1..]);
+        len += n;
     }
-    out.push(b'e');
+    text[len] = b'e';
+    len += 1;
     if k < 0 {
-        out.push(b'-');
+        text[len] = b'-';
+        len += 1;
     }
     // At most 3 digits (|k| <= 324).
     let k = k.unsigned_abs() as usize;
     if k >= 100 {
-        out.push(b'0' + (k / 100) as u8);
+        text[len] = b'0' + (k / 100) as u8;
+        len += 1;
     }
     if k >= 10 {
-        out.push(PAIRS[k % 100][0]);
+        text[len] = PAIRS[k % 100][0];
+        len += 1;
     }
-    out.push(PAIRS[k % 100][1]);
+    text[len] = PAIRS[k % 100][1];
+    len += 1;
+    out.extend_from_slice(&text[..len]);
 }
 
 #[cfg(test)]

@@ -343,22 +343,24 @@ impl Table {
     ///
     /// Lines end with `\n`. A table without columns gives only its comment lines.
     pub fn to_csv_with(&self, format: NumberFormat) -> String {
-        let mut out = String::new();
+        // One buffer for the whole text, comments included (no copy into a second one).
+        let comments: usize = self.comments.iter().map(|c| c.len() + 3).sum();
+        let mut bytes =
+            Vec::with_capacity(comments + 16 * self.columns.len() * (self.n_rows() + 1));
         for c in &self.comments {
             if c.is_empty() {
-                out.push_str("#\n");
+                bytes.extend_from_slice(b"#\n");
             } else {
-                out.push_str("# ");
-                out.push_str(c);
-                out.push('\n');
+                bytes.extend_from_slice(b"# ");
+                bytes.extend_from_slice(c.as_bytes());
+                bytes.push(b'\n');
             }
         }
         if self.columns.is_empty() {
-            return out;
+            return String::from_utf8(bytes).expect("comments are UTF-8");
         }
         // The csv crate's quoting (`QuoteStyle::Necessary`, `\n` records: see
         // `push_csv_field`), written directly: numbers never need quotes.
-        let mut bytes = Vec::with_capacity(16 * self.columns.len() * (self.n_rows() + 1));
         push_csv_record(&mut bytes, self.column_names().map(str::as_bytes));
         for row in 0..self.n_rows() {
             let start = bytes.len();
@@ -373,8 +375,9 @@ impl Table {
             }
             end_csv_record(&mut bytes, start);
         }
-        out.push_str(&String::from_utf8(bytes).expect("CSV of UTF-8 strings is UTF-8"));
-        out
+        // The estimate above is generous; the allocator gives the rest back in place.
+        bytes.shrink_to_fit();
+        String::from_utf8(bytes).expect("CSV of UTF-8 strings is UTF-8")
     }
 
     /// Reads a table written by [`Table::to_csv`] (or any comma-separated file with a header).
