@@ -27,6 +27,23 @@ const POW10: [u128; 39] = {
     p
 };
 
+/// `10^(i - 30)` as the nearest `f64` or close to it (exact from `1e0` to `1e22`), for the
+/// first guess of a number's decimal exponent only: the integers decide.
+const POW10_GUESS: [f64; 61] = {
+    let mut p = [1.0f64; 61];
+    let mut i = 31;
+    while i < 61 {
+        p[i] = p[i - 1] * 10.0;
+        i += 1;
+    }
+    let mut i = 30;
+    while i > 0 {
+        p[i - 1] = p[i] / 10.0;
+        i -= 1;
+    }
+    p
+};
+
 /// Appends `x` with `digits` significant digits (1 to 17) exactly as `format!("{x:.{}e}",
 /// digits - 1)` writes it, and returns `true`; returns `false` having appended nothing where
 /// the integer path does not apply (not finite, out of range, an exact tie).
@@ -42,17 +59,25 @@ pub(crate) fn push_significant(out: &mut Vec<u8>, x: f64, digits: u32) -> bool {
     let a = x.abs();
     let bits = a.to_bits();
     let biased = (bits >> 52) as i32;
-    let fraction = u128::from(bits & ((1u64 << 52) - 1));
+    let fraction = bits & ((1u64 << 52) - 1);
     let (m, e) = if biased == 0 {
         (fraction, -1074)
     } else {
-        (fraction | (1u128 << 52), biased - 1075)
+        (fraction | (1u64 << 52), biased - 1075)
     };
     let n = digits as usize;
     // floor(log10 a) is k or k + 1 for this k from the binary exponent (1233 / 4096 just
-    // below log10 2); a wrong guess shows in the quotient's length and is corrected.
-    let e2 = e + 127 - m.leading_zeros() as i32;
+    // below log10 2), and mostly the k that a comparison with a power of ten in floating
+    // point gives; a wrong guess shows in the quotient's length and is corrected.
+    let e2 = e + 63 - m.leading_zeros() as i32;
     let mut k = (e2 * 1233) >> 12;
+    if let Some(&next) = usize::try_from(k + 31)
+        .ok()
+        .and_then(|i| POW10_GUESS.get(i))
+        && a >= next
+    {
+        k += 1;
+    }
     for _ in 0..3 {
         let Some((q, r, den)) = scaled(m, e, n as i32 - 1 - k) else {
             return false;
@@ -86,12 +111,18 @@ pub(crate) fn push_significant(out: &mut Vec<u8>, x: f64, digits: u32) -> bool {
 
 /// The quotient and remainder of `m 2^e 10^p` as `num / den` in integers, with `den`;
 /// `None` when a factor does not fit 128 bits.
-fn scaled(m: u128, e: i32, p: i32) -> Option<(u128, u128, u128)> {
+fn scaled(m: u64, e: i32, p: i32) -> Option<(u128, u128, u128)> {
     let pow = |i: i32| POW10.get(usize::try_from(i).ok()?).copied();
     let (mut num, mut den) = if p >= 0 {
-        (m.checked_mul(pow(p)?)?, 1u128)
+        let pow = pow(p)?;
+        // While 10^p fits 64 bits (p <= 19) one widening multiply (m < 2^53: no overflow).
+        let num = match u64::try_from(pow) {
+            Ok(pow) => u128::from(m) * u128::from(pow),
+            Err(_) => u128::from(m).checked_mul(pow)?,
+        };
+        (num, 1u128)
     } else {
-        (m, pow(-p)?)
+        (u128::from(m), pow(-p)?)
     };
     if e >= 0 {
         let shift = u32::try_from(e).ok()?;
@@ -128,32 +159,29 @@ const PAIRS: [[u8; 2]; 100] = {
 
 /// Writes the `n` digits of `q` as `d.ddd` (`d` alone for one digit), `e` and `k`.
 fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
-    // The text is put together on the stack and appended once: at most a sign, 17 digits,
-    // the point, `e`, a sign and 3 digits (26 bytes).
+    // The text is put together on the stack: at most a sign, 17 digits, the point, `e`, a
+    // sign and 3 digits (26 bytes).
     let mut text = [0u8; 32];
-    let mut len = 0;
-    if negative {
-        text[0] = b'-';
-        len = 1;
-    }
+    let mut len = usize::from(negative);
+    text[0] = b'-';
     // The digits two at a time from the last (an odd count starts with a pair's second),
-    // into their places after the leading digit and the point.
-    let mut digits = [0u8; 18];
+    // one place to the right; the first then moves left over the point.
     let mut q = q;
-    let mut end = 18;
-    while end > 18 - n {
-        let pair = PAIRS[(q % 100) as usize];
-        digits[end - 2..end].copy_from_slice(&pair);
+    let mut end = len + 1 + n;
+    while end > len + 2 {
+        text[end - 2..end].copy_from_slice(&PAIRS[(q % 100) as usize]);
         q /= 100;
         end -= 2;
     }
-    let digits = &digits[18 - n..];
-    text[len] = digits[0];
-    len += 1;
+    if end > len + 1 {
+        text[len + 1] = b'0' + q as u8;
+    }
+    text[len] = text[len + 1];
     if n > 1 {
-        text[len] = b'.';
-        text[len + 1..len + n].copy_from_slice(&digits[1..]);
-        len += n;
+        text[len + 1] = b'.';
+        len += n + 1;
+    } else {
+        len += 1;
     }
     text[len] = b'e';
     len += 1;
@@ -173,7 +201,10 @@ fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
     }
     text[len] = PAIRS[k % 100][1];
     len += 1;
-    out.extend_from_slice(&text[..len]);
+    // The whole array and then the length: a copy of known size, no call to `memcpy`.
+    let start = out.len();
+    out.extend_from_slice(&text);
+    out.truncate(start + len);
 }
 
 #[cfg(test)]
@@ -216,6 +247,25 @@ mod tests {
         }
         // The path covers the tables' range: all but the far decades.
         assert!(fast * 10 > total * 8, "{fast} of {total}");
+    }
+
+    #[test]
+    fn few_digits_beyond_the_guess_table() {
+        // With few digits the integer path reaches past the decades of `POW10_GUESS`
+        // (1e-30 to 1e30), where the exponent's first guess comes from the binary exponent
+        // alone.
+        let mut rng = crate::rng::SplitMix64::new(0x005e_ed0f_d161_7500);
+        let mut fast = 0;
+        for _ in 0..200_000 {
+            let r = rng.next_u64();
+            let decade = (r % 81) as i32 - 40;
+            let mantissa = 1.0 + (r >> 11) as f64 / (1u64 << 53) as f64 * 9.0;
+            let x = mantissa * 10f64.powi(decade);
+            for digits in [1, 2, 3] {
+                fast += usize::from(check(x, digits));
+            }
+        }
+        assert!(fast > 400_000, "{fast}");
     }
 
     #[test]
