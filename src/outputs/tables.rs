@@ -80,16 +80,17 @@ fn face_comment() -> String {
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> {
-    let rows = rail.profile().sample(PROFILE_TABLE_STEP_MM);
-    let mut y = Vec::with_capacity(rows.len());
-    let mut z = Vec::with_capacity(rows.len());
-    let mut slope = Vec::with_capacity(rows.len());
-    let mut curvature = Vec::with_capacity(rows.len());
-    let mut face = Vec::with_capacity(rows.len());
+    // The rail's own profile is not evaluated: only where it is sampled.
+    let us = rail.profile().sample_positions(PROFILE_TABLE_STEP_MM);
+    let mut y = Vec::with_capacity(us.len());
+    let mut z = Vec::with_capacity(us.len());
+    let mut slope = Vec::with_capacity(us.len());
+    let mut curvature = Vec::with_capacity(us.len());
+    let mut face = Vec::with_capacity(us.len());
     let (y_lo, y_hi) = rail.y_range();
-    for r in &rows {
-        let q = rail.surface_at(r[0]);
-        let y_side = rail.point_of(r[0])[0];
+    for &u in &us {
+        let q = rail.surface_at(u);
+        let y_side = rail.point_of(u)[0];
         y.push(y_side);
         z.push(q.z);
         // Only the running surface has a slope that Z(Y) can carry; the flanks beyond it
@@ -109,7 +110,7 @@ pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> 
         .comment("frame: rail side frame = track frame mirrored per side; y_mm = |y| from the track centre (positive towards the field side), z_mm up from the top of rail; u_mm the profile's own lateral coordinate")
         .comment("tan_gamma = dz/dy in the side frame (inclination included); curvature_per_mm convex positive; NaN where the surface is steeper than the running surface")
         .comment("face: running on the running surface; flank beyond it (tan_gamma and curvature_per_mm NaN)")
-        .numeric("u_mm", col(&rows, 0))
+        .numeric("u_mm", us)
         .numeric("y_mm", y)
         .numeric("z_mm", z)
         .numeric("tan_gamma", slope)

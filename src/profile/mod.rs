@@ -257,18 +257,30 @@ impl Profile {
     /// Samples the profile every `step_mm` over its domain (both ends included), plus the
     /// section joints, as `[u, v, tan_gamma, convex_curvature]` rows.
     pub fn sample(&self, step_mm: f64) -> Vec<[f64; 4]> {
+        self.sample_positions(step_mm)
+            .into_iter()
+            .map(|u| {
+                let [v, d1, d2] = self.eval(u);
+                // `tan_gamma(u)` from the slope just evaluated (the same number).
+                let tan_gamma = match self.kind {
+                    ProfileKind::Wheel => -d1,
+                    ProfileKind::Rail => d1,
+                };
+                [u, v, tan_gamma, convex_curvature(d1, d2)]
+            })
+            .collect()
+    }
+
+    /// The positions `u` (mm) that [`Profile::sample`] evaluates the profile at: every
+    /// `step_mm` over the domain (both ends included) and the section joints, increasing.
+    pub fn sample_positions(&self, step_mm: f64) -> Vec<f64> {
         let (lo, hi) = self.domain();
         let n = ((hi - lo) / step_mm).ceil().max(1.0) as usize;
         let mut us: Vec<f64> = (0..=n).map(|i| (lo + i as f64 * step_mm).min(hi)).collect();
         us.extend(self.joints());
         us.sort_by(f64::total_cmp);
         us.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
-        us.into_iter()
-            .map(|u| {
-                let [v, d1, d2] = self.eval(u);
-                [u, v, self.tan_gamma(u), convex_curvature(d1, d2)]
-            })
-            .collect()
+        us
     }
 }
 
@@ -283,6 +295,23 @@ pub fn convex_curvature(d1: f64, d2: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn samples_are_the_profile_at_the_sample_positions() {
+        // The same numbers as evaluating each column on its own, to the bit.
+        for p in [Profile::s1002(), Profile::uic60e1()] {
+            let rows = p.sample(0.7);
+            let us = p.sample_positions(0.7);
+            assert_eq!(rows.len(), us.len());
+            for (r, u) in rows.iter().zip(us) {
+                assert_eq!(r[0].to_bits(), u.to_bits());
+                assert_eq!(r[1].to_bits(), p.eval(u)[0].to_bits());
+                assert_eq!(r[2].to_bits(), p.tan_gamma(u).to_bits());
+                assert_eq!(r[3].to_bits(), p.convex_curvature(u).to_bits());
+            }
+            assert!(p.joints().iter().all(|j| rows.iter().any(|r| (r[0] - *j).abs() < 1e-9)));
+        }
+    }
 
     #[test]
     fn convex_curvatures_have_the_documented_signs() {
