@@ -129,72 +129,74 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
             .map(|n| (group.name().to_string(), n.to_string())),
     );
 
-    let staging = dir.join(format!(".wheelrail-new-{}", std::process::id()));
-    let backup = dir.join(format!(".wheelrail-old-{}", std::process::id()));
-    // A staging folder left by a killed run that had this process id holds only copies of
-    // new outputs: cleared. (A backup folder is left alone: it may hold an old report.)
-    let _ = std::fs::remove_dir_all(&staging);
+    // The new files are staged and the replaced ones kept aside under hidden names in the
+    // folder itself, not in folders of their own: creating and removing a folder cost 0.2
+    // to 4 ms on ext4 here (removing one frees its block), a whole report run about 5 ms.
+    let pid = std::process::id();
+    let staged = |name: &str| dir.join(format!(".wheelrail-new-{pid}-{name}"));
+    let aside = |name: &str| dir.join(format!(".wheelrail-old-{pid}-{name}"));
+    let incoming: Vec<&str> = names.iter().copied().chain([MANIFEST]).collect();
     let result = (|| {
         let write = |e: std::io::Error| folder_error(dir, "write into the folder", &e);
-        std::fs::create_dir(&staging).map_err(write)?;
         for f in files {
-            std::fs::write(staging.join(&f.name), &f.bytes).map_err(write)?;
+            std::fs::write(staged(&f.name), &f.bytes).map_err(write)?;
         }
-        std::fs::write(staging.join(MANIFEST), manifest_text(&manifest)).map_err(write)?;
-        std::fs::create_dir(&backup).map_err(write)?;
-        swap(dir, &staging, &backup, &names, &stale)
+        std::fs::write(staged(MANIFEST), manifest_text(&manifest)).map_err(write)?;
+        swap(dir, &incoming, &stale, staged, aside)
     })();
-    let _ = std::fs::remove_dir_all(&staging);
-    if result.is_ok() {
-        let _ = std::fs::remove_dir_all(&backup);
-    } else {
-        // Empty once the old files are back; if one could not be put back it stays there,
-        // not deleted.
-        let _ = std::fs::remove_dir(&backup);
+    match result {
+        Ok(moved_aside) => {
+            for name in moved_aside {
+                let _ = std::fs::remove_file(aside(name));
+            }
+            Ok(())
+        }
+        Err(e) => {
+            // The staged files not placed; a replaced file that could not be put back stays
+            // aside, not deleted.
+            for name in &incoming {
+                let _ = std::fs::remove_file(staged(name));
+            }
+            Err(e)
+        }
     }
-    result
 }
 
-/// Moves the replaced and stale files from `dir` into `backup`, then the staged files (and
-/// manifest) into `dir`; on any failure undoes what was done, in reverse.
-fn swap(
+/// Moves the replaced and stale files in `dir` aside (to `aside(name)`), then the staged
+/// files (and manifest) `incoming` from `staged(name)` into place; on any failure undoes
+/// what was done, in reverse. The names moved aside, for the caller to delete.
+fn swap<'a>(
     dir: &Path,
-    staging: &Path,
-    backup: &Path,
-    names: &BTreeSet<&str>,
-    stale: &[&str],
-) -> Result<(), Error> {
+    incoming: &[&'a str],
+    stale: &[&'a str],
+    staged: impl Fn(&str) -> PathBuf,
+    aside: impl Fn(&str) -> PathBuf,
+) -> Result<Vec<&'a str>, Error> {
     let mut moved_aside: Vec<&str> = Vec::new();
     let mut placed: Vec<&str> = Vec::new();
-    let outgoing = names
-        .iter()
-        .copied()
-        .chain([MANIFEST])
-        .chain(stale.iter().copied());
-    let incoming: Vec<&str> = names.iter().copied().chain([MANIFEST]).collect();
     let attempt = (|| -> Result<(), (PathBuf, std::io::Error)> {
-        for name in outgoing {
+        for &name in incoming.iter().chain(stale) {
             let from = dir.join(name);
             if std::fs::symlink_metadata(&from).is_ok() {
-                std::fs::rename(&from, backup.join(name)).map_err(|e| (from.clone(), e))?;
+                std::fs::rename(&from, aside(name)).map_err(|e| (from.clone(), e))?;
                 moved_aside.push(name);
             }
         }
-        for &name in &incoming {
+        for &name in incoming {
             let to = dir.join(name);
-            std::fs::rename(staging.join(name), &to).map_err(|e| (to.clone(), e))?;
+            std::fs::rename(staged(name), &to).map_err(|e| (to.clone(), e))?;
             placed.push(name);
         }
         Ok(())
     })();
     match attempt {
-        Ok(()) => Ok(()),
+        Ok(()) => Ok(moved_aside),
         Err((path, source)) => {
             for name in placed.iter().rev() {
                 let _ = std::fs::remove_file(dir.join(name));
             }
             for name in moved_aside.iter().rev() {
-                let _ = std::fs::rename(backup.join(name), dir.join(name));
+                let _ = std::fs::rename(aside(name), dir.join(name));
             }
             Err(Error::Io { path, source })
         }
@@ -314,6 +316,30 @@ mod tests {
         assert!(err.contains("b.svg: is a folder, not a file"), "{err}");
         assert_eq!(listing(&dir), before);
         assert_eq!(std::fs::read(dir.join("a.csv")).unwrap(), a_before);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_failed_swap_puts_the_replaced_files_back() {
+        let dir = scratch("rollback");
+        write_folder(&dir, Group::Report, &files(&["a.csv", "b.svg"], "1")).unwrap();
+        let before = listing(&dir);
+        // a.csv is staged, b.svg is not: its move into place fails after a.csv's.
+        let staged = |name: &str| dir.join(format!(".staged-{name}"));
+        let aside = |name: &str| dir.join(format!(".aside-{name}"));
+        std::fs::write(staged("a.csv"), "a.csv 2").unwrap();
+        let err = swap(&dir, &["a.csv", "b.svg"], &[], staged, aside)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("b.svg"), "{err}");
+        assert_eq!(listing(&dir), before);
+        assert_eq!(
+            std::fs::read_to_string(dir.join("a.csv")).unwrap(),
+            "a.csv 1"
+        );
+        // A successful run leaves nothing staged or aside.
+        write_folder(&dir, Group::Report, &files(&["a.csv"], "3")).unwrap();
+        assert_eq!(listing(&dir), [MANIFEST, "a.csv"]);
         let _ = std::fs::remove_dir_all(&dir);
     }
 
