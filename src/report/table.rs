@@ -25,6 +25,7 @@
 //! * Text is quoted only when needed (commas, quotes, line breaks), as RFC 4180 says.
 
 use super::csv_out::{end_csv_record, push_csv_field, push_csv_record};
+use std::borrow::Cow;
 use std::fmt;
 
 /// The values of one column: all numbers or all text.
@@ -32,8 +33,9 @@ use std::fmt;
 pub enum ColumnData {
     /// Numbers; `NaN` marks a value that could not be computed.
     Numeric(Vec<f64>),
-    /// Free text, e.g. a status or a reason.
-    Text(Vec<String>),
+    /// Free text, e.g. a status or a reason: borrowed where it is a fixed word (a status
+    /// repeated on every row costs no allocation), owned otherwise.
+    Text(Vec<Cow<'static, str>>),
 }
 
 impl ColumnData {
@@ -201,7 +203,7 @@ impl TableBuilder {
     }
 
     /// Adds a text column.
-    pub fn text<S: Into<String>>(
+    pub fn text<S: Into<Cow<'static, str>>>(
         self,
         name: impl Into<String>,
         values: impl IntoIterator<Item = S>,
@@ -317,7 +319,7 @@ impl Table {
     }
 
     /// The values of text column `name`; `None` if absent or numeric.
-    pub fn text(&self, name: &str) -> Option<&[String]> {
+    pub fn text(&self, name: &str) -> Option<&[Cow<'static, str>]> {
         match &self.column(name)?.data {
             ColumnData::Text(v) => Some(v),
             ColumnData::Numeric(_) => None,
@@ -429,7 +431,7 @@ impl Table {
                 .collect();
             let data = match numbers {
                 Some(v) => ColumnData::Numeric(v),
-                None => ColumnData::Text(column),
+                None => ColumnData::Text(column.into_iter().map(Cow::Owned).collect()),
             };
             table.push_column(name, data)?;
         }

@@ -23,6 +23,7 @@ pub use text::SHOWN_COLUMNS;
 pub use tolerance::{Tolerance, TolerancePolicy};
 
 use super::table::{ColumnData, Table, TableError};
+use std::borrow::Cow;
 
 /// One numeric value outside its tolerance.
 #[derive(Debug, Clone, PartialEq)]
@@ -245,7 +246,10 @@ fn compare_numeric(
     })
 }
 
-fn compare_text(expected: &[String], actual: &[String]) -> Option<ColumnDiff> {
+fn compare_text(
+    expected: &[Cow<'static, str>],
+    actual: &[Cow<'static, str>],
+) -> Option<ColumnDiff> {
     let mut failing = 0;
     let mut first = Vec::new();
     for (row, (e, a)) in expected.iter().zip(actual).enumerate() {
@@ -254,8 +258,8 @@ fn compare_text(expected: &[String], actual: &[String]) -> Option<ColumnDiff> {
             if first.len() < KEPT_FAILURES {
                 first.push(TextFailure {
                     row,
-                    expected: e.clone(),
-                    actual: a.clone(),
+                    expected: e.to_string(),
+                    actual: a.to_string(),
                 });
             }
         }
