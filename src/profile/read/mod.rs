@@ -384,8 +384,12 @@ pub fn read_profile_with(
     })?;
     // Measured files come from Windows tools and may carry Latin-1 text in header fields;
     // replacing undecodable bytes keeps the header readable and makes a bad byte inside a
-    // number a NonNumeric error on its line.
-    let text = String::from_utf8_lossy(&bytes);
+    // number a NonNumeric error on its line. (A valid file, the usual case, is checked by
+    // the standard library's faster validator first: the same text.)
+    let text = match std::str::from_utf8(&bytes) {
+        Ok(text) => std::borrow::Cow::Borrowed(text),
+        Err(_) => String::from_utf8_lossy(&bytes),
+    };
     parse_with_hash(&text, format, kind, &origin, sha256_hex(&bytes), options)
 }
 
