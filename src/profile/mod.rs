@@ -309,7 +309,11 @@ mod tests {
                 assert_eq!(r[2].to_bits(), p.tan_gamma(u).to_bits());
                 assert_eq!(r[3].to_bits(), p.convex_curvature(u).to_bits());
             }
-            assert!(p.joints().iter().all(|j| rows.iter().any(|r| (r[0] - *j).abs() < 1e-9)));
+            assert!(
+                p.joints()
+                    .iter()
+                    .all(|j| rows.iter().any(|r| (r[0] - *j).abs() < 1e-9))
+            );
         }
     }
 
