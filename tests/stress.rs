@@ -679,24 +679,7 @@ proptest! {
         step_mm in 0.1..=1.0_f64,
         incl in inclination(),
     ) {
-        let wheel = from_csv(
-            ProfileKind::Wheel,
-            &noisy(&resample(&Profile::s1002(), step_mm), wheel_std_um, seed),
-            4.0,
-            "noisy_s1002.csv",
-        );
-        let rail = from_csv(
-            ProfileKind::Rail,
-            &noisy(&resample(&Profile::uic60e1(), step_mm), rail_std_um, seed ^ 1),
-            4.0,
-            "noisy_uic60.csv",
-        );
-        let placement = place(
-            [wheel.clone(), wheel],
-            [rail.clone(), rail],
-            [460.0, 460.0],
-            &layout(incl),
-        );
+        let placement = noisy_case(seed, wheel_std_um, rail_std_um, step_mm, incl);
         let context = format!("noise {wheel_std_um:.1}/{rail_std_um:.1} um, step {step_mm:.2} mm, {incl}");
         let ys = shifts(40.0, 33);
         let sweep = run(&placement, &ys, 0.01, &context);

@@ -73,10 +73,8 @@ fn table_against_inversion(rail: &PlacedRail) -> (usize, usize, [f64; 3]) {
     (tabulated, n, worst)
 }
 
-#[test]
-fn sampled_surface_table_matches_the_exact_inversion() {
-    // UIC60 sampled every 0.25 mm (joints included) and fitted by an interpolating spline,
-    // as the tradeoff study's sampled setting: the pieces that hold a knot are split there.
+/// UIC60 sampled every 0.25 mm (joints included) and fitted by an interpolating spline.
+fn sampled_uic60() -> Profile {
     let points = Profile::uic60e1()
         .sample(0.25)
         .iter()
@@ -85,7 +83,14 @@ fn sampled_surface_table_matches_the_exact_inversion() {
     let points =
         crate::profile::read::PointProfile::from_points(ProfileKind::Rail, "sampled", points)
             .unwrap();
-    let profile = Profile::from_points(points, 0.0).unwrap();
+    Profile::from_points(points, 0.0).unwrap()
+}
+
+#[test]
+fn sampled_surface_table_matches_the_exact_inversion() {
+    // UIC60 sampled every 0.25 mm (joints included) and fitted by an interpolating spline,
+    // as the tradeoff study's sampled setting: the pieces that hold a knot are split there.
+    let profile = sampled_uic60();
     let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
     let splits = rail.splits.len();
     let (tabulated, n, worst) = table_against_inversion(&rail);
@@ -128,15 +133,7 @@ fn surface_table_matches_the_exact_inversion() {
 /// tabulated, split and inverted pieces alike (analytic and sampled UIC60).
 #[test]
 fn heights_are_the_surface_heights_to_the_bit() {
-    let points = Profile::uic60e1()
-        .sample(0.25)
-        .iter()
-        .map(|r| [r[0], r[1]])
-        .collect();
-    let points =
-        crate::profile::read::PointProfile::from_points(ProfileKind::Rail, "sampled", points)
-            .unwrap();
-    let sampled = Profile::from_points(points, 0.0).unwrap();
+    let sampled = sampled_uic60();
     for profile in [Profile::uic60e1(), sampled] {
         let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.y_range();
