@@ -293,8 +293,70 @@ mod tests {
                     }
                 }
             }
-            at_ends += usize::from(p.s <= lo + AT_END_MM || p.s >= hi - AT_END_MM);
+            // At an end, the gap does not fall into the bracket.
+            let (at_lo, at_hi) = (p.s <= lo + AT_END_MM, p.s >= hi - AT_END_MM);
+            assert!(
+                !((at_lo && p.dg < 0.0) || (at_hi && p.dg > 0.0)),
+                "{pose:?} [{lo}, {hi}] from {s0}: end {} with dg {}",
+                p.s,
+                p.dg
+            );
+            at_ends += usize::from(at_lo || at_hi);
         }
         assert!(at_ends > 100, "{at_ends} minima at a bracket end");
+    }
+
+    /// A start on the concave flank below a local maximum, with the bracket reaching past
+    /// the local minimum beside it: the bisection towards that end must stop at the minimum,
+    /// not at the end, where the gap falls into the bracket (a shortcut that took any end
+    /// evaluated on the way would return it).
+    #[test]
+    fn a_bisection_towards_an_end_stops_at_the_minimum_before_it() {
+        let placement = super::super::tests::placement();
+        let side = SideGap::new(&placement.left, 1.0);
+        let (dom_lo, dom_hi) = side.wheel().profile().domain();
+        let mut cases = 0;
+        for i in 0..=30 {
+            let pose = SidePose::new(1.0, -15.0 + f64::from(i), 0.0);
+            let n = ((dom_hi - dom_lo) / 0.01) as usize;
+            let s: Vec<f64> = (0..=n).map(|k| dom_lo + 0.01 * k as f64).collect();
+            let g: Vec<Option<GapPoint>> = s.iter().map(|&s| side.at(s, &pose)).collect();
+            for k in 2..n - 2 {
+                // A local maximum at k with a local minimum m within 3 mm below it in s.
+                let (Some(a), Some(b), Some(c)) = (g[k - 1], g[k], g[k + 1]) else {
+                    continue;
+                };
+                if !(b.g > a.g && b.g > c.g) {
+                    continue;
+                }
+                let Some(m) = (k.saturating_sub(300)..k).rev().find(|&m| {
+                    matches!((g[m - 1], g[m], g[m + 1]), (Some(x), Some(y), Some(z)) if y.g < x.g && y.g < z.g)
+                }) else {
+                    continue;
+                };
+                // Start where the gap rises and is concave, between the two.
+                let Some(start) = (m + 1..k)
+                    .rev()
+                    .find(|&j| g[j].is_some_and(|p| p.dg > 0.0 && p.ddg < 0.0))
+                else {
+                    continue;
+                };
+                let lo = (s[m] - 0.5).max(dom_lo);
+                if side.at(lo, &pose).is_none_or(|p| p.dg >= 0.0) {
+                    continue;
+                }
+                let p = side.newton_in(lo, s[k], s[start], &pose).unwrap();
+                assert!(
+                    (p.s - s[m]).abs() < 0.02,
+                    "{pose:?} [{lo}, {}] from {}: {} instead of the minimum near {}",
+                    s[k],
+                    s[start],
+                    p.s,
+                    s[m]
+                );
+                cases += 1;
+            }
+        }
+        assert!(cases > 0, "no concave start below a maximum found");
     }
 }
