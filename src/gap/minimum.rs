@@ -257,10 +257,11 @@ mod tests {
     }
 
     /// Whatever its start, the search in a bracket ends on a local minimum of the gap
-    /// restricted to the bracket: no point within 1e-3 mm of it on the bracket is lower, beyond
-    /// the rounding of the gap itself (up to about 1e-11 mm: near -460 mm, with the S1002
-    /// polynomials' cancellations; 1e-10 is allowed). Random brackets of 0.1 to 3 mm over the whole wheel, random starts and
-    /// poses; an end returned with the gap falling into the bracket would fail.
+    /// restricted to the bracket: no point within 1e-3 mm of it on the bracket is lower,
+    /// beyond the rounding of the gap itself (up to about 1e-11 mm: near -460 mm, with the
+    /// S1002 polynomials' cancellations; 1e-10 is allowed). Random brackets of 0.1 to 3 mm
+    /// over the whole wheel, random starts and poses; an end returned with the gap falling
+    /// into the bracket would fail.
     #[test]
     fn the_search_in_a_bracket_ends_on_a_local_minimum_of_the_bracket() {
         let placement = super::super::tests::placement();

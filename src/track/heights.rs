@@ -44,7 +44,7 @@ impl HeightTable {
         // Every interpolated height between entries i and i + 1 lies below the maximum of
         // block i / B, which includes the first entry of the next block.
         let blocks = n / HEIGHT_BLOCK + 1;
-        let mut block_max = vec![
+        let block_max = super::sparse::doubling_levels(
             (0..blocks)
                 .map(|j| {
                     let end = (j * HEIGHT_BLOCK + HEIGHT_BLOCK).min(n + 1);
@@ -52,17 +52,9 @@ impl HeightTable {
                         .iter()
                         .fold(f64::NEG_INFINITY, |m, &v| m.max(v))
                 })
-                .collect::<Vec<f64>>(),
-        ];
-        let mut span = 1;
-        while 2 * span <= blocks {
-            let below = &block_max[block_max.len() - 1];
-            let level = (0..=blocks - 2 * span)
-                .map(|j| below[j].max(below[j + span]))
-                .collect();
-            block_max.push(level);
-            span *= 2;
-        }
+                .collect(),
+            f64::max,
+        );
         HeightTable {
             y0: lo,
             inv_step: 1.0 / step,

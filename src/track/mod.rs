@@ -19,6 +19,7 @@ use std::sync::Arc;
 mod heights;
 mod layout;
 mod rail;
+mod sparse;
 mod wheel;
 
 pub use heights::{HEIGHT_TABLE_STEP_MM, HeightTable};

@@ -42,17 +42,9 @@ pub(crate) struct WheelCells {
 
 impl WheelCells {
     fn new(cells: Vec<WheelCell>) -> WheelCells {
-        let mut levels = vec![cells];
-        let mut span = 1;
-        while 2 * span <= levels[0].len() {
-            let below = &levels[levels.len() - 1];
-            let level = (0..below.len() - span)
-                .map(|i| below[i].union(below[i + span]))
-                .collect();
-            levels.push(level);
-            span *= 2;
+        WheelCells {
+            levels: super::sparse::doubling_levels(cells, WheelCell::union),
         }
-        WheelCells { levels }
     }
 
     /// The cells, in order.
@@ -63,7 +55,7 @@ impl WheelCells {
     /// The bounds over the cells `i..j` (`i < j`): the union of theirs.
     #[inline]
     pub(crate) fn over(&self, i: usize, j: usize) -> WheelCell {
-        let k = (usize::BITS - 1 - (j - i).leading_zeros()) as usize;
+        let k = super::sparse::level_of(j - i);
         let level = &self.levels[k];
         level[i].union(level[j - (1 << k)])
     }

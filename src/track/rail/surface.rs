@@ -451,7 +451,7 @@ impl PlacedRail {
         let bin =
             |y: f64, widen: f64| (((y - lo) / SURFACE_BIN_MM + widen).max(0.0) as usize).min(last);
         let (i, j) = (bin(y_lo, -1e-9), bin(y_hi, 1e-9));
-        let k = (usize::BITS - 1 - (j - i + 1).leading_zeros()) as usize;
+        let k = crate::track::sparse::level_of(j - i + 1);
         Some((&bins.levels[k], i, j + 1 - (1 << k)))
     }
 
@@ -466,16 +466,8 @@ impl PlacedRail {
                     .unwrap_or(SurfaceBounds::UNBOUNDED)
             })
             .collect();
-        let mut levels = vec![bounds];
-        let mut span = 1;
-        while 2 * span <= n {
-            let below = &levels[levels.len() - 1];
-            let level = (0..=n - 2 * span)
-                .map(|j| below[j].union(below[j + span]))
-                .collect();
-            levels.push(level);
-            span *= 2;
+        Bins {
+            levels: crate::track::sparse::doubling_levels(bounds, SurfaceBounds::union),
         }
-        Bins { levels }
     }
 }
