@@ -35,7 +35,7 @@
 //! certified minimum against full scans every 0.002 mm.
 
 use super::bound::{CERTIFY_TOL_MM, Search, curvature_range, joint_terms, pose_trig, span};
-use super::scan::{PoseBox, SCAN_BLOCK, Scanned};
+use super::scan::{PoseBox, SCAN_BLOCK, Scanned, block_samples};
 use super::{GapPoint, SideGap, SidePose};
 use crate::track::{HEIGHT_TABLE_STEP_MM, WheelCells};
 
@@ -148,12 +148,8 @@ impl SideGap<'_> {
             if pose_box.certified[b] + common >= t || self.certified_block_bound(b, pose) >= t {
                 return;
             }
-            let mut block_min = f64::INFINITY;
-            for i in (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last) {
-                scanned.gaps[i] = self.coarse_gap(i, pose);
-                block_min = block_min.min(scanned.gaps[i]);
-            }
-            scanned.block_min[b] = block_min;
+            scanned.block_min[b] =
+                self.block_gaps(block_samples(b, first, last), pose, &mut scanned.gaps);
             scanned.mark(b);
         }
         let cells = (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last - 1);

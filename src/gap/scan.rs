@@ -137,6 +137,20 @@ pub(super) fn block_samples(b: usize, first: usize, last: usize) -> std::ops::Ra
     (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last)
 }
 
+/// The index of the lowest of `bounds` (the first of equals; 0 where all are NaN or the
+/// slice is empty): a plain compare, where `min_by(total_cmp)` costs a dozen instructions
+/// per element. Which block is taken first changes the work of a scan, not its basins.
+#[inline]
+fn lowest_bound(bounds: &[f64]) -> usize {
+    let (mut best, mut low) = (0, f64::INFINITY);
+    for (k, &v) in bounds.iter().enumerate() {
+        if v < low {
+            (best, low) = (k, v);
+        }
+    }
+    best
+}
+
 /// Keeps the coarse minimum `(g, i)` among the lowest `found.len()`.
 #[inline]
 fn record(found: &mut [(f64, usize); 16], count: &mut usize, g: f64, i: usize) {
@@ -198,18 +212,15 @@ impl SideGap<'_> {
         let common = pose.sin * yc + pose.cos * zc;
         let boxed = &pose_box.bounds;
         let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
-        let b = blocks
-            .clone()
-            .min_by(|&a, &b| boxed[a].total_cmp(&boxed[b]))
-            .unwrap_or(blocks.start);
-        // Its gaps are kept for the loop below, which reaches it too (its bound lies below
-        // them, so it is not skipped).
-        let first_block = block_samples(b, first, last);
-        let mut first_gaps = [f64::INFINITY; SCAN_BLOCK];
-        for (g, i) in first_gaps.iter_mut().zip(first_block.clone()) {
-            *g = self.coarse_gap(i, pose);
-        }
-        let mut running = first_gaps.iter().fold(f64::INFINITY, |m, &g| m.min(g));
+        let first_block = lowest_bound(&boxed[blocks.clone()]) + blocks.start;
+        // Its gaps are kept in `scanned.gaps` for the loop below, which reaches it too (its
+        // bound lies below them, so it is not skipped).
+        let first_min = self.block_gaps(
+            block_samples(first_block, first, last),
+            pose,
+            &mut scanned.gaps,
+        );
+        let mut running = first_min;
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
         let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
@@ -239,16 +250,16 @@ impl SideGap<'_> {
                 continue;
             }
             scanned.mark(b);
-            let mut block_min = f64::INFINITY;
-            for i in samples {
-                let next = if first_block.contains(&i) {
-                    first_gaps[i - first_block.start]
-                } else {
-                    self.coarse_gap(i, pose)
-                };
-                scanned.gaps[i] = next;
-                block_min = block_min.min(next);
-                running = running.min(next);
+            let block_min = if b == first_block {
+                first_min
+            } else {
+                self.block_gaps(samples.clone(), pose, &mut scanned.gaps)
+            };
+            scanned.block_min[b] = block_min;
+            if block_min < running {
+                running = block_min;
+            }
+            for (i, &next) in samples.clone().zip(&scanned.gaps[samples]) {
                 if here <= prev && here <= next && here < f64::INFINITY {
                     lowest = lowest.min(here);
                     record(&mut found, &mut count, here, i - first - 1);
@@ -256,7 +267,6 @@ impl SideGap<'_> {
                 prev = here;
                 here = next;
             }
-            scanned.block_min[b] = block_min;
         }
         scanned.lowest = running;
         // The last sample has no right neighbour.
@@ -273,6 +283,30 @@ impl SideGap<'_> {
                 out.push((lo, hi));
             }
         }
+    }
+
+    /// The coarse gaps of the samples `range` at `pose` into `gaps[range]` (as
+    /// [`Self::coarse_gap`] of each, bit for bit), and the lowest of them (`+inf` where
+    /// none is above the rail). One pass over the samples with the height table's lookup
+    /// inlined: the inner loop of the scans.
+    #[inline]
+    pub(super) fn block_gaps(
+        &self,
+        range: std::ops::Range<usize>,
+        pose: &SidePose,
+        gaps: &mut [f64],
+    ) -> f64 {
+        let heights = self.rail.heights();
+        let mut low = f64::INFINITY;
+        for (g, &[_, yw, zw]) in gaps[range.clone()].iter_mut().zip(&self.coarse[range]) {
+            let [y, z] = pose.apply(yw, zw);
+            *g = heights.height(y).map_or(f64::INFINITY, |zr| z - zr);
+            // As `f64::min` (a NaN gap is passed over) without its NaN handling.
+            if *g < low {
+                low = *g;
+            }
+        }
+        low
     }
 
     /// The coarse gap (table rail) of sample `i`, `+inf` where it is not above the rail.

@@ -43,6 +43,39 @@ fn all_gaps(side: &SideGap, pose: &SidePose) -> Vec<(usize, f64)> {
         .collect()
 }
 
+/// What the scan for basins recorded for the certificate is what a sample by sample
+/// evaluation gives: every sample of every block it marks evaluated bit for bit
+/// ([`SideGap::coarse_gap`]), and the block's lowest; at least one block is evaluated
+/// where a sample lies above the rail.
+fn assert_scanned_gaps_exact(side: &SideGap, pose: &SidePose, scanned: &Scanned) {
+    let (first, last) = scanned.range;
+    let mut evaluated = 0;
+    for b in first / SCAN_BLOCK..last.div_ceil(SCAN_BLOCK) {
+        if !scanned.evaluated(b) {
+            continue;
+        }
+        evaluated += 1;
+        let samples = super::scan::block_samples(b, first, last);
+        let mut lowest = f64::INFINITY;
+        for i in samples {
+            let g = side.coarse_gap(i, pose);
+            assert_eq!(
+                scanned.gaps[i].to_bits(),
+                g.to_bits(),
+                "sample {i} at {pose:?}"
+            );
+            lowest = lowest.min(g);
+        }
+        assert_eq!(
+            scanned.block_min[b].to_bits(),
+            lowest.to_bits(),
+            "block {b}"
+        );
+    }
+    let on_rail = (first..last).any(|i| side.coarse_gap(i, pose) < f64::INFINITY);
+    assert!(evaluated > 0 || !on_rail, "no block evaluated at {pose:?}");
+}
+
 #[test]
 fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
     let placement = placement();
@@ -61,7 +94,9 @@ fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
         };
         // Basins: brackets around the sampled local minima within the margin.
         carried_held += usize::from(carried.holds(&pose));
-        side.basins(&pose, &mut carried, &mut Scanned::default(), &mut basins);
+        let mut scanned = Scanned::default();
+        side.basins(&pose, &mut carried, &mut scanned, &mut basins);
+        assert_scanned_gaps_exact(&side, &pose, &scanned);
         side.basins(
             &pose,
             &mut PoseBox::default(),
