@@ -116,7 +116,14 @@ impl SideGap<'_> {
         };
         let (first, last) = scanned.range;
         if last >= first + 2 {
+            let [yc, zc] = self.box_reference();
+            let common = pose.sin * yc + pose.cos * zc;
             for b in first / SCAN_BLOCK..=(last - 2) / SCAN_BLOCK {
+                // Step 1 for most blocks, in the loop: a block the scan skipped whose bound
+                // over the box reaches the threshold (`certify_block` tests the same first).
+                if !scanned.evaluated(b) && pose_box.certified[b] + common >= pass.threshold() {
+                    continue;
+                }
                 self.certify_block(b, pose, pose_box, scanned, &mut pass);
             }
         }
@@ -148,9 +155,8 @@ impl SideGap<'_> {
             if pose_box.certified[b] + common >= t || self.certified_block_bound(b, pose) >= t {
                 return;
             }
-            scanned.block_min[b] =
-                self.block_gaps(block_samples(b, first, last), pose, &mut scanned.gaps);
-            scanned.mark(b);
+            let eval = self.block_gaps(block_samples(b, first, last), pose, scanned);
+            scanned.record(b, eval);
         }
         let cells = (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last - 1);
         if cells.is_empty() {
@@ -172,8 +178,9 @@ impl SideGap<'_> {
                 pose_box.cushions[b] = self.box_cushion(b, pass.cells, pose_box);
             }
             let cushion = pose_box.cushions[b];
-            let on_rail =
-                end < f64::INFINITY && cells.clone().all(|i| scanned.gaps[i] < f64::INFINITY);
+            // All the block's samples over the rail covers its cells' (a subset).
+            let on_rail = end < f64::INFINITY
+                && (scanned.on_rail(b) || cells.clone().all(|i| scanned.gaps[i] < f64::INFINITY));
             if on_rail && lowest - cushion >= t {
                 return;
             }

@@ -106,6 +106,8 @@ pub(crate) struct Scanned {
     generation: u32,
     /// Per block the scan evaluated, the lowest coarse gap of its samples.
     pub(super) block_min: Vec<f64>,
+    /// Per block the scan evaluated, whether all its samples lie over the rail (finite).
+    block_on_rail: Vec<bool>,
     /// The lowest coarse gap the scan evaluated: every skipped block lies above it plus
     /// [`COARSE_MARGIN_MM`] at every point.
     pub(super) lowest: f64,
@@ -120,10 +122,20 @@ impl Scanned {
         self.stamps[b] == self.generation
     }
 
-    /// Records that the samples of block `b` were evaluated.
+    /// Records that the samples of block `b` were evaluated, with what
+    /// [`SideGap::block_gaps`] returned for them: the gaps (written into [`Self::gaps`]),
+    /// their lowest and whether all are over the rail.
     #[inline]
-    pub(super) fn mark(&mut self, b: usize) {
+    pub(super) fn record(&mut self, b: usize, (lowest, on_rail): (f64, bool)) {
         self.stamps[b] = self.generation;
+        self.block_min[b] = lowest;
+        self.block_on_rail[b] = on_rail;
+    }
+
+    /// Whether all samples of block `b`, which the scan evaluated, lie over the rail.
+    #[inline]
+    pub(super) fn on_rail(&self, b: usize) -> bool {
+        self.block_on_rail[b]
     }
 }
 
@@ -191,6 +203,7 @@ impl SideGap<'_> {
         if scanned.stamps.len() != self.blocks.len() {
             scanned.gaps = vec![f64::INFINITY; self.coarse.len()];
             scanned.block_min = vec![f64::INFINITY; self.blocks.len()];
+            scanned.block_on_rail = vec![false; self.blocks.len()];
             scanned.stamps = vec![0; self.blocks.len()];
         }
         scanned.generation = scanned.generation.wrapping_add(1);
@@ -215,12 +228,8 @@ impl SideGap<'_> {
         let first_block = lowest_bound(&boxed[blocks.clone()]) + blocks.start;
         // Its gaps are kept in `scanned.gaps` for the loop below, which reaches it too (its
         // bound lies below them, so it is not skipped).
-        let first_min = self.block_gaps(
-            block_samples(first_block, first, last),
-            pose,
-            &mut scanned.gaps,
-        );
-        let mut running = first_min;
+        let first_eval = self.block_gaps(block_samples(first_block, first, last), pose, scanned);
+        let mut running = first_eval.0;
         // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
         // minima within one wheel would be noise; the lowest are the ones refined).
         let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
@@ -249,13 +258,13 @@ impl SideGap<'_> {
                 here = f64::INFINITY;
                 continue;
             }
-            scanned.mark(b);
-            let block_min = if b == first_block {
-                first_min
+            let eval = if b == first_block {
+                first_eval
             } else {
-                self.block_gaps(samples.clone(), pose, &mut scanned.gaps)
+                self.block_gaps(samples.clone(), pose, scanned)
             };
-            scanned.block_min[b] = block_min;
+            scanned.record(b, eval);
+            let block_min = eval.0;
             if block_min < running {
                 running = block_min;
             }
@@ -285,28 +294,30 @@ impl SideGap<'_> {
         }
     }
 
-    /// The coarse gaps of the samples `range` at `pose` into `gaps[range]` (as
-    /// [`Self::coarse_gap`] of each, bit for bit), and the lowest of them (`+inf` where
-    /// none is above the rail). One pass over the samples with the height table's lookup
-    /// inlined: the inner loop of the scans.
+    /// The coarse gaps of the samples `range` at `pose` into `scanned.gaps[range]` (as
+    /// [`Self::coarse_gap`] of each, bit for bit), the lowest of them (`+inf` where none is
+    /// above the rail) and whether all are above the rail, for [`Scanned::record`]. One pass
+    /// over the samples with the height table's lookup inlined: the inner loop of the scans.
     #[inline]
     pub(super) fn block_gaps(
         &self,
         range: std::ops::Range<usize>,
         pose: &SidePose,
-        gaps: &mut [f64],
-    ) -> f64 {
+        scanned: &mut Scanned,
+    ) -> (f64, bool) {
         let heights = self.rail.heights();
-        let mut low = f64::INFINITY;
-        for (g, &[_, yw, zw]) in gaps[range.clone()].iter_mut().zip(&self.coarse[range]) {
+        let (mut low, mut on_rail) = (f64::INFINITY, true);
+        let gaps = &mut scanned.gaps[range.clone()];
+        for (g, &[_, yw, zw]) in gaps.iter_mut().zip(&self.coarse[range]) {
             let [y, z] = pose.apply(yw, zw);
             *g = heights.height(y).map_or(f64::INFINITY, |zr| z - zr);
             // As `f64::min` (a NaN gap is passed over) without its NaN handling.
             if *g < low {
                 low = *g;
             }
+            on_rail &= *g < f64::INFINITY;
         }
-        low
+        (low, on_rail)
     }
 
     /// The coarse gap (table rail) of sample `i`, `+inf` where it is not above the rail.
