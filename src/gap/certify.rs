@@ -35,7 +35,7 @@
 //! certified minimum against full scans every 0.002 mm.
 
 use super::bound::{CERTIFY_TOL_MM, Search, curvature_range, joint_terms, pose_trig, span};
-use super::scan::{PoseBox, SCAN_BLOCK, Scanned};
+use super::scan::{PoseBox, SCAN_BLOCK, Scanned, block_samples};
 use super::{GapPoint, SideGap, SidePose};
 use crate::track::{HEIGHT_TABLE_STEP_MM, WheelCells};
 
@@ -116,7 +116,14 @@ impl SideGap<'_> {
         };
         let (first, last) = scanned.range;
         if last >= first + 2 {
+            let [yc, zc] = self.box_reference();
+            let common = pose.sin * yc + pose.cos * zc;
             for b in first / SCAN_BLOCK..=(last - 2) / SCAN_BLOCK {
+                // Step 1 for most blocks, in the loop: a block the scan skipped whose bound
+                // over the box reaches the threshold (`certify_block` tests the same first).
+                if !scanned.evaluated(b) && pose_box.certified[b] + common >= pass.threshold() {
+                    continue;
+                }
                 self.certify_block(b, pose, pose_box, scanned, &mut pass);
             }
         }
@@ -148,13 +155,8 @@ impl SideGap<'_> {
             if pose_box.certified[b] + common >= t || self.certified_block_bound(b, pose) >= t {
                 return;
             }
-            let mut block_min = f64::INFINITY;
-            for i in (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last) {
-                scanned.gaps[i] = self.coarse_gap(i, pose);
-                block_min = block_min.min(scanned.gaps[i]);
-            }
-            scanned.block_min[b] = block_min;
-            scanned.mark(b);
+            let eval = self.block_gaps(block_samples(b, first, last), pose, scanned);
+            scanned.record(b, eval);
         }
         let cells = (b * SCAN_BLOCK).max(first)..((b + 1) * SCAN_BLOCK).min(last - 1);
         if cells.is_empty() {
@@ -176,8 +178,9 @@ impl SideGap<'_> {
                 pose_box.cushions[b] = self.box_cushion(b, pass.cells, pose_box);
             }
             let cushion = pose_box.cushions[b];
-            let on_rail =
-                end < f64::INFINITY && cells.clone().all(|i| scanned.gaps[i] < f64::INFINITY);
+            // All the block's samples over the rail covers its cells' (a subset).
+            let on_rail = end < f64::INFINITY
+                && (scanned.on_rail(b) || cells.clone().all(|i| scanned.gaps[i] < f64::INFINITY));
             if on_rail && lowest - cushion >= t {
                 return;
             }

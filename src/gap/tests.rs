@@ -43,6 +43,35 @@ fn all_gaps(side: &SideGap, pose: &SidePose) -> Vec<(usize, f64)> {
         .collect()
 }
 
+/// What the scan for basins recorded for the certificate is what a sample by sample
+/// evaluation gives: every sample of every block it marks evaluated bit for bit
+/// ([`SideGap::coarse_gap`]), the block's lowest and whether all are over the rail; at
+/// least one block is evaluated where a sample lies above the rail.
+fn assert_scanned_gaps_exact(side: &SideGap, pose: &SidePose, scanned: &Scanned) {
+    let (first, last) = scanned.range;
+    let mut evaluated = 0;
+    for b in first / SCAN_BLOCK..last.div_ceil(SCAN_BLOCK) {
+        if !scanned.evaluated(b) {
+            continue;
+        }
+        evaluated += 1;
+        let samples = super::scan::block_samples(b, first, last);
+        let (mut lowest, mut on_rail) = (f64::INFINITY, true);
+        for i in samples {
+            let g = side.coarse_gap(i, pose);
+            let at = format!("sample {i} at {pose:?}");
+            assert_eq!(scanned.gaps[i].to_bits(), g.to_bits(), "{at}");
+            lowest = lowest.min(g);
+            on_rail &= g < f64::INFINITY;
+        }
+        let at = format!("block {b} at {pose:?}");
+        assert_eq!(scanned.block_min[b].to_bits(), lowest.to_bits(), "{at}");
+        assert_eq!(scanned.on_rail(b), on_rail, "{at}");
+    }
+    let on_rail = (first..last).any(|i| side.coarse_gap(i, pose) < f64::INFINITY);
+    assert!(evaluated > 0 || !on_rail, "no block evaluated at {pose:?}");
+}
+
 #[test]
 fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
     let placement = placement();
@@ -61,7 +90,9 @@ fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
         };
         // Basins: brackets around the sampled local minima within the margin.
         carried_held += usize::from(carried.holds(&pose));
-        side.basins(&pose, &mut carried, &mut Scanned::default(), &mut basins);
+        let mut scanned = Scanned::default();
+        side.basins(&pose, &mut carried, &mut scanned, &mut basins);
+        assert_scanned_gaps_exact(&side, &pose, &scanned);
         side.basins(
             &pose,
             &mut PoseBox::default(),

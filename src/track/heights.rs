@@ -16,9 +16,10 @@ pub struct HeightTable {
     inv_step: f64,
     /// Largest table coordinate `t = (y - y0) / step` inside the table (`z.len() - 2`).
     t_max: f64,
-    /// Heights at `y0 + i step`, the last one repeated so that interpolation at `t_max`
-    /// reads a valid neighbour.
-    z: Vec<f64>,
+    /// Per entry `i`, the height at `y0 + i step` and the difference to the next one (0
+    /// after the last): interpolation reads one entry, and `z_i + f (z_i+1 - z_i)` is the
+    /// same number with the difference made here or at each lookup.
+    z: Vec<[f64; 2]>,
     /// `block_max[k][j]`: the highest of `z[j B ..= (j + 2^k) B]`, `B` = [`HEIGHT_BLOCK`] (a
     /// sparse table: the maximum over any run of blocks is the larger of two entries).
     block_max: Vec<Vec<f64>>,
@@ -59,7 +60,7 @@ impl HeightTable {
             y0: lo,
             inv_step: 1.0 / step,
             t_max: n as f64,
-            z,
+            z: z.iter().zip(&z[1..]).map(|(&a, &b)| [a, b - a]).collect(),
             block_max,
         }
     }
@@ -96,8 +97,7 @@ impl HeightTable {
         // would cost a dozen instructions for its saturation and sign handling.
         let ti = t as i32;
         let f = t - f64::from(ti);
-        let i = ti as usize;
-        let (a, b) = (self.z[i], self.z[i + 1]);
-        Some(a + f * (b - a))
+        let [a, d] = self.z[ti as usize];
+        Some(a + f * d)
     }
 }

@@ -147,3 +147,43 @@ fn heights_are_the_surface_heights_to_the_bit() {
         assert_eq!(rail.height_at(hi + 1e-9), None);
     }
 }
+
+/// The height table interpolates its entries linearly, `z_i + f (z_i+1 - z_i)` with the
+/// entries the rail's heights on its grid, bit for bit (the table stores the differences
+/// with the heights: the same numbers), and reads `None` outside the running surface.
+#[test]
+fn the_height_table_interpolates_the_rail_heights_bit_for_bit() {
+    let sampled = sampled_uic60();
+    for profile in [Profile::uic60e1(), sampled] {
+        let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
+        let table = rail.heights();
+        let (lo, hi) = rail.y_range();
+        // The grid `HeightTable::new` makes.
+        let n = ((hi - lo) / HEIGHT_TABLE_STEP_MM).ceil().max(1.0) as usize;
+        let step = (hi - lo) / n as f64;
+        let entry = |i: usize| {
+            rail.height_at((lo + i.min(n) as f64 * step).min(hi))
+                .unwrap()
+        };
+        let m = 50_000;
+        for k in 0..=m {
+            let y = lo + (hi - lo) * f64::from(k) / f64::from(m);
+            let t = (y - lo) * (1.0 / step);
+            if t > n as f64 {
+                // `hi` itself can round past the last entry: off the table.
+                assert_eq!(table.height(y), None, "y = {y}");
+                continue;
+            }
+            let i = t as usize;
+            let (a, b) = (entry(i), entry(i + 1));
+            let expected = a + (t - i as f64) * (b - a);
+            assert_eq!(
+                table.height(y).map(f64::to_bits),
+                Some(expected.to_bits()),
+                "y = {y}"
+            );
+        }
+        assert_eq!(table.height(lo - 1e-6), None);
+        assert_eq!(table.height(hi + 1e-6), None);
+    }
+}
