@@ -119,11 +119,17 @@ impl SideGap<'_> {
             return;
         }
         let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
-        for group in blocks.clone().step_by(GROUP_BLOCKS) {
-            let group = group..(group + GROUP_BLOCKS).min(blocks.end);
+        // Groups aligned on multiples of GROUP_BLOCKS, their extents tabulated; the first
+        // and last may hold fewer of the scanned blocks, and their whole group's extent
+        // holds those blocks' extents.
+        let mut next = blocks.start;
+        while next < blocks.end {
+            let g = next / GROUP_BLOCKS;
+            let group = next..((g + 1) * GROUP_BLOCKS).min(blocks.end);
+            next = group.end;
             // A group or block whose bound reaches the threshold has no low sample (the
             // bound covers every sample of its blocks, in `samples` or not).
-            if self.extent_bound(self.extent(group.clone()), pose) >= threshold {
+            if self.extent_bound(self.group_extents[g], pose) >= threshold {
                 runs.high((group.start * SCAN_BLOCK).max(first));
                 continue;
             }
@@ -141,6 +147,15 @@ impl SideGap<'_> {
                 }
             }
         }
+    }
+
+    /// The wheel extents of the groups of [`GROUP_BLOCKS`] blocks aligned on its multiples
+    /// (the last group holding the blocks left), for [`SideGap::new`].
+    pub(super) fn group_extents(&self) -> Vec<[f64; 4]> {
+        (0..self.blocks.len())
+            .step_by(GROUP_BLOCKS)
+            .map(|g| self.extent(g..(g + GROUP_BLOCKS).min(self.blocks.len())))
+            .collect()
     }
 
     /// The wheel extents `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of a run of blocks.
@@ -217,7 +232,10 @@ mod tests {
             let threshold = rigid + 0.25 + crate::gap::COARSE_MARGIN_MM;
             for group in (0..side.blocks.len()).step_by(GROUP_BLOCKS) {
                 let group = group..(group + GROUP_BLOCKS).min(side.blocks.len());
-                let bound = side.extent_bound(side.extent(group.clone()), &pose);
+                let extent = side.extent(group.clone());
+                let tabulated = side.group_extents[group.start / GROUP_BLOCKS];
+                assert_eq!(tabulated.map(f64::to_bits), extent.map(f64::to_bits));
+                let bound = side.extent_bound(extent, &pose);
                 for b in group {
                     let block = side.extent_bound(side.blocks[b], &pose);
                     assert!(bound <= block, "group {bound} above block {b} {block}");
