@@ -11,8 +11,11 @@
 //! `skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan`).
 //!
 //! The quasi-elastic pass starts from the rigid contact point, where the gap is lowest: the
-//! run of low samples around it is followed sample by sample (its blocks would not be
-//! skipped anyway), and only the rest of the wheel is scanned by bounds. Every sample's
+//! run of low samples around it is followed (its blocks would not be skipped anyway), a
+//! whole block at a time where an upper bound of the block's coarse gaps lies below the
+//! threshold (`SideGap::block_all_low`, checked in
+//! `blocks_shown_all_low_have_only_low_samples`), else sample by sample; only the rest of
+//! the wheel is scanned by lower bounds. Every sample's
 //! status is still known exactly, so the regions are the same from any start
 //! (`following_the_run_from_any_start_finds_the_regions_of_the_scan`).
 
@@ -64,13 +67,31 @@ impl SideGap<'_> {
         });
         match start {
             Some(i) if low(i) => {
-                // The run a..=b around i, and the high samples a - 1 and b + 1 (if any).
+                // The run a..=b around i, and the high samples a - 1 and b + 1 (if any):
+                // a whole block at a time where its bound shows every sample low.
+                let all_low = |b: usize| self.block_all_low(b, pose, threshold);
                 let (mut a, mut b) = (i, i);
-                while a > first && low(a - 1) {
-                    a -= 1;
+                loop {
+                    if a % SCAN_BLOCK == 0 && a >= first + SCAN_BLOCK && all_low(a / SCAN_BLOCK - 1)
+                    {
+                        a -= SCAN_BLOCK;
+                    } else if a > first && low(a - 1) {
+                        a -= 1;
+                    } else {
+                        break;
+                    }
                 }
-                while b + 1 < last && low(b + 1) {
-                    b += 1;
+                loop {
+                    if (b + 1) % SCAN_BLOCK == 0
+                        && b + SCAN_BLOCK < last
+                        && all_low((b + 1) / SCAN_BLOCK)
+                    {
+                        b += SCAN_BLOCK;
+                    } else if b + 1 < last && low(b + 1) {
+                        b += 1;
+                    } else {
+                        break;
+                    }
                 }
                 if a > first {
                     self.scan_blocks(pose, threshold, first..a - 1, &mut runs);
@@ -98,11 +119,17 @@ impl SideGap<'_> {
             return;
         }
         let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
-        for group in blocks.clone().step_by(GROUP_BLOCKS) {
-            let group = group..(group + GROUP_BLOCKS).min(blocks.end);
+        // Groups aligned on multiples of GROUP_BLOCKS, their extents tabulated; the first
+        // and last may hold fewer of the scanned blocks, and their whole group's extent
+        // holds those blocks' extents.
+        let mut next = blocks.start;
+        while next < blocks.end {
+            let g = next / GROUP_BLOCKS;
+            let group = next..((g + 1) * GROUP_BLOCKS).min(blocks.end);
+            next = group.end;
             // A group or block whose bound reaches the threshold has no low sample (the
             // bound covers every sample of its blocks, in `samples` or not).
-            if self.extent_bound(self.extent(group.clone()), pose) >= threshold {
+            if self.extent_bound(self.group_extents[g], pose) >= threshold {
                 runs.high((group.start * SCAN_BLOCK).max(first));
                 continue;
             }
@@ -120,6 +147,15 @@ impl SideGap<'_> {
                 }
             }
         }
+    }
+
+    /// The wheel extents of the groups of [`GROUP_BLOCKS`] blocks aligned on its multiples
+    /// (the last group holding the blocks left), for [`SideGap::new`].
+    pub(super) fn group_extents(&self) -> Vec<[f64; 4]> {
+        (0..self.blocks.len())
+            .step_by(GROUP_BLOCKS)
+            .map(|g| self.extent(g..(g + GROUP_BLOCKS).min(self.blocks.len())))
+            .collect()
     }
 
     /// The wheel extents `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of a run of blocks.
@@ -196,7 +232,10 @@ mod tests {
             let threshold = rigid + 0.25 + crate::gap::COARSE_MARGIN_MM;
             for group in (0..side.blocks.len()).step_by(GROUP_BLOCKS) {
                 let group = group..(group + GROUP_BLOCKS).min(side.blocks.len());
-                let bound = side.extent_bound(side.extent(group.clone()), &pose);
+                let extent = side.extent(group.clone());
+                let tabulated = side.group_extents[group.start / GROUP_BLOCKS];
+                assert_eq!(tabulated.map(f64::to_bits), extent.map(f64::to_bits));
+                let bound = side.extent_bound(extent, &pose);
                 for b in group {
                     let block = side.extent_bound(side.blocks[b], &pose);
                     assert!(bound <= block, "group {bound} above block {b} {block}");
@@ -206,6 +245,37 @@ mod tests {
             }
         }
         assert!(2 * skipped > groups, "{skipped} of {groups} groups skipped");
+    }
+
+    /// A block that `block_all_low` passes has every coarse sample below the threshold,
+    /// on both wheels over the paper sweep at thresholds from 1e-3 to 10 mm above the rigid
+    /// minimum; and blocks pass (the run is followed a block at a time).
+    #[test]
+    fn blocks_shown_all_low_have_only_low_samples() {
+        let (placement, sweep) = paper_sweep(-20.0, 80);
+        let (mut passed, mut blocks) = (0, 0);
+        for (side, sign, k) in [(&placement.left, 1.0, 0), (&placement.right, -1.0, 1)] {
+            let side = SideGap::new(side, sign);
+            for p in &sweep.positions {
+                let pose = SidePose::new(sign, p.y_ws, p.roll);
+                let g = side.at(p.contact[k].unwrap().s, &pose).unwrap().g;
+                for above in [1e-3, 0.01, 0.1, 0.3, 1.0, 10.0] {
+                    let threshold = g + above;
+                    for b in 0..side.blocks.len() {
+                        blocks += 1;
+                        if !side.block_all_low(b, &pose, threshold) {
+                            continue;
+                        }
+                        passed += 1;
+                        for i in block_samples(b, 0, side.coarse.len()) {
+                            let gap = side.coarse_gap(i, &pose);
+                            assert!(gap < threshold, "block {b} sample {i}: {gap} {threshold}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(passed > 2000 && passed < blocks, "{passed} of {blocks}");
     }
 
     /// Following the run around a start point finds the regions of the scan without one

@@ -131,6 +131,8 @@ pub struct SideGap<'a> {
     /// [`PlacedWheel::cells`] bounds, so that a bound from them holds for every point of the
     /// wheel there (the scan for basins and the certificate read them).
     cert_blocks: Vec<[f64; 4]>,
+    /// The extents of `blocks` over the groups of the low-region scan (`low.rs`).
+    group_extents: Vec<[f64; 4]>,
     tabulated: Option<Tables>,
     /// The wheel profile's domain: beyond it the profile is clamped, and a point there
     /// would be a phantom of the wheel's end displaced sideways.
@@ -186,13 +188,14 @@ impl<'a> SideGap<'a> {
             })
             .collect();
         let cert_blocks = certified_blocks(&pair.wheel, &coarse, blocks.len());
-        SideGap {
+        let mut side = SideGap {
             pair,
             rail: pair.rail(),
             sign,
             coarse,
             blocks,
             cert_blocks,
+            group_extents: Vec::new(),
             tabulated: None,
             domain: (lo, hi),
             joints: pair.wheel.profile().joints(),
@@ -216,7 +219,9 @@ impl<'a> SideGap<'a> {
                 b.sort_by(f64::total_cmp);
                 b
             },
-        }
+        };
+        side.group_extents = side.group_extents();
+        side
     }
     /// Where the wheel profile's second derivative may jump (joints, spline knots) and the
     /// ends of its domain, increasing (mm).

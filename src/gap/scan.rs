@@ -139,6 +139,29 @@ impl Scanned {
     }
 }
 
+/// How far below the threshold [`SideGap::block_all_low`] wants its bound (mm): the
+/// sample's own rounding (the pose applied, the height interpolated between two entries
+/// above their minimum) moves its coarse gap by ulps of the 500 mm wheel radius, 1e-13 mm;
+/// this margin covers that 10,000 times, and costs nothing measurable (a block that close
+/// to the threshold is checked sample by sample).
+pub(super) const ALL_LOW_MARGIN_MM: f64 = 1e-9;
+
+/// The side-frame span `[Y_lo, Y_hi, z_lo, z_hi]` of the wheel points with `Yw` and `Zw`
+/// within `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` at `pose`, by the operations of
+/// [`SidePose::apply`] on the range ends: rounding is monotone in each operand, so the
+/// span holds each point's own rounded `Y` and `z`.
+#[inline]
+fn extent_span([yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4], pose: &SidePose) -> [f64; 4] {
+    let (cos, sin) = (pose.cos, pose.sin);
+    // Y = delta + cos Yw - sin Zw, z = sin Yw + cos Zw (cos > 0); Yw and Zw vary
+    // independently within their ranges, so the extremes lie at range ends.
+    let (a, c) = (-sin * zw_lo, -sin * zw_hi);
+    let y_lo = pose.delta + cos * yw_lo + a.min(c);
+    let y_hi = pose.delta + cos * yw_hi + a.max(c);
+    let (u, v) = (sin * yw_lo, sin * yw_hi);
+    [y_lo, y_hi, u.min(v) + cos * zw_lo, u.max(v) + cos * zw_hi]
+}
+
 /// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
 /// wheel point against the highest rail point under it) is too high to matter is skipped.
 /// Wider blocks have looser bounds (more samples evaluated in vain: 47% of the evaluated
@@ -351,17 +374,24 @@ impl SideGap<'_> {
         [yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4],
         pose: &SidePose,
     ) -> f64 {
-        let (cos, sin) = (pose.cos, pose.sin);
-        // Y = delta + cos Yw - sin Zw, z = sin Yw + cos Zw (cos > 0); Yw and Zw vary
-        // independently within their ranges, so the extremes lie at range ends.
-        let (a, c) = (-sin * zw_lo, -sin * zw_hi);
-        let y_lo = pose.delta + cos * yw_lo + a.min(c);
-        let y_hi = pose.delta + cos * yw_hi + a.max(c);
-        let z_lo = (sin * yw_lo).min(sin * yw_hi) + cos * zw_lo;
+        let [y_lo, y_hi, z_lo, _] = extent_span([yw_lo, yw_hi, zw_lo, zw_hi], pose);
         self.rail
             .heights()
             .max_over(y_lo, y_hi)
             .map_or(f64::INFINITY, |rail| z_lo - rail)
+    }
+
+    /// Whether every coarse sample of block `b` has a coarse gap below `threshold` at
+    /// `pose`: an upper bound of their gaps (the highest they can be against the lowest the
+    /// rail table is under the lateral span they cover) lies below it by more than
+    /// [`ALL_LOW_MARGIN_MM`]. False where a sample may lie off the table.
+    #[inline]
+    pub(super) fn block_all_low(&self, b: usize, pose: &SidePose, threshold: f64) -> bool {
+        let [y_lo, y_hi, _, z_hi] = extent_span(self.blocks[b], pose);
+        self.rail
+            .heights()
+            .min_over(y_lo, y_hi)
+            .is_some_and(|rail| z_hi - rail < threshold - ALL_LOW_MARGIN_MM)
     }
 
     /// A lower bound of the gap of the whole wheel over the cells of block `b` (its

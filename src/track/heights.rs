@@ -23,6 +23,19 @@ pub struct HeightTable {
     /// `block_max[k][j]`: the highest of `z[j B ..= (j + 2^k) B]`, `B` = [`HEIGHT_BLOCK`] (a
     /// sparse table: the maximum over any run of blocks is the larger of two entries).
     block_max: Vec<Vec<f64>>,
+    /// `block_min[k][j]`: the lowest of the same entries, NaN where one is NaN (a rail
+    /// point the table has no height for).
+    block_min: Vec<Vec<f64>>,
+}
+
+/// The smaller of `a` and `b`, NaN where either is: a lower bound that a missing height
+/// cannot hide in.
+fn min_or_nan(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.min(b)
+    }
 }
 
 /// Entries of [`HeightTable`] per block of its block maxima.
@@ -45,16 +58,27 @@ impl HeightTable {
         // Every interpolated height between entries i and i + 1 lies below the maximum of
         // block i / B, which includes the first entry of the next block.
         let blocks = n / HEIGHT_BLOCK + 1;
+        let block = |j: usize| {
+            let end = (j * HEIGHT_BLOCK + HEIGHT_BLOCK).min(n + 1);
+            &z[j * HEIGHT_BLOCK..=end]
+        };
         let block_max = super::sparse::doubling_levels(
             (0..blocks)
-                .map(|j| {
-                    let end = (j * HEIGHT_BLOCK + HEIGHT_BLOCK).min(n + 1);
-                    z[j * HEIGHT_BLOCK..=end]
-                        .iter()
-                        .fold(f64::NEG_INFINITY, |m, &v| m.max(v))
-                })
+                .map(|j| block(j).iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v)))
                 .collect(),
             f64::max,
+        );
+        // Likewise every interpolated height lies above the minimum of its block (to
+        // rounding).
+        let block_min = super::sparse::doubling_levels(
+            (0..blocks)
+                .map(|j| {
+                    block(j)
+                        .iter()
+                        .fold(f64::INFINITY, |m, &v| min_or_nan(m, v))
+                })
+                .collect(),
+            min_or_nan,
         );
         HeightTable {
             y0: lo,
@@ -62,6 +86,7 @@ impl HeightTable {
             t_max: n as f64,
             z: z.iter().zip(&z[1..]).map(|(&a, &b)| [a, b - a]).collect(),
             block_max,
+            block_min,
         }
     }
 
@@ -83,6 +108,27 @@ impl HeightTable {
         let level = &self.block_max[k];
         let (a, b) = (level[j_lo as usize], level[(j_hi + 1 - (1 << k)) as usize]);
         Some(if a > b { a } else { b })
+    }
+
+    /// A lower bound of the interpolated height over `[y_lo, y_hi]` (to rounding: within
+    /// an ulp of the heights), or `None` unless that interval lies inside the table and has
+    /// a height everywhere. Exact to within the height variation of 16 entries.
+    #[inline]
+    pub fn min_over(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
+        let t_lo = (y_lo - self.y0) * self.inv_step;
+        let t_hi = (y_hi - self.y0) * self.inv_step;
+        // Also rejects NaN: outside the table there is no height to bound.
+        if !(t_lo >= 0.0 && t_hi <= self.t_max && t_lo <= t_hi) {
+            return None;
+        }
+        // An interpolated height at t lies between the entries floor(t) and floor(t) + 1,
+        // both in block floor(t) / B (which holds the next block's first entry).
+        let j_lo = (t_lo as i32 as u32) / HEIGHT_BLOCK as u32;
+        let j_hi = (t_hi as i32 as u32) / HEIGHT_BLOCK as u32;
+        let k = (u32::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
+        let level = &self.block_min[k];
+        let low = min_or_nan(level[j_lo as usize], level[(j_hi + 1 - (1 << k)) as usize]);
+        (!low.is_nan()).then_some(low)
     }
 
     /// The interpolated height at `y`, or `None` outside the table.
