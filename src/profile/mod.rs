@@ -190,8 +190,24 @@ impl Profile {
             Shape::Uic60 => uic60::eval(u),
             Shape::Sampled(sp) => {
                 let (lo, hi) = sp.domain();
-                sp.eval(u.clamp(lo, hi))
+                sp.eval_inside(u.clamp(lo, hi))
             }
+        }
+    }
+
+    /// [`Profile::eval`] to the bit, for a scan at increasing `u`: a sampled profile's
+    /// spline carries its interval along in `cursor` (see [`Cursor`]) instead of looking it
+    /// up. Any `u` is allowed; one below the previous takes the lookup.
+    #[inline]
+    pub(crate) fn eval_from(&self, cursor: &mut Cursor, u: f64) -> [f64; 3] {
+        match &self.shape {
+            Shape::Sampled(sp) => {
+                let (lo, hi) = sp.domain();
+                sp.eval_walk(&mut cursor.interval, u.clamp(lo, hi))
+            }
+            // As in `eval` (not a call to it: one call per evaluation, as there).
+            Shape::S1002 => s1002::eval(u),
+            Shape::Uic60 => uic60::eval(u),
         }
     }
 
@@ -284,6 +300,13 @@ impl Profile {
     }
 }
 
+/// Where a scan along a profile is (see [`Profile::eval_from`]): the spline interval of its
+/// last evaluation. A new cursor starts at the first interval.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Cursor {
+    interval: usize,
+}
+
 /// Curvature of a graph `v(u)` from its derivatives, positive where the surface is convex
 /// towards the other body (`-v'' / (1 + v'^2)^(3/2)`; both side frames have `v''` < 0 on a
 /// convex bump).
@@ -314,6 +337,38 @@ mod tests {
                     .iter()
                     .all(|j| rows.iter().any(|r| (r[0] - *j).abs() < 1e-9))
             );
+        }
+    }
+
+    /// A scan from a cursor is `eval` to the bit, built-in and sampled profiles alike, over
+    /// and beyond the domain (clamped), at increasing `u` and stepping back.
+    #[test]
+    fn eval_from_a_cursor_is_eval_to_the_bit() {
+        let sampled = |p: Profile| {
+            let points = p.sample(0.25).iter().map(|r| [r[0], r[1]]).collect();
+            let points = read::PointProfile::from_points(p.kind(), "sampled", points).unwrap();
+            Profile::from_points(points, 0.0).unwrap()
+        };
+        for p in [
+            Profile::s1002(),
+            Profile::uic60e1(),
+            sampled(Profile::s1002()),
+            sampled(Profile::uic60e1()),
+        ] {
+            let (lo, hi) = p.domain();
+            let n = 20_000;
+            let us = (0..=n).map(|k| lo - 1.0 + (hi - lo + 2.0) * f64::from(k) / f64::from(n));
+            let back = (0..=n / 10).map(|k| hi - (hi - lo) * f64::from(k) / f64::from(n / 10));
+            let mut cursor = Cursor::default();
+            for u in us.chain(back) {
+                let (got, want) = (p.eval_from(&mut cursor, u), p.eval(u));
+                assert_eq!(
+                    got.map(f64::to_bits),
+                    want.map(f64::to_bits),
+                    "{} {u}",
+                    p.name()
+                );
+            }
         }
     }
 
