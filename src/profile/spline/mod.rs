@@ -168,13 +168,6 @@ impl SmoothingSpline {
             let s = self.end_slopes[1];
             return [v + s * (x - x1), s, 0.0];
         }
-        self.eval_inside(x)
-    }
-
-    /// [`eval`](Self::eval) for `x` inside [`domain`](Self::domain) (or NaN): what callers
-    /// that clamp `x` themselves (`Profile::eval`) read, without the extrapolation tests.
-    #[inline]
-    pub(crate) fn eval_inside(&self, x: f64) -> [f64; 3] {
         self.eval_piece(self.interval(x), x)
     }
 
