@@ -195,6 +195,22 @@ impl Profile {
         }
     }
 
+    /// [`Profile::eval`] to the bit, for a scan at increasing `u`: a sampled profile's
+    /// spline carries its interval along in `cursor` (see [`Cursor`]) instead of looking it
+    /// up. Any `u` is allowed; one below the previous takes the lookup.
+    #[inline]
+    pub(crate) fn eval_from(&self, cursor: &mut Cursor, u: f64) -> [f64; 3] {
+        match &self.shape {
+            Shape::Sampled(sp) => {
+                let (lo, hi) = sp.domain();
+                sp.eval_walk(&mut cursor.interval, u.clamp(lo, hi))
+            }
+            // Through `eval`, not its arms: a second caller of `s1002::eval` would keep it
+            // from being inlined into `eval`, which the gap calls most.
+            _ => self.eval(u),
+        }
+    }
+
     /// Tangent of the profile's own contact angle at `u` (no inclination, no roll): positive
     /// where the surface falls towards the field side as a coned tread does
     /// (`-dF/ds` for a wheel; for a rail `dz/dy`, which is positive where the rail surface
@@ -257,10 +273,12 @@ impl Profile {
     /// Samples the profile every `step_mm` over its domain (both ends included), plus the
     /// section joints, as `[u, v, tan_gamma, convex_curvature]` rows.
     pub fn sample(&self, step_mm: f64) -> Vec<[f64; 4]> {
+        // The positions increase: a scan from a cursor (the same values as `eval`).
+        let mut cursor = Cursor::default();
         self.sample_positions(step_mm)
             .into_iter()
             .map(|u| {
-                let [v, d1, d2] = self.eval(u);
+                let [v, d1, d2] = self.eval_from(&mut cursor, u);
                 // `tan_gamma(u)` from the slope just evaluated (the same number).
                 let tan_gamma = match self.kind {
                     ProfileKind::Wheel => -d1,
@@ -284,6 +302,13 @@ impl Profile {
     }
 }
 
+/// Where a scan along a profile is (see [`Profile::eval_from`]): the spline interval of its
+/// last evaluation. A new cursor starts at the first interval.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Cursor {
+    interval: usize,
+}
+
 /// Curvature of a graph `v(u)` from its derivatives, positive where the surface is convex
 /// towards the other body (`-v'' / (1 + v'^2)^(3/2)`; both side frames have `v''` < 0 on a
 /// convex bump).
@@ -296,10 +321,27 @@ pub fn convex_curvature(d1: f64, d2: f64) -> f64 {
 mod tests {
     use super::*;
 
+    /// S1002 and UIC60, and both sampled every 0.25 mm (joints included) and fitted by an
+    /// interpolating spline.
+    fn built_in_and_sampled() -> [Profile; 4] {
+        let sampled = |p: Profile| {
+            let points = p.sample(0.25).iter().map(|r| [r[0], r[1]]).collect();
+            let points = read::PointProfile::from_points(p.kind(), "sampled", points).unwrap();
+            Profile::from_points(points, 0.0).unwrap()
+        };
+        [
+            Profile::s1002(),
+            Profile::uic60e1(),
+            sampled(Profile::s1002()),
+            sampled(Profile::uic60e1()),
+        ]
+    }
+
     #[test]
     fn samples_are_the_profile_at_the_sample_positions() {
-        // The same numbers as evaluating each column on its own, to the bit.
-        for p in [Profile::s1002(), Profile::uic60e1()] {
+        // The same numbers as evaluating each column on its own, to the bit (a sampled
+        // profile's rows come from a cursor).
+        for p in built_in_and_sampled() {
             let rows = p.sample(0.7);
             let us = p.sample_positions(0.7);
             assert_eq!(rows.len(), us.len());
@@ -314,6 +356,28 @@ mod tests {
                     .iter()
                     .all(|j| rows.iter().any(|r| (r[0] - *j).abs() < 1e-9))
             );
+        }
+    }
+
+    /// A scan from a cursor is `eval` to the bit, built-in and sampled profiles alike, over
+    /// and beyond the domain (clamped), at increasing `u` and stepping back.
+    #[test]
+    fn eval_from_a_cursor_is_eval_to_the_bit() {
+        for p in built_in_and_sampled() {
+            let (lo, hi) = p.domain();
+            let n = 20_000;
+            let us = (0..=n).map(|k| lo - 1.0 + (hi - lo + 2.0) * f64::from(k) / f64::from(n));
+            let back = (0..=n / 10).map(|k| hi - (hi - lo) * f64::from(k) / f64::from(n / 10));
+            let mut cursor = Cursor::default();
+            for u in us.chain(back) {
+                let (got, want) = (p.eval_from(&mut cursor, u), p.eval(u));
+                assert_eq!(
+                    got.map(f64::to_bits),
+                    want.map(f64::to_bits),
+                    "{} {u}",
+                    p.name()
+                );
+            }
         }
     }
 

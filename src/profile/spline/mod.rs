@@ -168,7 +168,13 @@ impl SmoothingSpline {
             let s = self.end_slopes[1];
             return [v + s * (x - x1), s, 0.0];
         }
-        let i = self.interval(x);
+        self.eval_piece(self.interval(x), x)
+    }
+
+    /// The cubic of interval `i` at `x`: the one formula of every evaluation, so that
+    /// [`eval_walk`](Self::eval_walk) gives the same bits as [`eval`](Self::eval).
+    #[inline(always)]
+    fn eval_piece(&self, i: usize, x: f64) -> [f64; 3] {
         let [a, b, c, d] = self.coeffs[i];
         let t = x - self.knots[i];
         [
@@ -176,6 +182,28 @@ impl SmoothingSpline {
             b + t * (2.0 * c + 3.0 * t * d),
             2.0 * c + 6.0 * t * d,
         ]
+    }
+
+    /// [`eval`](Self::eval) at `x` inside the domain (or NaN) for a scan at increasing `x`:
+    /// `*interval` is the interval of the previous `x` (0 to start), stepped forward to the
+    /// last `i` with `knots[i] <= x` instead of the bucket lookup of every `eval` (half its
+    /// work). The same interval, so the same bits as `eval`; an `x` below the previous
+    /// interval, or NaN, takes the lookup.
+    #[inline]
+    pub(crate) fn eval_walk(&self, interval: &mut usize, x: f64) -> [f64; 3] {
+        let knots = &self.knots;
+        let last = knots.len() - 2;
+        let mut i = (*interval).min(last);
+        if knots[i] <= x {
+            while i < last && knots[i + 1] <= x {
+                i += 1;
+            }
+        } else {
+            // A step back, or NaN.
+            i = self.interval_cold(x);
+        }
+        *interval = i;
+        self.eval_piece(i, x)
     }
 
     /// Bounds of `f'` and `f''` over `[lo, hi]` (inside the domain): per cubic piece,
@@ -218,6 +246,14 @@ impl SmoothingSpline {
     /// First and last knot (mm).
     pub fn domain(&self) -> (f64, f64) {
         (self.knots[0], self.knots[self.knots.len() - 1])
+    }
+
+    /// [`interval`](Self::interval) out of line: the walk's rare step back stays out of the
+    /// short loop that scans.
+    #[cold]
+    #[inline(never)]
+    fn interval_cold(&self, x: f64) -> usize {
+        self.interval(x)
     }
 
     /// Index of the interval `[knots[i], knots[i + 1]]` holding `x` (x inside the domain):
@@ -513,6 +549,49 @@ mod tests {
             let want = x.partition_point(|&v| v <= t).clamp(1, x.len() - 1) - 1;
             assert_eq!(s.interval(t), want, "knot {t}");
         }
+    }
+
+    /// The walk of a scan gives `eval`'s bits at every point: increasing (every knot, and
+    /// 20 points per interval on uneven knots with a cluster of 1e-6 mm steps), stepping
+    /// back (the lookup), both ends and NaN.
+    #[test]
+    fn walk_is_eval_to_the_bit() {
+        let mut x = vec![0.0];
+        for i in 1..200 {
+            let step = if (50..60).contains(&i) {
+                1e-6
+            } else {
+                0.1 + (i % 7) as f64 * 0.05
+            };
+            x.push(x[i - 1] + step);
+        }
+        let y: Vec<f64> = x.iter().map(|x| x.cos()).collect();
+        let s = SmoothingSpline::fit(&x, &y, 0.0).unwrap();
+        let (a, b) = s.domain();
+        let n = 20 * x.len();
+        let mut ts: Vec<f64> = (0..=n).map(|k| a + (b - a) * k as f64 / n as f64).collect();
+        ts.extend(&x);
+        ts.sort_by(f64::total_cmp);
+        // Increasing, then the same points again from the end of the walk (every one a step
+        // back to the lookup or within the last interval), then in a scrambled order.
+        let scrambled = (0..ts.len()).map(|k| ts[(k * 7919) % ts.len()]);
+        let order: Vec<f64> = ts
+            .iter()
+            .copied()
+            .chain(ts.iter().copied().rev())
+            .chain(scrambled)
+            .collect();
+        let mut interval = 0;
+        for &t in &order {
+            let (got, want) = (s.eval_walk(&mut interval, t), s.eval(t));
+            assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "t = {t}");
+        }
+        assert!(s.eval_walk(&mut interval, f64::NAN)[0].is_nan());
+        // The walk goes on from the lookup after NaN.
+        assert_eq!(
+            s.eval_walk(&mut interval, b).map(f64::to_bits),
+            s.eval(b).map(f64::to_bits)
+        );
     }
 
     #[test]

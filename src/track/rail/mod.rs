@@ -16,7 +16,7 @@
 
 use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
-use crate::profile::{Profile, ProfileKind};
+use crate::profile::{Cursor, Profile, ProfileKind};
 use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
 
 mod surface;
@@ -82,6 +82,12 @@ pub struct PlacedRail {
     splits: Vec<Split>,
 }
 
+/// How the placement evaluates the rail profile at increasing `u` (its scan and tables):
+/// [`Profile::eval`] to the bit, from a [`Cursor`] that a sampled profile carries along.
+trait ScanEval: Fn(&Profile, &mut Cursor, f64) -> [f64; 3] + Copy {}
+
+impl<F: Fn(&Profile, &mut Cursor, f64) -> [f64; 3] + Copy> ScanEval for F {}
+
 /// The rail profile sampled every [`PLACEMENT_SCAN_STEP_MM`] for its placement.
 struct Scan {
     /// The profile coordinates of the samples: `lo + (hi - lo) i / n`.
@@ -95,13 +101,16 @@ struct Scan {
 }
 
 impl Scan {
-    fn of(profile: &Profile, rotation: UnitComplex<f64>) -> Scan {
+    /// The scan of `profile`, evaluated by `eval` (see [`ScanEval`]).
+    fn of(profile: &Profile, rotation: UnitComplex<f64>, eval: impl ScanEval) -> Scan {
         let (lo, hi) = profile.domain();
         let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
+        // The samples increase: a scan from a cursor (the same values as `eval`).
+        let mut cursor = Cursor::default();
         let (points, steep) = (0..=n)
             .map(|i| {
                 let u = lo + (hi - lo) * i as f64 / n as f64;
-                let [v, d1, _] = profile.eval(u);
+                let [v, d1, _] = eval(profile, &mut cursor, u);
                 let p = rotation * Point2::new(u, v);
                 let t = rotation * Vector2::new(1.0, d1);
                 ([p.x, p.y], t.x <= 0.0 || t.y.abs() > MAX_RAIL_SLOPE * t.x)
@@ -153,6 +162,23 @@ impl PlacedRail {
                 expected: ProfileKind::Rail,
             });
         }
+        // The scan and the tables evaluate the profile at increasing `u`: a sampled one
+        // from a cursor, a built-in one as everywhere (one dispatch here, not per point).
+        if profile.is_sampled() {
+            PlacedRail::place_with(profile, profile_inclination, layout, Profile::eval_from)
+        } else {
+            let eval = |p: &Profile, _: &mut Cursor, u| p.eval(u);
+            PlacedRail::place_with(profile, profile_inclination, layout, eval)
+        }
+    }
+
+    /// [`PlacedRail::place`] for a rail profile evaluated by `eval` in its scan and tables.
+    fn place_with(
+        profile: Profile,
+        profile_inclination: Inclination,
+        layout: &TrackLayout,
+        eval: impl ScanEval,
+    ) -> Result<PlacedRail, PlacementError> {
         // Counter-clockwise in (Y field-side, Z up) tilts the head towards the track centre;
         // the translation follows from the rotated head below.
         let rotation = UnitComplex::new(layout.inclination.0 - profile_inclination.0);
@@ -170,7 +196,7 @@ impl PlacedRail {
             surface_table: SurfaceTable::default(),
             splits: Vec::new(),
         };
-        let scan = Scan::of(&rail.profile, rotation);
+        let scan = Scan::of(&rail.profile, rotation, eval);
         let (i_top, top) = rail.find_top(&scan);
         let floor = top[1] - layout.gauge_point_depth_mm;
         let gp = rail.find_gauge_point(&scan, floor)?;
@@ -184,9 +210,9 @@ impl PlacedRail {
             rail.point_of(rail.surface.0)[0],
             rail.point_of(rail.surface.1)[0],
         );
-        rail.tabulate_inverse();
+        rail.tabulate_inverse(eval);
         // The heights are read from the surface table, which is built first.
-        rail.tabulate_surface();
+        rail.tabulate_surface(eval);
         rail.heights = HeightTable::new(&rail, HEIGHT_TABLE_STEP_MM);
         Ok(rail)
     }
@@ -352,11 +378,26 @@ impl PlacedRail {
     /// from `u`.
     #[inline]
     fn invert(&self, y: f64, u: f64) -> (f64, RailPoint) {
+        self.invert_with(y, u, |u| self.profile.eval(u))
+    }
+
+    /// [`PlacedRail::invert`] evaluating the profile by `eval` (`Profile::eval` or the
+    /// same bits from a cursor, for the tables built at increasing `y`).
+    #[inline]
+    fn invert_with(&self, y: f64, u: f64, eval: impl FnMut(f64) -> [f64; 3]) -> (f64, RailPoint) {
+        let (u, value) = self.newton(y, u, eval);
+        (u, self.point_from(u, value))
+    }
+
+    /// Newton's method on `Y(u) = y` from `u`, the profile evaluated by `eval`: the root
+    /// `u` and the profile's `[v, v', v'']` there.
+    #[inline]
+    fn newton(&self, y: f64, u: f64, mut eval: impl FnMut(f64) -> [f64; 3]) -> (f64, [f64; 3]) {
         let target = y - self.frame.translation.x;
         let (cos, sin) = self.cos_sin();
         let (lo, hi) = self.surface;
         let mut u = u.clamp(lo, hi);
-        let mut value = self.profile.eval(u);
+        let mut value = eval(u);
         for _ in 0..MAX_NEWTON_STEPS {
             let yu = cos * u - sin * value[0];
             let dyu = cos - sin * value[1];
@@ -368,32 +409,35 @@ impl PlacedRail {
                 let [v, d1, d2] = value;
                 let d = -step;
                 value = [v + d * (d1 + 0.5 * d * d2), d1 + d * d2, d2];
-                u = next;
-                break;
+                return (next, value);
             }
             u = next.clamp(lo, hi);
-            value = self.profile.eval(u);
+            value = eval(u);
             if step.abs() < INVERSE_TOL_MM {
                 break;
             }
         }
+        (u, value)
+    }
+
+    /// The rail point of the profile coordinate `u` with the profile's `[v, v', v'']` there.
+    #[inline]
+    fn point_from(&self, u: f64, value: [f64; 3]) -> RailPoint {
+        let (cos, sin) = self.cos_sin();
         let [v, d1, d2] = value;
         let ty = cos - sin * d1;
         let tz = sin + cos * d1;
         // For the rotated curve (Y(u), Z(u)): Z'' = (Y'Z'' - Z'Y'')/Y'^3 = v''/Y'^3.
-        (
-            u,
-            RailPoint {
-                z: sin * u + cos * v + self.frame.translation.y,
-                slope: tz / ty,
-                d2: d2 / (ty * ty * ty),
-            },
-        )
+        RailPoint {
+            z: sin * u + cos * v + self.frame.translation.y,
+            slope: tz / ty,
+            d2: d2 / (ty * ty * ty),
+        }
     }
 
     /// Fills the table of start guesses: exact inverses (from the linearised inverse, as
     /// many Newton steps as needed) every `INVERSE_TABLE_STEP_MM` or less.
-    fn tabulate_inverse(&mut self) {
+    fn tabulate_inverse(&mut self, eval: impl ScanEval) {
         let (y_lo, y_hi) = self.y_range;
         let n = ((y_hi - y_lo) / INVERSE_TABLE_STEP_MM).ceil().max(1.0) as usize;
         let h = (y_hi - y_lo) / n as f64;
@@ -401,11 +445,14 @@ impl PlacedRail {
         // at the first).
         let (cos, sin) = self.cos_sin();
         let mut guess = (y_lo - self.frame.translation.x) / cos;
+        // The entries increase in `y`, so in `u`: the profile from a cursor.
+        let mut cursor = Cursor::default();
+        let mut eval = |u| eval(&self.profile, &mut cursor, u);
         self.inverse = (0..=n)
             .map(|i| {
                 let y = if i == n { y_hi } else { y_lo + h * i as f64 };
-                let (u, _) = self.invert(y, guess);
-                let d1 = self.profile.eval(u)[1];
+                let (u, _) = self.invert_with(y, guess, &mut eval);
+                let d1 = eval(u)[1];
                 let du_dy = 1.0 / (cos - sin * d1);
                 guess = u + h * du_dy;
                 [u, du_dy]

@@ -1,7 +1,8 @@
 //! The placed rail's surface table: quintic Hermite pieces of `Z(Y)` (see the parent
 //! module's docs for what is tabulated and what falls back to the inversion).
 
-use super::{PlacedRail, RailPoint};
+use super::{PlacedRail, RailPoint, ScanEval};
+use crate::profile::Cursor;
 use crate::profile::bounds::BOUND_PAD;
 use std::sync::OnceLock;
 
@@ -219,7 +220,7 @@ impl PlacedRail {
     /// [`SURFACE_TABLE_STEP_MM`]; pieces that are steep, hold a joint of an analytic rail or
     /// several knots of a sampled one are left out (NaN), pieces that hold one knot are split
     /// there (see [`SURFACE_TABLE_MAX_SLOPE`]).
-    pub(super) fn tabulate_surface(&mut self) {
+    pub(super) fn tabulate_surface(&mut self, eval: impl ScanEval) {
         let (y_lo, y_hi) = self.y_range;
         let n = ((y_hi - y_lo) / SURFACE_TABLE_STEP_MM).floor() as usize;
         let h = SURFACE_TABLE_STEP_MM;
@@ -242,9 +243,12 @@ impl PlacedRail {
         };
         knots.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut next_knot = 0;
-        let node = |i: usize| {
+        // The nodes increase in `y`, so in `u`: the profile from a cursor (the same bits).
+        let mut cursor = Cursor::default();
+        let mut node = |i: usize| {
             let y = y_lo + h * i as f64;
-            self.invert(y, self.guess(y)).1
+            let eval = |u| eval(&self.profile, &mut cursor, u);
+            self.invert_with(y, self.guess(y), eval).1
         };
         let steep = |p: &RailPoint| !(p.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && p.z.is_finite());
         // A piece holds at most one split, at a knot of its own inside it: the knots on the

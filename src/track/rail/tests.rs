@@ -220,3 +220,33 @@ fn height_table_minimum_lies_below_every_height_of_the_interval() {
         assert!(bounded > 2000, "{bounded}");
     }
 }
+
+/// The placement of a sampled rail, whose scan and tables read the profile from a cursor,
+/// is the placement from `Profile::eval` at every point, to the bit: the same top, gauge
+/// point, inverse table, quintic pieces, split pieces and heights.
+#[test]
+fn sampled_placement_from_a_cursor_is_the_placement_from_eval() {
+    let layout = paper_layout();
+    let fast = PlacedRail::place(sampled_uic60(), Inclination::VERTICAL, &layout).unwrap();
+    let eval = |p: &Profile, _: &mut Cursor, u| p.eval(u);
+    let slow =
+        PlacedRail::place_with(sampled_uic60(), Inclination::VERTICAL, &layout, eval).unwrap();
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    assert_eq!(bits(&fast.top()), bits(&slow.top()));
+    assert_eq!(bits(&fast.gauge_point()), bits(&slow.gauge_point()));
+    assert_eq!(fast.y_range(), slow.y_range());
+    assert_eq!(
+        bits(fast.inverse.as_flattened()),
+        bits(slow.inverse.as_flattened())
+    );
+    // Debug prints every f64 to its shortest round trip: equal text, equal bits.
+    let text = |r: &PlacedRail| format!("{:?} {:?}", r.surface_table, r.splits);
+    assert!(!fast.splits.is_empty());
+    assert_eq!(text(&fast), text(&slow));
+    let (lo, hi) = fast.y_range();
+    for k in 0..=10_000 {
+        let y = lo + (hi - lo) * f64::from(k) / 10_000.0;
+        let (p, q) = (fast.heights().height(y), slow.heights().height(y));
+        assert_eq!(p.map(f64::to_bits), q.map(f64::to_bits), "{y}");
+    }
+}
