@@ -46,16 +46,26 @@ fn all_gaps(side: &SideGap, pose: &SidePose) -> Vec<(usize, f64)> {
 /// What the scan for basins recorded for the certificate is what a sample by sample
 /// evaluation gives: every sample of every block it marks evaluated bit for bit
 /// ([`SideGap::coarse_gap`]), the block's lowest and whether all are over the rail; at
-/// least one block is evaluated where a sample lies above the rail.
+/// least one block is evaluated where a sample lies above the rail. Every sample of a
+/// block it skipped lies above the lowest sample plus [`COARSE_MARGIN_MM`] (what the
+/// certificate relies on, and what makes the skip change no basin).
 fn assert_scanned_gaps_exact(side: &SideGap, pose: &SidePose, scanned: &Scanned) {
     let (first, last) = scanned.range;
+    let level = (first..last)
+        .map(|i| side.coarse_gap(i, pose))
+        .fold(f64::INFINITY, f64::min)
+        + COARSE_MARGIN_MM;
     let mut evaluated = 0;
     for b in first / SCAN_BLOCK..last.div_ceil(SCAN_BLOCK) {
+        let samples = super::scan::block_samples(b, first, last);
         if !scanned.evaluated(b) {
+            for i in samples {
+                let g = side.coarse_gap(i, pose);
+                assert!(g > level, "skipped sample {i}: {g} at {pose:?}");
+            }
             continue;
         }
         evaluated += 1;
-        let samples = super::scan::block_samples(b, first, last);
         let (mut lowest, mut on_rail) = (f64::INFINITY, true);
         for i in samples {
             let g = side.coarse_gap(i, pose);
