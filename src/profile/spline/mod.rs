@@ -526,8 +526,9 @@ mod tests {
         assert!((f - mean).abs() < 1e-4 && d1.abs() < 1e-4, "{f} {d1}");
     }
 
-    #[test]
-    fn lookup_matches_binary_search_on_uneven_knots() {
+    /// An interpolating spline of `cos` on 200 uneven knots (steps of 0.1 to 0.4 with a
+    /// cluster of 1e-6 mm steps), and its knots.
+    fn uneven_cosine() -> (Vec<f64>, SmoothingSpline) {
         let mut x = vec![0.0];
         for i in 1..200 {
             let step = if (50..60).contains(&i) {
@@ -539,6 +540,12 @@ mod tests {
         }
         let y: Vec<f64> = x.iter().map(|x| x.cos()).collect();
         let s = SmoothingSpline::fit(&x, &y, 0.0).unwrap();
+        (x, s)
+    }
+
+    #[test]
+    fn lookup_matches_binary_search_on_uneven_knots() {
+        let (x, s) = uneven_cosine();
         let (a, b) = s.domain();
         for k in 0..=5000 {
             let t = a + (b - a) * k as f64 / 5000.0;
@@ -556,17 +563,7 @@ mod tests {
     /// back (the lookup), both ends and NaN.
     #[test]
     fn walk_is_eval_to_the_bit() {
-        let mut x = vec![0.0];
-        for i in 1..200 {
-            let step = if (50..60).contains(&i) {
-                1e-6
-            } else {
-                0.1 + (i % 7) as f64 * 0.05
-            };
-            x.push(x[i - 1] + step);
-        }
-        let y: Vec<f64> = x.iter().map(|x| x.cos()).collect();
-        let s = SmoothingSpline::fit(&x, &y, 0.0).unwrap();
+        let (x, s) = uneven_cosine();
         let (a, b) = s.domain();
         let n = 20 * x.len();
         let mut ts: Vec<f64> = (0..=n).map(|k| a + (b - a) * k as f64 / n as f64).collect();
