@@ -15,8 +15,8 @@
 //! whole block at a time where an upper bound of the block's coarse gaps lies below the
 //! threshold (`SideGap::block_all_low`, checked in
 //! `blocks_shown_all_low_have_only_low_samples`), else sample by sample; only the rest of
-//! the wheel is scanned by lower bounds. Every sample's
-//! status is still known exactly, so the regions are the same from any start
+//! the wheel is scanned by lower bounds. Every sample's status is still known exactly, so
+//! the regions are the same from any start
 //! (`following_the_run_from_any_start_finds_the_regions_of_the_scan`).
 
 use super::scan::{SCAN_BLOCK, block_samples};
