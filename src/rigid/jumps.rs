@@ -203,4 +203,36 @@ mod tests {
         eprintln!("{solves} solves");
         assert!(solves <= 12, "{solves} solves");
     }
+
+    /// A cold solve is a function of its shift and start roll alone, whatever was solved
+    /// before with the same scratch (what `search` relies on to solve the first midpoint
+    /// of a window once for both wheels): compared bit for bit through `Debug` at the
+    /// midpoints of a sweep of 1 mm steps, each solved after a nearby shift (whose pose
+    /// boxes hold it) and after a far one.
+    #[test]
+    fn a_cold_solve_does_not_depend_on_what_was_solved_before() {
+        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let sides = [
+            SideGap::new(&placement.left, 1.0),
+            SideGap::new(&placement.right, -1.0),
+        ];
+        let settings = RollSettings::default();
+        let mut scratch = Scratch::default();
+        let cold = |y: f64, theta0: f64, scratch: &mut Scratch| {
+            scratch.warm = false;
+            solve_default(&sides, &settings, y, theta0, scratch)
+        };
+        for i in -15..15 {
+            let (y, theta0) = (f64::from(i) + 0.5, 1e-4 * f64::from(i));
+            let solved: Vec<String> = [y - 0.3, -14.0 * y.signum()]
+                .map(|before| {
+                    let p = cold(before, 0.0, &mut scratch);
+                    scratch.warm = p.stop == crate::rigid::Stop::Converged;
+                    format!("{:?}", cold(y, theta0, &mut scratch))
+                })
+                .into();
+            assert_eq!(solved[0], solved[1], "y = {y}");
+        }
+    }
 }
