@@ -6,7 +6,7 @@ use crate::gap::{self, Basin, GapPoint, PoseBox, Scanned, SideGap, SidePose};
 
 /// Buffers reused across positions (no allocation per position). The basins of the last
 /// solution start the next position (continuation): its scan at the solution verifies them.
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub(super) struct Scratch {
     pub(super) basins: [Vec<Basin>; 2],
     /// Per side, the block bounds of the scans over a box of poses about the last ones.

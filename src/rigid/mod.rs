@@ -425,11 +425,30 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     backward.reverse();
     positions.extend(backward);
     positions.extend(forward);
-    // Each bisection starts cold, then continues from its previous midpoint.
+    // Each bisection starts cold, then continues from its previous midpoint. Where both
+    // wheels' refinements of one window start at the same shift from the same roll (the
+    // midpoint, where no secant is found: most windows of a sweep of 1 mm steps), the cold
+    // solve is made once and the scratch it left restored for the second: a cold solve
+    // depends on its shift and start roll alone (the pose boxes it may inherit change the
+    // work, not the result; the test `a_cold_solve_does_not_depend_on_what_was_solved_before`),
+    // so the second refinement goes on exactly as after solving again.
     let separable = solver == Solver::NoRoll;
+    let mut first: Option<((u64, u64), Position, Scratch)> = None;
     let jumps = find_jumps(&sides, &positions, separable, |y, theta0, cold, only| {
-        scratch.warm &= !cold;
-        solve(y, theta0, &mut scratch, only)
+        if !cold || only.is_some() {
+            return solve(y, theta0, &mut scratch, only);
+        }
+        let key = (y.to_bits(), theta0.to_bits());
+        if let Some((k, p, after)) = &first
+            && *k == key
+        {
+            scratch.clone_from(after);
+            return *p;
+        }
+        scratch.warm = false;
+        let p = solve(y, theta0, &mut scratch, only);
+        first = Some((key, p, scratch.clone()));
+        p
     });
     RigidSweep {
         solver,
