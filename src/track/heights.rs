@@ -102,11 +102,9 @@ impl HeightTable {
         }
         // An interpolated height at t lies below the maximum of block floor(t) / B. Through
         // i32 as in `height`; both are inside [0, t_max] after the clamps.
-        let j_lo = (t_lo.max(0.0) as i32 as u32) / HEIGHT_BLOCK as u32;
-        let j_hi = (t_hi.min(self.t_max) as i32 as u32) / HEIGHT_BLOCK as u32;
-        let k = (u32::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
+        let (k, first, second) = sparse_entries(t_lo.max(0.0), t_hi.min(self.t_max));
         let level = &self.block_max[k];
-        let (a, b) = (level[j_lo as usize], level[(j_hi + 1 - (1 << k)) as usize]);
+        let (a, b) = (level[first], level[second]);
         Some(if a > b { a } else { b })
     }
 
@@ -123,11 +121,9 @@ impl HeightTable {
         }
         // An interpolated height at t lies between the entries floor(t) and floor(t) + 1,
         // both in block floor(t) / B (which holds the next block's first entry).
-        let j_lo = (t_lo as i32 as u32) / HEIGHT_BLOCK as u32;
-        let j_hi = (t_hi as i32 as u32) / HEIGHT_BLOCK as u32;
-        let k = (u32::BITS - 1 - (j_hi - j_lo + 1).leading_zeros()) as usize;
+        let (k, first, second) = sparse_entries(t_lo, t_hi);
         let level = &self.block_min[k];
-        let low = min_or_nan(level[j_lo as usize], level[(j_hi + 1 - (1 << k)) as usize]);
+        let low = min_or_nan(level[first], level[second]);
         (!low.is_nan()).then_some(low)
     }
 
@@ -146,4 +142,15 @@ impl HeightTable {
         let [a, d] = self.z[ti as usize];
         Some(a + f * d)
     }
+}
+
+/// The level `k` and the two entries of that level of a sparse table of block unions whose
+/// union covers the blocks of the table coordinates `t_lo..=t_hi` (both in `[0, t_max]`,
+/// `t_lo <= t_hi`). Through i32 as in [`HeightTable::height`].
+#[inline]
+fn sparse_entries(t_lo: f64, t_hi: f64) -> (usize, usize, usize) {
+    let j_lo = (t_lo as i32 as u32) / HEIGHT_BLOCK as u32;
+    let j_hi = (t_hi as i32 as u32) / HEIGHT_BLOCK as u32;
+    let k = super::sparse::level_of((j_hi - j_lo + 1) as usize);
+    (k, j_lo as usize, j_hi as usize + 1 - (1 << k))
 }
