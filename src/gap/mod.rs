@@ -22,7 +22,7 @@ mod minimum;
 mod scan;
 mod tabulated;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
 use scan::SCAN_BLOCK;
@@ -165,6 +165,15 @@ fn certified_blocks(wheel: &PlacedWheel, coarse: &[[f64; 3]], count: usize) -> V
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
 pub(crate) type Basin = (f64, f64);
 impl<'a> SideGap<'a> {
+    /// Both sides of a placement, left (+1) then right (-1): the order of every per-side
+    /// array of the searches.
+    pub fn both(placement: &'a crate::track::Placement) -> [SideGap<'a>; 2] {
+        [
+            SideGap::new(&placement.left, 1.0),
+            SideGap::new(&placement.right, -1.0),
+        ]
+    }
+
     /// Prepares the side with `sign` (+1 left, -1 right).
     pub fn new(pair: &'a SidePair, sign: f64) -> SideGap<'a> {
         let (lo, hi) = pair.wheel.profile().domain();

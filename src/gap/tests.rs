@@ -4,8 +4,9 @@ use super::scan::{POSE_BOX_DELTA_MM, POSE_BOX_SIN, SCAN_BLOCK};
 use super::*;
 use crate::scene::Scene;
 
-/// The paper scene's placement (defaults of an empty scene file).
-pub(super) fn placement() -> crate::track::Placement {
+/// The paper scene's placement (defaults of an empty scene file), for the tests of the
+/// searches that stand on the gap.
+pub(crate) fn placement() -> crate::track::Placement {
     let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
     crate::pipeline::place(&scene).unwrap()
 }

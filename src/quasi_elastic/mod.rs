@@ -166,10 +166,7 @@ pub struct QuasiElasticSweep {
 /// assert!((patch.s - rigid.positions[0].contact[0].unwrap().s).abs() < 3.0);
 /// ```
 pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) -> QuasiElasticSweep {
-    let sides = [
-        SideGap::new(&placement.left, 1.0),
-        SideGap::new(&placement.right, -1.0),
-    ];
+    let sides = SideGap::both(placement);
     // Positions are independent: averaged in parallel (rayon), buffers per thread.
     use rayon::prelude::*;
     let positions = rigid

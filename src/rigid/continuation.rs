@@ -95,14 +95,12 @@ impl Continuation {
 mod tests {
     use super::super::{Solver, search};
     use super::*;
-    use crate::scene::Scene;
 
     /// On the paper sweep (0 to 15 mm) the predicted contact point lies far closer to the
     /// solved one than the previous contact point does (where the followed basin would start).
     #[test]
     fn predicted_contact_points_start_closer_than_the_previous_ones() {
-        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
-        let placement = crate::pipeline::place(&scene).unwrap();
+        let placement = crate::gap::tests::placement();
         let sweep: Vec<f64> = (0..=150).map(|i| 0.1 * f64::from(i)).collect();
         let positions = search(&placement, &sweep, Solver::default()).positions;
         let mut path = Continuation::new(0.0);
@@ -133,8 +131,7 @@ mod tests {
     /// and nothing is predicted after a jump.
     #[test]
     fn contact_points_moving_linearly_are_predicted_exactly() {
-        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
-        let placement = crate::pipeline::place(&scene).unwrap();
+        let placement = crate::gap::tests::placement();
         let mut p = search(&placement, &[1.0], Solver::default()).positions[0];
         let mut path = Continuation::new(0.0);
         // Moves of 0.25 mm (below JUMP_SCREEN_MM), exact in binary.

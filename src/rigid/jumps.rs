@@ -183,10 +183,7 @@ mod tests {
             assert!((w.s_to - f.s_to).abs() < 0.05, "{w:?} vs {f:?}");
         }
         // The jump of the right wheel between -5 and -4 mm, alone.
-        let sides = [
-            SideGap::new(&placement.left, 1.0),
-            SideGap::new(&placement.right, -1.0),
-        ];
+        let sides = SideGap::both(&placement);
         let settings = RollSettings::default();
         let mut scratch = Scratch::default();
         let mut solves = 0;
@@ -211,12 +208,8 @@ mod tests {
     /// boxes hold it) and after a far one.
     #[test]
     fn a_cold_solve_does_not_depend_on_what_was_solved_before() {
-        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
-        let placement = crate::pipeline::place(&scene).unwrap();
-        let sides = [
-            SideGap::new(&placement.left, 1.0),
-            SideGap::new(&placement.right, -1.0),
-        ];
+        let placement = crate::gap::tests::placement();
+        let sides = SideGap::both(&placement);
         let settings = RollSettings::default();
         let mut scratch = Scratch::default();
         let cold = |y: f64, theta0: f64, scratch: &mut Scratch| {

@@ -109,10 +109,7 @@ mod tests {
     #[test]
     fn joined_halves_are_the_whole_position() {
         let (_, placement) = en15302_e1();
-        let sides = [
-            SideGap::new(&placement.left, 1.0),
-            SideGap::new(&placement.right, -1.0),
-        ];
+        let sides = SideGap::both(&placement);
         let mut scratch = Scratch::default();
         for i in -70..=70 {
             let y = 0.1 * f64::from(i) + 1e-3;
@@ -136,10 +133,7 @@ mod tests {
     fn jumps_refined_on_one_wheel_are_those_of_whole_positions() {
         let (scene, placement) = en15302_e1();
         let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
-        let sides = [
-            SideGap::new(&placement.left, 1.0),
-            SideGap::new(&placement.right, -1.0),
-        ];
+        let sides = SideGap::both(&placement);
         let mut scratch = Scratch::default();
         let (mut halves, mut wholes) = (0, 0);
         let whole = find_jumps(&sides, &sweep.positions, false, |y, _, _, only| {

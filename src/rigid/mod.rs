@@ -367,10 +367,7 @@ fn side_index(side: Side) -> usize {
 /// assert!(sweep.positions[1].roll > 0.0);
 /// ```
 pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidSweep {
-    let mut sides = [
-        SideGap::new(&placement.left, 1.0),
-        SideGap::new(&placement.right, -1.0),
-    ];
+    let mut sides = SideGap::both(placement);
     if solver == Solver::Paper {
         sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
     }

@@ -322,13 +322,11 @@ impl Iteration {
 mod tests {
     use super::super::{Solver, search};
     use super::*;
-    use crate::scene::Scene;
 
     /// The settings the solver carries decide where it stops, and the position says why.
     #[test]
     fn the_settings_decide_where_the_iteration_stops() {
-        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
-        let placement = crate::pipeline::place(&scene).unwrap();
+        let placement = crate::gap::tests::placement();
         let default = search(&placement, &[5.0], Solver::default()).positions[0];
         assert_eq!(default.stop, Stop::Converged);
         assert!(default.residual <= RollSettings::default().residual_tol_mm);
