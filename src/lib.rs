@@ -73,11 +73,22 @@
 //! This is the full statement: the types that carry a frame restate it, and every CSV header
 //! repeats it.
 
+/// Counts `n` events of a [`counters`] kind with the feature `count-evaluations`; nothing
+/// without it.
+macro_rules! count {
+    ($event:ident, $n:expr) => {
+        #[cfg(feature = "count-evaluations")]
+        $crate::counters::add($crate::counters::Event::$event, $n as u64);
+    };
+}
+
 #[cfg(feature = "cli")]
 pub mod app;
 pub mod cache;
 pub mod conicity;
 pub mod cost;
+#[cfg(feature = "count-evaluations")]
+pub mod counters;
 pub mod error;
 pub mod fleet;
 pub mod gap;

@@ -230,6 +230,7 @@ impl SideGap<'_> {
         search: &mut Search,
         stack: &mut Vec<Cell>,
     ) {
+        count!(DeepCell, 1);
         let (a, b) = (cell.a.s, cell.b.s);
         if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
             return;

@@ -100,6 +100,7 @@ impl SideGap<'_> {
         pose_box: &mut PoseBox,
         scanned: &mut Scanned,
     ) -> Certificate {
+        count!(Certificate, 1);
         debug_assert_eq!(scanned.pose, Some(*pose));
         debug_assert!(pose_box.holds(pose));
         let cells = self.pair.wheel.cells(self.coarse.len() - 1);

@@ -256,6 +256,7 @@ impl<'a> SideGap<'a> {
         if !(self.domain.0..=self.domain.1).contains(&s) {
             return None;
         }
+        count!(ExactGap, 1);
         let wheel = self.pair.wheel.at(s);
         let [y, z_rel] = pose.apply(wheel.y, wheel.z);
         let rail = self.rail.at(y)?;

@@ -220,6 +220,7 @@ impl SideGap<'_> {
         out: &mut Vec<Basin>,
     ) {
         out.clear();
+        count!(Scan, 1);
         // Only wheel samples that can lie above the rail.
         let (first, last) = self.over_rail(pose);
         let coarse = &self.coarse[first..last];
@@ -332,6 +333,7 @@ impl SideGap<'_> {
         pose: &SidePose,
         scanned: &mut Scanned,
     ) -> (f64, bool) {
+        count!(CoarseSample, range.len());
         let heights = self.rail.heights();
         let (mut low, mut on_rail) = (f64::INFINITY, true);
         let gaps = &mut scanned.gaps[range.clone()];
@@ -350,6 +352,7 @@ impl SideGap<'_> {
     /// The coarse gap (table rail) of sample `i`, `+inf` where it is not above the rail.
     #[inline]
     pub(super) fn coarse_gap(&self, i: usize, pose: &SidePose) -> f64 {
+        count!(CoarseSample, 1);
         let [_, yw, zw] = self.coarse[i];
         let [y, z] = pose.apply(yw, zw);
         self.rail
