@@ -8,6 +8,10 @@
 //! leaves the other groups' files (a tradeoff study beside a report) and never touches a
 //! file it did not write (a user's notes, the scene file itself). A file with the name of one
 //! of the run's outputs is replaced whoever wrote it: that name is the report's.
+//!
+//! A run killed before it finished leaves its staged and set-aside files under hidden names
+//! that carry its process id; the next run into the folder clears them up
+//! (`recover_leftovers`) once the system shows that process gone.
 
 use crate::Error;
 use crate::outputs::OutputFile;
@@ -16,6 +20,10 @@ use std::path::{Path, PathBuf};
 
 /// The manifest's file name.
 pub const MANIFEST: &str = ".wheelrail-manifest";
+/// A run's new file waiting in the folder: `.wheelrail-new-PID-NAME`.
+const STAGED: &str = ".wheelrail-new-";
+/// A file a run moved aside until its own is in place: `.wheelrail-old-PID-NAME`.
+const ASIDE: &str = ".wheelrail-old-";
 
 /// The command whose files a folder write replaces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -97,6 +105,7 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
         )));
     }
     std::fs::create_dir_all(dir).map_err(|e| folder_error(dir, "create the folder", &e))?;
+    recover_leftovers(dir);
     let old = read_manifest(dir)?;
     let names: BTreeSet<&str> = files.iter().map(|f| f.name.as_str()).collect();
     // Obstacles: an output's name taken by a folder (or anything but a file).
@@ -133,8 +142,8 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
     // folder itself, not in folders of their own: creating and removing a folder cost 0.2
     // to 4 ms on ext4 here (removing one frees its block), a whole report run about 5 ms.
     let pid = std::process::id();
-    let staged = |name: &str| dir.join(format!(".wheelrail-new-{pid}-{name}"));
-    let aside = |name: &str| dir.join(format!(".wheelrail-old-{pid}-{name}"));
+    let staged = |name: &str| dir.join(format!("{STAGED}{pid}-{name}"));
+    let aside = |name: &str| dir.join(format!("{ASIDE}{pid}-{name}"));
     let incoming: Vec<&str> = names.iter().copied().chain([MANIFEST]).collect();
     let result = (|| {
         let write = |e: std::io::Error| folder_error(dir, "write into the folder", &e);
@@ -160,6 +169,52 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
             Err(e)
         }
     }
+}
+
+/// Clears up after a run into `dir` that was killed before it finished (its process is
+/// gone): a file it had moved aside goes back where no other file took its place, and is
+/// removed where one did; a file it had staged is removed. Files of a run still going (a
+/// process writing the same folder now) are left alone, and so is everything where the
+/// system cannot tell whether a process runs. Best effort: what cannot be moved or removed
+/// stays as it was.
+fn recover_leftovers(dir: &Path) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let file_name = entry.file_name();
+        let Some((aside, pid, name)) = file_name.to_str().and_then(leftover) else {
+            continue;
+        };
+        if pid == std::process::id() || may_be_running(pid) {
+            continue;
+        }
+        let target = dir.join(name);
+        if aside && std::fs::symlink_metadata(&target).is_err() {
+            let _ = std::fs::rename(entry.path(), target);
+        } else {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
+}
+
+/// `(aside, pid, name)` of a file a run staged (`aside` false) or moved aside, from its
+/// name; `None` for any other file, and for a name the manifest could not hold.
+fn leftover(file_name: &str) -> Option<(bool, u32, &str)> {
+    let (aside, rest) = match file_name.strip_prefix(ASIDE) {
+        Some(rest) => (true, rest),
+        None => (false, file_name.strip_prefix(STAGED)?),
+    };
+    let (pid, name) = rest.split_once('-')?;
+    let pid = pid.parse().ok()?;
+    (plain_name(name) || name == MANIFEST).then_some((aside, pid, name))
+}
+
+/// Whether process `pid` may still be running. Only Linux's `/proc` tells (and only where it
+/// is mounted); elsewhere every process may be.
+fn may_be_running(pid: u32) -> bool {
+    let proc = Path::new("/proc");
+    !cfg!(target_os = "linux") || !proc.join("self").exists() || proc.join(pid.to_string()).exists()
 }
 
 /// Moves the replaced and stale files in `dir` aside (to `aside(name)`), then the staged
@@ -341,6 +396,68 @@ mod tests {
         write_folder(&dir, Group::Report, &files(&["a.csv"], "3")).unwrap();
         assert_eq!(listing(&dir), [MANIFEST, "a.csv"]);
         let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    /// The id of a process that has ended.
+    #[cfg(target_os = "linux")]
+    fn ended_process() -> u32 {
+        let mut child = std::process::Command::new("true").spawn().unwrap();
+        let pid = child.id();
+        child.wait().unwrap();
+        pid
+    }
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_killed_runs_leftovers_are_put_back_or_removed() {
+        let dir = scratch("killed");
+        write_folder(&dir, Group::Report, &files(&["a.csv", "b.svg"], "1")).unwrap();
+        // A run killed during its swap: b.svg moved aside and not replaced, a.csv replaced
+        // with its old copy still aside, c.csv staged; and a live process's staged file
+        // (pid 1 runs as long as the system does).
+        let gone = ended_process();
+        let name = |kind: &str, pid: u32, file: &str| dir.join(format!("{kind}{pid}-{file}"));
+        std::fs::rename(dir.join("b.svg"), name(ASIDE, gone, "b.svg")).unwrap();
+        std::fs::write(name(ASIDE, gone, "a.csv"), "a.csv 0").unwrap();
+        std::fs::write(name(STAGED, gone, "c.csv"), "half").unwrap();
+        std::fs::write(name(STAGED, 1, "d.csv"), "live").unwrap();
+        write_folder(&dir, Group::Tradeoff, &files(&["t.csv"], "1")).unwrap();
+        let live = format!("{STAGED}1-d.csv");
+        assert_eq!(
+            listing(&dir),
+            [MANIFEST, live.as_str(), "a.csv", "b.svg", "t.csv"]
+        );
+        for file in ["a.csv", "b.svg"] {
+            let text = std::fs::read_to_string(dir.join(file)).unwrap();
+            assert_eq!(text, format!("{file} 1"));
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn only_a_runs_own_hidden_names_are_leftovers() {
+        assert_eq!(
+            leftover(".wheelrail-old-12-a.csv"),
+            Some((true, 12, "a.csv"))
+        );
+        assert_eq!(
+            leftover(".wheelrail-old-12-.wheelrail-manifest"),
+            Some((true, 12, MANIFEST))
+        );
+        assert_eq!(
+            leftover(".wheelrail-new-7-b-c.svg"),
+            Some((false, 7, "b-c.svg"))
+        );
+        for other in [
+            "a.csv",
+            MANIFEST,
+            ".wheelrail-new-x-a.csv",
+            ".wheelrail-new-12",
+            ".wheelrail-old-12-.hidden",
+            ".wheelrail-old-12-../a.csv",
+        ] {
+            assert_eq!(leftover(other), None, "{other}");
+        }
     }
 
     #[test]
