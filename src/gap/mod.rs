@@ -249,15 +249,32 @@ impl<'a> SideGap<'a> {
         &self.pair.wheel
     }
 
+    /// Whether `s` lies inside the wheel profile's domain (where [`SideGap::at`] is defined).
+    #[inline]
+    pub(crate) fn in_domain(&self, s: f64) -> bool {
+        (self.domain.0..=self.domain.1).contains(&s)
+    }
+
     /// The gap at `s` for `pose`, or `None` where the wheel point is not above the rail or
     /// `s` lies outside the wheel profile.
     #[inline]
     pub fn at(&self, s: f64, pose: &SidePose) -> Option<GapPoint> {
-        if !(self.domain.0..=self.domain.1).contains(&s) {
+        if !self.in_domain(s) {
             return None;
         }
+        self.at_wheel_point(s, self.pair.wheel.at(s), pose)
+    }
+
+    /// [`SideGap::at`] with the wheel point at `s` given (`wheel = self.wheel().at(s)`,
+    /// evaluated by the caller, e.g. in SIMD lanes); `s` must lie inside the wheel's domain.
+    #[inline]
+    pub(crate) fn at_wheel_point(
+        &self,
+        s: f64,
+        wheel: WheelPoint,
+        pose: &SidePose,
+    ) -> Option<GapPoint> {
         count!(ExactGap, 1);
-        let wheel = self.pair.wheel.at(s);
         let [y, z_rel] = pose.apply(wheel.y, wheel.z);
         let rail = self.rail.at(y)?;
         // dZw/ds = -F' and dYw/ds = 1; wheel.slope = -F', wheel.d2 = -F''.

@@ -195,6 +195,16 @@ impl Profile {
         }
     }
 
+    /// [`Profile::eval`] of four points at once in SIMD lanes, to the bit, where the profile
+    /// has a lane form and the four share one section (S1002's polynomials); `None` otherwise.
+    #[inline]
+    pub(crate) fn eval_x4(&self, u: [f64; 4]) -> Option<[[f64; 3]; 4]> {
+        match &self.shape {
+            Shape::S1002 => s1002::eval_x4(u),
+            _ => None,
+        }
+    }
+
     /// [`Profile::eval`] to the bit, for a scan at increasing `u`: a sampled profile's
     /// spline carries its interval along in `cursor` (see [`Cursor`]) instead of looking it
     /// up. Any `u` is allowed; one below the previous takes the lookup.

@@ -183,22 +183,35 @@ impl Gauss<'_, '_> {
                     // Nodes in increasing `s`: the lower half from the panel's start inwards.
                     let lower = xs.iter().zip(ws).rev().map(|(x, w)| (-x, *w));
                     let upper = xs.iter().zip(ws).map(|(x, w)| (*x, *w));
-                    for (x, w) in lower.chain(upper) {
-                        let s = mid + 0.5 * h * x;
-                        let Some(p) = self.side.at(s, self.pose) else {
-                            continue;
-                        };
-                        let d = p.g + self.offset;
-                        (s_of[m], d_of[m]) = (s, d);
-                        m += 1;
-                        // f64::min without its NaN handling: the minimum is never NaN, and a
-                        // NaN gap compares false as f64::min ignores it.
-                        if d < current.min_gap {
-                            current.min_gap = d;
-                        }
-                        let z = d / self.eps;
-                        if z <= self.cutoff {
-                            current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
+                    // The panel's nodes and their wheel points, four at a time (SIMD lanes
+                    // where the profile has them: one section per panel, see gauss_region).
+                    let mut panel = [(0.0, 0.0); 8];
+                    let n = xs.len() * 2;
+                    for (slot, (x, w)) in panel.iter_mut().zip(lower.chain(upper)) {
+                        *slot = (mid + 0.5 * h * x, w);
+                    }
+                    for quad in panel[..n].chunks_exact(4) {
+                        let s4 = [quad[0].0, quad[1].0, quad[2].0, quad[3].0];
+                        let wheel = self.side.wheel().at_x4(s4);
+                        for (&(s, w), wp) in quad.iter().zip(wheel) {
+                            if !self.side.in_domain(s) {
+                                continue;
+                            }
+                            let Some(p) = self.side.at_wheel_point(s, wp, self.pose) else {
+                                continue;
+                            };
+                            let d = p.g + self.offset;
+                            (s_of[m], d_of[m]) = (s, d);
+                            m += 1;
+                            // f64::min without its NaN handling: the minimum is never NaN, and a
+                            // NaN gap compares false as f64::min ignores it.
+                            if d < current.min_gap {
+                                current.min_gap = d;
+                            }
+                            let z = d / self.eps;
+                            if z <= self.cutoff {
+                                current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
+                            }
                         }
                     }
                     nodes.extend_from_slice(&s_of[..m]);

@@ -161,7 +161,22 @@ impl PlacedWheel {
     /// The wheel point at profile coordinate `s` (mm), relative to the wheelset centre.
     #[inline]
     pub fn at(&self, s: f64) -> WheelPoint {
-        let [f, d1, d2] = self.profile.eval(s);
+        self.point(s, self.profile.eval(s))
+    }
+
+    /// [`PlacedWheel::at`] of four points, to the bit: in SIMD lanes where the profile
+    /// allows (see [`Profile::eval_x4`]), else one by one.
+    #[inline]
+    pub(crate) fn at_x4(&self, s: [f64; 4]) -> [WheelPoint; 4] {
+        match self.profile.eval_x4(s) {
+            Some(e) => std::array::from_fn(|i| self.point(s[i], e[i])),
+            None => s.map(|x| self.at(x)),
+        }
+    }
+
+    /// The wheel point at `s` from the profile's `[F, F', F'']` there.
+    #[inline(always)]
+    fn point(&self, s: f64, [f, d1, d2]: [f64; 3]) -> WheelPoint {
         WheelPoint {
             y: self.taping_line_mm + s,
             z: -(self.nominal_radius_mm + f),
@@ -227,4 +242,37 @@ pub(crate) fn value_jump(profile: &Profile) -> f64 {
         .into_iter()
         .map(|j| (profile.eval(j)[0] - profile.eval(j - 1e-12)[0]).abs())
         .fold(0.0, f64::max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::track::{Inclination, TrackLayout};
+
+    /// `at_x4` is `at` to the bit over the whole S1002 domain and beyond, for groups of
+    /// four inside one section (lanes) and across joints (the scalar fallback).
+    #[test]
+    fn four_at_once_are_at_to_the_bit() {
+        let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
+        let pair = crate::track::SidePair::place(
+            Profile::s1002(),
+            460.0,
+            Profile::uic60e1(),
+            Inclination::VERTICAL,
+            &layout,
+        )
+        .unwrap();
+        let wheel = &pair.wheel;
+        for i in 0..20_000 {
+            let s0 = -75.0 + 0.007 * f64::from(i);
+            for spread in [1e-3, 0.05, 0.7] {
+                let s = [0.0, 1.0, 2.0, 3.0].map(|k| s0 + spread * k);
+                for (lane, &si) in wheel.at_x4(s).iter().zip(&s) {
+                    let one = wheel.at(si);
+                    let bits = |p: &WheelPoint| [p.y, p.z, p.slope, p.d2].map(f64::to_bits);
+                    assert_eq!(bits(lane), bits(&one), "s = {si}");
+                }
+            }
+        }
+    }
 }
