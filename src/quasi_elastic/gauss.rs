@@ -193,11 +193,9 @@ impl Gauss<'_, '_> {
                     for quad in panel[..n].chunks_exact(4) {
                         let s4 = [quad[0].0, quad[1].0, quad[2].0, quad[3].0];
                         let wheel = self.side.wheel().at_x4(s4);
-                        for (&(s, w), wp) in quad.iter().zip(wheel) {
-                            if !self.side.in_domain(s) {
-                                continue;
-                            }
-                            let Some(p) = self.side.at_wheel_point(s, wp, self.pose) else {
+                        let gaps = self.side.at_x4(s4, wheel, self.pose);
+                        for (&(s, w), p) in quad.iter().zip(gaps) {
+                            let Some(p) = p else {
                                 continue;
                             };
                             let d = p.g + self.offset;
