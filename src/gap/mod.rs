@@ -282,22 +282,28 @@ impl<'a> SideGap<'a> {
 
     /// [`SideGap::at`] of four points with their wheel points given (`wheel[i] =
     /// self.wheel().at(s[i])`, e.g. from [`PlacedWheel::at_x4`]), to the bit: the rail
-    /// looked up for the four at once ([`PlacedRail::at_x4`], SIMD lanes).
+    /// looked up for the four at once ([`PlacedRail::at_x4`], SIMD lanes); `visit(i, gap)`
+    /// for each point `i` (in order) where `at` is `Some(gap)`. A visitor rather than an
+    /// array of four options: the gap points are built in place, not moved through one.
     #[inline]
-    pub(crate) fn at_x4(
+    pub(crate) fn each_x4(
         &self,
         s: [f64; 4],
         wheel: [WheelPoint; 4],
         pose: &SidePose,
-    ) -> [Option<GapPoint>; 4] {
-        let inside = s.map(|s| self.in_domain(s));
-        count!(ExactGap, inside.iter().filter(|&&i| i).count());
+        mut visit: impl FnMut(usize, GapPoint),
+    ) {
         let yz = wheel.map(|w| pose.apply(w.y, w.z));
         let rail = self.rail.at_x4(yz.map(|p| p[0]));
-        std::array::from_fn(|i| {
-            let rail = rail[i].filter(|_| inside[i])?;
-            Some(Self::gap_point(s[i], wheel[i], pose, yz[i], rail))
-        })
+        for i in 0..4 {
+            if !self.in_domain(s[i]) {
+                continue;
+            }
+            count!(ExactGap, 1);
+            if let Some(rail) = rail[i] {
+                visit(i, Self::gap_point(s[i], wheel[i], pose, yz[i], rail));
+            }
+        }
     }
 
     /// The gap point at `s` from its wheel point, the wheel point `[y, z_rel]` placed by

@@ -193,11 +193,8 @@ impl Gauss<'_, '_> {
                     for quad in panel[..n].chunks_exact(4) {
                         let s4 = [quad[0].0, quad[1].0, quad[2].0, quad[3].0];
                         let wheel = self.side.wheel().at_x4(s4);
-                        let gaps = self.side.at_x4(s4, wheel, self.pose);
-                        for (&(s, w), p) in quad.iter().zip(gaps) {
-                            let Some(p) = p else {
-                                continue;
-                            };
+                        self.side.each_x4(s4, wheel, self.pose, |i, p| {
+                            let (s, w) = quad[i];
                             let d = p.g + self.offset;
                             (s_of[m], d_of[m]) = (s, d);
                             m += 1;
@@ -210,7 +207,7 @@ impl Gauss<'_, '_> {
                             if z <= self.cutoff {
                                 current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
                             }
-                        }
+                        });
                     }
                     nodes.extend_from_slice(&s_of[..m]);
                     gaps.extend_from_slice(&d_of[..m]);
