@@ -275,8 +275,47 @@ impl<'a> SideGap<'a> {
         pose: &SidePose,
     ) -> Option<GapPoint> {
         count!(ExactGap, 1);
-        let [y, z_rel] = pose.apply(wheel.y, wheel.z);
-        let rail = self.rail.at(y)?;
+        let yz = pose.apply(wheel.y, wheel.z);
+        let rail = self.rail.at(yz[0])?;
+        Some(Self::gap_point(s, wheel, pose, yz, rail))
+    }
+
+    /// [`SideGap::at`] of four points with their wheel points given (`wheel[i] =
+    /// self.wheel().at(s[i])`, e.g. from [`PlacedWheel::at_x4`]), to the bit: the rail
+    /// looked up for the four at once ([`PlacedRail::at_x4`], SIMD lanes); `visit(i, gap)`
+    /// for each point `i` (in order) where `at` is `Some(gap)`. A visitor rather than an
+    /// array of four options: the gap points are built in place, not moved through one.
+    #[inline]
+    pub(crate) fn each_x4(
+        &self,
+        s: [f64; 4],
+        wheel: [WheelPoint; 4],
+        pose: &SidePose,
+        mut visit: impl FnMut(usize, GapPoint),
+    ) {
+        let yz = wheel.map(|w| pose.apply(w.y, w.z));
+        let rail = self.rail.at_x4(yz.map(|p| p[0]));
+        for i in 0..4 {
+            if !self.in_domain(s[i]) {
+                continue;
+            }
+            count!(ExactGap, 1);
+            if let Some(rail) = rail[i] {
+                visit(i, Self::gap_point(s[i], wheel[i], pose, yz[i], rail));
+            }
+        }
+    }
+
+    /// The gap point at `s` from its wheel point, the wheel point `[y, z_rel]` placed by
+    /// `pose`, and the rail point below it.
+    #[inline(always)]
+    fn gap_point(
+        s: f64,
+        wheel: WheelPoint,
+        pose: &SidePose,
+        [y, z_rel]: [f64; 2],
+        rail: RailPoint,
+    ) -> GapPoint {
         // dZw/ds = -F' and dYw/ds = 1; wheel.slope = -F', wheel.d2 = -F''.
         let f1 = -wheel.slope;
         let f2 = -wheel.d2;
@@ -285,7 +324,7 @@ impl<'a> SideGap<'a> {
         let ddy = pose.sin * f2;
         let ddz = -pose.cos * f2;
         let rail_dd = rail.d2;
-        Some(GapPoint {
+        GapPoint {
             s,
             g: z_rel - rail.z,
             dg: dz - rail.slope * dy,
@@ -294,6 +333,6 @@ impl<'a> SideGap<'a> {
             z_rel,
             wheel,
             rail,
-        })
+        }
     }
 }

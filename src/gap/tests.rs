@@ -246,3 +246,35 @@ fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
     );
     assert!(skipped > 1000, "the box bounds skipped {skipped} blocks");
 }
+
+/// [`SideGap::each_x4`] on the wheel points of [`PlacedWheel::at_x4`] is [`SideGap::at`] to
+/// the bit, `None` lanes included: groups of four over the whole wheel domain and beyond
+/// (off the profile, off the rail), at every pose of [`poses`].
+#[test]
+fn four_gaps_at_once_are_at_to_the_bit() {
+    let placement = placement();
+    let side = SideGap::new(&placement.left, 1.0);
+    let (lo, hi) = side.domain;
+    let bits = |p: Option<GapPoint>| p.map(|p| [p.g, p.dg, p.ddg, p.y, p.z_rel].map(f64::to_bits));
+    let (mut nones, mut somes) = (0, 0);
+    for pose in poses() {
+        for i in 0..=400 {
+            let s0 = lo - 2.0 + (hi - lo + 4.0) * f64::from(i) / 400.0;
+            for spread in [0.01, 0.3] {
+                let s = [0.0, 1.0, 2.0, 3.0].map(|k| s0 + spread * k);
+                let mut four = [None; 4];
+                side.each_x4(s, side.wheel().at_x4(s), &pose, |i, p| four[i] = Some(p));
+                for (lane, &si) in four.into_iter().zip(&s) {
+                    let one = side.at(si, &pose);
+                    (nones, somes) = (
+                        nones + usize::from(one.is_none()),
+                        somes + usize::from(one.is_some()),
+                    );
+                    assert_eq!(lane, one, "s = {si}");
+                    assert_eq!(bits(lane), bits(one), "s = {si}");
+                }
+            }
+        }
+    }
+    assert!(nones > 0 && somes > 0);
+}

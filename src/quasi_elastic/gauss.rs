@@ -1,7 +1,7 @@
 //! The Gauss-Legendre integration of the weighted averages over one low region: panels of
 //! a few weight widths on the smooth pieces between joints, 8 nodes (4 on short pieces).
 
-use super::weight::exp_neg;
+use super::weight::exp_neg_x4;
 use super::{Average, BARRIER_EPS, FIELDS, Pass, Work, barrier_maxima, fields_of};
 use crate::gap::{SideGap, SidePose};
 
@@ -193,15 +193,13 @@ impl Gauss<'_, '_> {
                     for quad in panel[..n].chunks_exact(4) {
                         let s4 = [quad[0].0, quad[1].0, quad[2].0, quad[3].0];
                         let wheel = self.side.wheel().at_x4(s4);
-                        for (&(s, w), wp) in quad.iter().zip(wheel) {
-                            if !self.side.in_domain(s) {
-                                continue;
-                            }
-                            let Some(p) = self.side.at_wheel_point(s, wp, self.pose) else {
-                                continue;
-                            };
+                        // The weights of the nodes within the cut-off, four at once after
+                        // the gaps (a dummy `z` of 0 in the lanes of nodes without weight).
+                        let (mut z4, mut fields) = ([0.0; 4], [[0.0; FIELDS]; 4]);
+                        let mut weighted = [false; 4];
+                        self.side.each_x4(s4, wheel, self.pose, |i, p| {
                             let d = p.g + self.offset;
-                            (s_of[m], d_of[m]) = (s, d);
+                            (s_of[m], d_of[m]) = (quad[i].0, d);
                             m += 1;
                             // f64::min without its NaN handling: the minimum is never NaN, and a
                             // NaN gap compares false as f64::min ignores it.
@@ -210,7 +208,14 @@ impl Gauss<'_, '_> {
                             }
                             let z = d / self.eps;
                             if z <= self.cutoff {
-                                current.add(0.5 * h * w * exp_neg(z), &fields_of(self.side, &p));
+                                (z4[i], fields[i], weighted[i]) =
+                                    (z, fields_of(self.side, &p), true);
+                            }
+                        });
+                        let weights = exp_neg_x4(z4);
+                        for i in 0..4 {
+                            if weighted[i] {
+                                current.add(0.5 * h * quad[i].1 * weights[i], &fields[i]);
                             }
                         }
                     }

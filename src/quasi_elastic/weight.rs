@@ -65,20 +65,60 @@ const TWO_TO_J_32: [f64; 32] = [
 /// `exp(-z)` for `|z| <= FAST_RANGE`, without branches (see the module docs).
 #[inline(always)]
 fn exp_neg_fast(z: f64) -> f64 {
+    let (t, q) = reduce(-z);
+    scale(t, q)
+}
+
+/// [`exp_neg`] of four values, to the bit: the reduction and the polynomial in SIMD lanes
+/// (the same [`reduce`] as the scalar form), the table lookup and `2^k` per lane, when all
+/// four lie in the fast range; else [`exp_neg`] one by one.
+#[inline]
+pub(super) fn exp_neg_x4(z: [f64; 4]) -> [f64; 4] {
+    if !z.iter().all(|z| z.abs() <= FAST_RANGE) {
+        return z.map(exp_neg);
+    }
+    let (t, q) = reduce(wide::f64x4::from(z.map(|z| -z)));
+    let (t, q) = (t.to_array(), q.to_array());
+    std::array::from_fn(|i| scale(t[i], q[i]))
+}
+
+/// 1.5 * 2^52: adding it rounds to an integer, held in the low bits of the sum.
+const SHIFTER: f64 = 6_755_399_441_055_744.0;
+
+/// The reduction of `exp(x)` (`x = -z`, `|x| <= FAST_RANGE`): `t = x 32 / ln 2 + SHIFTER`,
+/// whose low bits hold `n = round(32 x / ln 2)`, and `q = exp(r) - 1`, for `f64` or SIMD
+/// lanes of `f64`: the same operations in the same order (no fused multiply-add), so each
+/// lane rounds exactly as the scalar form.
+#[inline(always)]
+fn reduce<T>(x: T) -> (T, T)
+where
+    T: Copy
+        + From<f64>
+        + std::ops::Add<Output = T>
+        + std::ops::Sub<Output = T>
+        + std::ops::Mul<Output = T>
+        + std::ops::Div<Output = T>,
+{
     // 32 / ln 2, and ln 2 / 32 split as fdlibm's ln 2 (the high part has 21 trailing zero
     // bits, so that `n ln2_hi / 32` is exact for `|n| < 2^21`).
     const INV_STEP: f64 = 32.0 * std::f64::consts::LOG2_E;
     const STEP_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000) / 32.0;
     const STEP_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76) / 32.0;
-    // 1.5 * 2^52: adding it rounds to an integer, held in the low bits of the sum.
-    const SHIFTER: f64 = 6_755_399_441_055_744.0;
-    let x = -z;
-    let t = x * INV_STEP + SHIFTER;
-    let n = t - SHIFTER;
-    let r = (x - n * STEP_HI) - n * STEP_LO;
+    let k = T::from;
+    let t = x * k(INV_STEP) + k(SHIFTER);
+    let n = t - k(SHIFTER);
+    let r = (x - n * k(STEP_HI)) - n * k(STEP_LO);
     // exp(r) - 1 to degree 6.
-    let q =
-        r * (1.0 + r * (0.5 + r * (1.0 / 6.0 + r * (1.0 / 24.0 + r * (1.0 / 120.0 + r / 720.0)))));
+    let q = r
+        * (k(1.0)
+            + r * (k(0.5)
+                + r * (k(1.0 / 6.0) + r * (k(1.0 / 24.0) + r * (k(1.0 / 120.0) + r / k(720.0))))));
+    (t, q)
+}
+
+/// `exp(x) = 2^k 2^(j/32) (1 + q)` from [`reduce`]'s `t` (holding `n = 32 k + j`) and `q`.
+#[inline(always)]
+fn scale(t: f64, q: f64) -> f64 {
     // The integer n = 32 k + j is the difference of the bit patterns of t and the shifter.
     let n_bits = t.to_bits().wrapping_sub(SHIFTER.to_bits()) as i64;
     let two_j = TWO_TO_J_32[(n_bits & 31) as usize];
@@ -112,5 +152,22 @@ mod tests {
         assert!((zs[1] - (-1.0f64).exp()).abs() <= f64::EPSILON * zs[1]);
         assert!(zs[2] > 0.0);
         assert_eq!(zs[3].to_bits(), 0, "exp(-800) underflows to 0");
+    }
+
+    /// `exp_neg_x4` is `exp_neg` to the bit over the whole fast range and its ends, four
+    /// irregularly spaced values at a time, and where a lane lies beyond the fast range.
+    #[test]
+    fn four_at_once_are_exp_neg_to_the_bit() {
+        let check = |z: [f64; 4]| {
+            let four = exp_neg_x4(z).map(f64::to_bits);
+            assert_eq!(four, z.map(|z| exp_neg(z).to_bits()), "z = {z:?}");
+        };
+        for i in -1_000_000..=1_000_000 {
+            let z = |k: f64| f64::from(i) * 7e-4 + k * 0.173 + 1.234_567e-9;
+            check([z(0.0), z(1.0), z(-2.0), z(3.0)].map(|z| z.clamp(-FAST_RANGE, FAST_RANGE)));
+        }
+        check([0.0, -0.0, FAST_RANGE, -FAST_RANGE]);
+        check([1.0, 2.0, 800.0, 3.0]);
+        check([-800.0, 2.0, 1e-300, 745.0]);
     }
 }

@@ -137,20 +137,33 @@ fn quintic_piece(a: RailPoint, b: RailPoint, h: f64, len: f64) -> [f64; 6] {
 /// The surface from the quintic `c` at `g` (in units of the step; `inv_step` = `1 / h`).
 #[inline]
 fn quintic_point(c: &[f64; 6], f: f64, inv_step: f64) -> RailPoint {
+    let [z, slope, d2] = quintic(*c, f, inv_step);
+    RailPoint { z, slope, d2 }
+}
+
+/// `[Z, dZ/dY, d2Z/dY2]` from the quintic `c` at `f` (`inv_step` = `1 / h`), for `f64` or
+/// for SIMD lanes of `f64`: the same operations in the same order, so each lane rounds
+/// exactly as the scalar evaluation (no fused multiply-add).
+#[inline(always)]
+fn quintic<T>(c: [T; 6], f: T, inv_step: T) -> [T; 3]
+where
+    T: Copy + From<f64> + std::ops::Add<Output = T> + std::ops::Mul<Output = T>,
+{
+    let k = T::from;
     let z = quintic_z(c, f);
-    let dz = c[1] + f * (2.0 * c[2] + f * (3.0 * c[3] + f * (4.0 * c[4] + f * 5.0 * c[5])));
-    let d2 = 2.0 * c[2] + f * (6.0 * c[3] + f * (12.0 * c[4] + f * 20.0 * c[5]));
-    RailPoint {
-        z,
-        slope: dz * inv_step,
-        d2: d2 * inv_step * inv_step,
-    }
+    let dz =
+        c[1] + f * (k(2.0) * c[2] + f * (k(3.0) * c[3] + f * (k(4.0) * c[4] + f * k(5.0) * c[5])));
+    let d2 = k(2.0) * c[2] + f * (k(6.0) * c[3] + f * (k(12.0) * c[4] + f * k(20.0) * c[5]));
+    [z, dz * inv_step, d2 * inv_step * inv_step]
 }
 
 /// The height `Z` from the quintic `c` at `f`: the `z` of [`quintic_point`], by the same
 /// operations.
-#[inline]
-fn quintic_z(c: &[f64; 6], f: f64) -> f64 {
+#[inline(always)]
+fn quintic_z<T>(c: [T; 6], f: T) -> T
+where
+    T: Copy + std::ops::Add<Output = T> + std::ops::Mul<Output = T>,
+{
     c[0] + f * (c[1] + f * (c[2] + f * (c[3] + f * (c[4] + f * c[5]))))
 }
 
@@ -164,29 +177,63 @@ impl PlacedRail {
         if !(y_lo..=y_hi).contains(&y) {
             return None;
         }
+        Some(match self.plain_piece(y) {
+            Some((c, f)) => quintic_z(*c, f),
+            None => self.untabulated_at(y).z,
+        })
+    }
+
+    /// The plain quintic piece of the table at `y` (inside `y_range`) and `y`'s place `f`
+    /// in it (units of the step), `None` where `y` has no plain piece (steep, at a joint,
+    /// split at a knot).
+    #[inline]
+    fn plain_piece(&self, y: f64) -> Option<(&[f64; 6], f64)> {
         let table = &self.surface_table;
         let t = (y - table.y0) * table.inv_step;
+        // `t >= 0` inside y_range (`y0` is its start); through i32 as in `guess`.
         let i = t as i32 as usize;
-        Some(match table.pieces.get(i) {
-            Some(c) if !c[0].is_nan() => quintic_z(c, t - i as f64),
-            _ => self.untabulated_at(y).z,
-        })
+        let c = table.pieces.get(i)?;
+        (!c[0].is_nan()).then_some((c, t - i as f64))
     }
 
     /// The surface at `y` (inside `y_range`) from its quintic piece, `None` where `y` has no
     /// tabulated piece.
     #[inline]
     pub(super) fn tabulated_at(&self, y: f64) -> Option<RailPoint> {
-        let table = &self.surface_table;
-        let t = (y - table.y0) * table.inv_step;
-        // `t >= 0` inside y_range (`y0` is its start); through i32 as in `guess`.
-        let i = t as i32 as usize;
-        let c = table.pieces.get(i)?;
-        if c[0].is_nan() {
-            return None;
-        }
-        let f = t - i as f64;
-        Some(quintic_point(c, f, table.inv_step))
+        let (c, f) = self.plain_piece(y)?;
+        Some(quintic_point(c, f, self.surface_table.inv_step))
+    }
+
+    /// [`PlacedRail::at`] of four lateral positions, to the bit: the quintics of the plain
+    /// pieces in SIMD lanes (each lane's piece looked up on its own, [`quintic`] in the
+    /// lanes), the other lanes (outside `y_range`, untabulated) one by one by `at`.
+    #[inline]
+    pub(crate) fn at_x4(&self, y: [f64; 4]) -> [Option<RailPoint>; 4] {
+        let (y_lo, y_hi) = self.y_range();
+        let piece = |y: f64| {
+            (y_lo..=y_hi)
+                .contains(&y)
+                .then(|| self.plain_piece(y))
+                .flatten()
+        };
+        let pieces = y.map(piece);
+        // Lanes without a plain piece compute a dummy quintic, replaced below.
+        let (c, f) = (
+            pieces.map(|p| p.map_or([0.0; 6], |(c, _)| *c)),
+            pieces.map(|p| p.map_or(0.0, |(_, f)| f)),
+        );
+        let coefficient = |k: usize| wide::f64x4::from([c[0][k], c[1][k], c[2][k], c[3][k]]);
+        let inv_step = wide::f64x4::splat(self.surface_table.inv_step);
+        let [z, slope, d2] =
+            quintic(std::array::from_fn(coefficient), f.into(), inv_step).map(|v| v.to_array());
+        std::array::from_fn(|l| match pieces[l] {
+            Some(_) => Some(RailPoint {
+                z: z[l],
+                slope: slope[l],
+                d2: d2[l],
+            }),
+            None => self.at(y[l]),
+        })
     }
 
     /// The surface at `y` (inside `y_range`) where [`PlacedRail::tabulated_at`] has no

@@ -250,3 +250,29 @@ fn sampled_placement_from_a_cursor_is_the_placement_from_eval() {
         assert_eq!(p.map(f64::to_bits), q.map(f64::to_bits), "{y}");
     }
 }
+
+/// `at_x4` is `at` to the bit, `None` lanes included: every 1e-3 mm from 1 mm before the
+/// running surface to 1 mm after it (outside `y_range`, tabulated, split and inverted
+/// pieces), in groups of four at spreads from within one piece to across several pieces
+/// and the surface's ends (analytic and sampled UIC60).
+#[test]
+fn four_at_once_are_at_to_the_bit() {
+    for profile in [Profile::uic60e1(), sampled_uic60()] {
+        let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
+        let (lo, hi) = rail.y_range();
+        let n = ((hi - lo + 2.0) / 1e-3) as i32;
+        let bits = |p: Option<RailPoint>| p.map(|p| [p.z, p.slope, p.d2].map(f64::to_bits));
+        let mut nones = 0;
+        for i in 0..=n {
+            let y0 = lo - 1.0 + 1e-3 * f64::from(i);
+            for spread in [3e-3, 0.05, 0.7] {
+                let y = [0.0, 1.0, 3.0, 2.0].map(|k| y0 + spread * k);
+                for (lane, &yi) in rail.at_x4(y).into_iter().zip(&y) {
+                    nones += usize::from(lane.is_none());
+                    assert_eq!(bits(lane), bits(rail.at(yi)), "y = {yi}");
+                }
+            }
+        }
+        assert!(nones > 0, "lanes outside the running surface were tried");
+    }
+}
