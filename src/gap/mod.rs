@@ -74,9 +74,24 @@ impl SidePose {
     /// Side-frame lateral position and height above the axle of a wheel point.
     #[inline]
     pub fn apply(&self, yw: f64, zw: f64) -> [f64; 2] {
+        self.apply_to(yw, zw)
+    }
+
+    /// [`SidePose::apply`] for `f64` or for SIMD lanes of `f64`: the same operations in the
+    /// same order, so each lane rounds exactly as the scalar form (no fused multiply-add).
+    #[inline(always)]
+    pub(crate) fn apply_to<T>(&self, yw: T, zw: T) -> [T; 2]
+    where
+        T: Copy
+            + From<f64>
+            + std::ops::Add<Output = T>
+            + std::ops::Sub<Output = T>
+            + std::ops::Mul<Output = T>,
+    {
+        let (cos, sin) = (T::from(self.cos), T::from(self.sin));
         [
-            self.delta + self.cos * yw - self.sin * zw,
-            self.sin * yw + self.cos * zw,
+            T::from(self.delta) + cos * yw - sin * zw,
+            sin * yw + cos * zw,
         ]
     }
 }
