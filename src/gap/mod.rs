@@ -79,6 +79,27 @@ impl SidePose {
             self.sin * yw + self.cos * zw,
         ]
     }
+
+    /// [`SidePose::apply`] for SIMD lanes of `f64` (or `f64`): the same operations in the
+    /// same order, so each lane rounds exactly as the scalar form (no fused multiply-add).
+    /// `apply` keeps its own body: calling this generic form from it cost the quasi-elastic
+    /// pass 0.1 M instructions per call (code generation around its inlined callers);
+    /// `gap::tests::block_gaps_are_the_coarse_gaps_to_the_bit` fails if the two differ.
+    #[inline(always)]
+    pub(crate) fn apply_to<T>(&self, yw: T, zw: T) -> [T; 2]
+    where
+        T: Copy
+            + From<f64>
+            + std::ops::Add<Output = T>
+            + std::ops::Sub<Output = T>
+            + std::ops::Mul<Output = T>,
+    {
+        let (cos, sin) = (T::from(self.cos), T::from(self.sin));
+        [
+            T::from(self.delta) + cos * yw - sin * zw,
+            sin * yw + cos * zw,
+        ]
+    }
 }
 
 /// The gap at one wheel point, with everything the contact quantities need.

@@ -20,6 +20,8 @@
 //! evaluated ([`Scanned`]).
 
 use super::{Basin, COARSE_MARGIN_MM, SideGap, SidePose};
+use crate::track::HeightTable;
+use wide::f64x4;
 
 /// Half the width in `delta` of the box of poses a [`PoseBox`] holds (mm): ten positions of
 /// a sweep at 0.1 mm steps on either side of the pose it was made at. Measured on the paper
@@ -190,6 +192,22 @@ fn lowest_bound(bounds: &[f64]) -> usize {
     best
 }
 
+/// The coarse gap of the wheel point `(yw, zw)` at `pose` against the rail's height
+/// `table`, `+inf` where it is not above the rail: what [`SideGap::block_gaps`] computes in
+/// lanes.
+#[inline(always)]
+fn sample_gap(table: &HeightTable, pose: &SidePose, yw: f64, zw: f64) -> f64 {
+    let [y, z] = pose.apply(yw, zw);
+    table.height(y).map_or(f64::INFINITY, |zr| z - zr)
+}
+
+/// The lower of `low` and `g`, as `f64::min` where `g` is NaN (passed over) without its NaN
+/// handling: the running minimum of the coarse gaps.
+#[inline(always)]
+fn lower(low: f64, g: f64) -> f64 {
+    if g < low { g } else { low }
+}
+
 /// Keeps the coarse minimum `(g, i)` among the lowest `found.len()`.
 #[inline]
 fn record(found: &mut [(f64, usize); 16], count: &mut usize, g: f64, i: usize) {
@@ -335,15 +353,38 @@ impl SideGap<'_> {
     ) -> (f64, bool) {
         count!(CoarseSample, range.len());
         let heights = self.rail.heights();
-        let (mut low, mut on_rail) = (f64::INFINITY, true);
+        let lanes = heights.lanes();
         let gaps = &mut scanned.gaps[range.clone()];
-        for (g, &[_, yw, zw]) in gaps.iter_mut().zip(&self.coarse[range]) {
-            let [y, z] = pose.apply(yw, zw);
-            *g = heights.height(y).map_or(f64::INFINITY, |zr| z - zr);
-            // As `f64::min` (a NaN gap is passed over) without its NaN handling.
-            if *g < low {
-                low = *g;
-            }
+        let coarse = &self.coarse[range];
+        // Four samples at a time in SIMD lanes: the pose and the interpolation are four
+        // independent chains side by side.
+        let inf = f64x4::splat(f64::INFINITY);
+        let (mut low4, mut on4) = (inf, inf.simd_eq(inf));
+        let tail = coarse.len() / 4 * 4;
+        let (quads, rest) = gaps.split_at_mut(tail);
+        for (g4, c4) in quads.chunks_exact_mut(4).zip(coarse.chunks_exact(4)) {
+            let yw = f64x4::from([c4[0][1], c4[1][1], c4[2][1], c4[3][1]]);
+            let zw = f64x4::from([c4[0][2], c4[1][2], c4[2][2], c4[3][2]]);
+            let [y, z] = pose.apply_to(yw, zw);
+            let (zr, on_table) = lanes.height(y);
+            let g = on_table.select(z - zr, inf);
+            g4.copy_from_slice(&g.to_array());
+            // Per lane as `f64::min` (a NaN gap is passed over): a NaN compares false.
+            low4 = g.simd_lt(low4).select(g, low4);
+            // Over the rail: finite (`g < inf` is false for +inf and NaN).
+            on4 &= g.simd_lt(inf);
+        }
+        // The lanes' lowest, then the samples left over. The lowest of a set of gaps does
+        // not depend on the order they are visited in: a gap is never -0 (that needs
+        // z = -0, but the wheel lies hundreds of mm below the axle), so equal gaps are the
+        // same bits.
+        let (mut low, mut on_rail) = (f64::INFINITY, on4.all());
+        for l in low4.to_array() {
+            low = lower(low, l);
+        }
+        for (g, &[_, yw, zw]) in rest.iter_mut().zip(&coarse[tail..]) {
+            *g = sample_gap(heights, pose, yw, zw);
+            low = lower(low, *g);
             on_rail &= *g < f64::INFINITY;
         }
         (low, on_rail)
@@ -354,11 +395,7 @@ impl SideGap<'_> {
     pub(super) fn coarse_gap(&self, i: usize, pose: &SidePose) -> f64 {
         count!(CoarseSample, 1);
         let [_, yw, zw] = self.coarse[i];
-        let [y, z] = pose.apply(yw, zw);
-        self.rail
-            .heights()
-            .height(y)
-            .map_or(f64::INFINITY, |zr| z - zr)
+        sample_gap(self.rail.heights(), pose, yw, zw)
     }
 
     /// A lower bound of the coarse gaps of block `b` at `pose` (`+inf` when none of its

@@ -83,6 +83,52 @@ fn assert_scanned_gaps_exact(side: &SideGap, pose: &SidePose, scanned: &Scanned)
     assert!(evaluated > 0 || !on_rail, "no block evaluated at {pose:?}");
 }
 
+/// The coarse samples of a block four at a time in SIMD lanes ([`SideGap::block_gaps`])
+/// are [`SideGap::coarse_gap`] sample by sample to the bit, with their lowest (bits too)
+/// and whether all lie over the rail: every block of the whole wheel (not only the
+/// over-rail range, so that blocks hold samples off the rail, partly or wholly) at every
+/// pose of the scan tests, the blocks also cut short at either end (1 to 3 samples left
+/// over the lanes, and a start off the lanes' alignment).
+#[test]
+fn block_gaps_are_the_coarse_gaps_to_the_bit() {
+    let placement = placement();
+    let side = SideGap::new(&placement.left, 1.0);
+    let n = side.coarse.len();
+    let mut scanned = Scanned::default();
+    scanned.gaps = vec![f64::NAN; n];
+    let (mut mixed, mut lanes_and_tail) = (0, 0);
+    for pose in poses() {
+        for start in (0..n).step_by(SCAN_BLOCK) {
+            for (cut_start, cut_end) in [(0, 0), (1, 0), (0, 1), (3, 2), (5, 7)] {
+                let range = (start + cut_start).min(n)..(start + SCAN_BLOCK - cut_end).min(n);
+                if range.is_empty() {
+                    continue;
+                }
+                lanes_and_tail += usize::from(range.len() >= 4 && range.len() % 4 != 0);
+                let (lowest, on_rail) = side.block_gaps(range.clone(), &pose, &mut scanned);
+                let (mut expected_low, mut expected_on) = (f64::INFINITY, true);
+                for i in range.clone() {
+                    let g = side.coarse_gap(i, &pose);
+                    assert_eq!(scanned.gaps[i].to_bits(), g.to_bits(), "{i} at {pose:?}");
+                    if g < expected_low {
+                        expected_low = g;
+                    }
+                    expected_on &= g < f64::INFINITY;
+                }
+                let at = format!("{range:?} at {pose:?}");
+                assert_eq!(lowest.to_bits(), expected_low.to_bits(), "{at}");
+                assert_eq!(on_rail, expected_on, "{at}");
+                mixed += usize::from(!on_rail && lowest < f64::INFINITY);
+            }
+        }
+    }
+    assert!(mixed > 100, "blocks partly off the rail: {mixed}");
+    assert!(
+        lanes_and_tail > 100,
+        "blocks with samples left over the lanes"
+    );
+}
+
 #[test]
 fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
     let placement = placement();

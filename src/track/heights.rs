@@ -1,6 +1,7 @@
 //! A uniform table of a placed rail's heights, with block maxima for the coarse scans.
 
 use super::PlacedRail;
+use wide::f64x4;
 
 /// Step of the uniform table of rail heights [`PlacedRail::heights`] (mm): linear
 /// interpolation errs by at most `Z'' h^2 / 8`, 4e-6 mm on the R13 gauge corner at the
@@ -130,7 +131,7 @@ impl HeightTable {
     /// The interpolated height at `y`, or `None` outside the table.
     #[inline]
     pub fn height(&self, y: f64) -> Option<f64> {
-        let t = (y - self.y0) * self.inv_step;
+        let t = self.coordinate(y);
         // Also rejects NaN.
         if !(t >= 0.0 && t <= self.t_max) {
             return None;
@@ -138,10 +139,88 @@ impl HeightTable {
         // Through i32 (the table is far shorter): one conversion each way, where usize
         // would cost a dozen instructions for its saturation and sign handling.
         let ti = t as i32;
-        let f = t - f64::from(ti);
         let [a, d] = self.z[ti as usize];
-        Some(a + f * d)
+        Some(interpolate(a, t - f64::from(ti), d))
     }
+
+    /// The table read four lateral positions at a time ([`HeightLanes::height`]), its
+    /// fields copied once for a loop (the compiler cannot keep them in registers across
+    /// the stores of a loop that writes through another reference).
+    #[inline]
+    pub(crate) fn lanes(&self) -> HeightLanes<'_> {
+        HeightLanes {
+            y0: f64x4::splat(self.y0),
+            inv_step: f64x4::splat(self.inv_step),
+            t_max: f64x4::splat(self.t_max),
+            z: &self.z,
+        }
+    }
+
+    /// The table coordinate `t = (y - y0) / step` of `y` (`f64` or SIMD lanes).
+    #[inline(always)]
+    fn coordinate<T>(&self, y: T) -> T
+    where
+        T: Copy + From<f64> + std::ops::Sub<Output = T> + std::ops::Mul<Output = T>,
+    {
+        (y - T::from(self.y0)) * T::from(self.inv_step)
+    }
+}
+
+/// A [`HeightTable`] read in SIMD lanes of four lateral positions ([`HeightTable::lanes`]).
+pub(crate) struct HeightLanes<'a> {
+    y0: f64x4,
+    inv_step: f64x4,
+    t_max: f64x4,
+    z: &'a [[f64; 2]],
+}
+
+/// `2^52`: adding it to a number in `[0, 2^51)` rounds that number to an integer (the
+/// spacing of doubles there is 1), whose value sits in the low bits of the sum.
+const TWO_52: f64 = 4_503_599_627_370_496.0;
+
+impl HeightLanes<'_> {
+    /// [`HeightTable::height`] of four lateral positions at once, to the bit: the table
+    /// coordinates, their integer parts and the interpolation in lanes (the same
+    /// operations in the same order as `height`), the entries loaded per lane. Returns the
+    /// heights and a mask whose lanes are all ones where `height` is `Some` (the height
+    /// lanes elsewhere are meaningless).
+    #[inline(always)]
+    pub(crate) fn height(&self, y: f64x4) -> (f64x4, f64x4) {
+        let t = (y - self.y0) * self.inv_step;
+        // As `height`'s test; an ordered compare is false for NaN.
+        let on = t.simd_ge(f64x4::ZERO) & t.simd_le(self.t_max);
+        // Lanes off the table read entry 0 and are masked out.
+        let t_on = on.select(t, f64x4::ZERO);
+        // The integer part of `t` in [0, t_max] (t_max < 2^31), exactly `t as i32`: `t +
+        // 2^52` rounds `t` to the nearest integer `r` (exact arithmetic below 2^52), one
+        // less where that rounded up.
+        let magic = f64x4::splat(TWO_52);
+        let rounded = t_on + magic;
+        let r = rounded - magic;
+        let up = r.simd_gt(t_on) & f64x4::ONE;
+        let whole = r - up;
+        let index = (whole + magic)
+            .to_array()
+            .map(|w| self.z[w.to_bits() as u32 as usize]);
+        let [e0, e1, e2, e3] = index;
+        let h = interpolate(
+            f64x4::from([e0[0], e1[0], e2[0], e3[0]]),
+            t - whole,
+            f64x4::from([e0[1], e1[1], e2[1], e3[1]]),
+        );
+        (h, on)
+    }
+}
+
+/// The linear interpolation `a + f d` between an entry `a` and the next (`d` their
+/// difference) at fraction `f`, for `f64` or SIMD lanes: one form, so lanes round as the
+/// scalar lookup.
+#[inline(always)]
+fn interpolate<T>(a: T, f: T, d: T) -> T
+where
+    T: Copy + std::ops::Add<Output = T> + std::ops::Mul<Output = T>,
+{
+    a + f * d
 }
 
 /// The level `k` and the two entries of that level of a sparse table of block unions whose

@@ -188,6 +188,43 @@ fn the_height_table_interpolates_the_rail_heights_bit_for_bit() {
     }
 }
 
+/// The height table read four positions at a time in SIMD lanes is `height` to the bit,
+/// and its mask is `height`'s `Some`: groups of four at irregular spacing from 2 mm before
+/// the table to 2 mm past it (lanes on and off the table in one group), the grid points
+/// themselves (integer table coordinates, where the lanes' integer part must not round
+/// up), and NaN and infinite positions; analytic and sampled UIC60.
+#[test]
+fn four_heights_at_once_are_height_to_the_bit() {
+    for profile in [Profile::uic60e1(), sampled_uic60()] {
+        let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
+        let table = rail.heights();
+        let lanes = table.lanes();
+        let (lo, hi) = rail.y_range();
+        let n = ((hi - lo) / HEIGHT_TABLE_STEP_MM).ceil().max(1.0) as usize;
+        let step = (hi - lo) / n as f64;
+        let check = |y: [f64; 4]| {
+            let (h, on) = lanes.height(wide::f64x4::from(y));
+            let (h, on) = (h.to_array(), on.to_array());
+            for i in 0..4 {
+                let expected = table.height(y[i]);
+                assert_eq!(on[i].to_bits() != 0, expected.is_some(), "y = {}", y[i]);
+                if let Some(e) = expected {
+                    assert_eq!(h[i].to_bits(), e.to_bits(), "y = {}", y[i]);
+                }
+            }
+        };
+        let (a, b) = (lo - 2.0, hi + 2.0);
+        for k in 0..50_000 {
+            let x = |j: f64| a + (b - a) * ((f64::from(k) * 0.618_034 + j * 0.173) % 1.0);
+            check([x(0.0), x(1.0), x(2.0), x(3.0)]);
+        }
+        for i in (0..=n + 3).step_by(4) {
+            check(std::array::from_fn(|j| lo + (i + j) as f64 * step));
+        }
+        check([f64::NAN, lo, f64::INFINITY, f64::NEG_INFINITY]);
+    }
+}
+
 /// The table's lower bound over an interval lies below every interpolated height in it
 /// (random intervals of 1e-4 to 30 mm over the head, analytic and sampled UIC60), is
 /// `None` for an interval reaching past the table, and is close: within the height
