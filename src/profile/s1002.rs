@@ -82,9 +82,9 @@ pub fn eval(s: f64) -> [f64; 3] {
     if s >= JOINTS[0] {
         [AA - BA * s, -BA, 0.0]
     } else if s >= JOINTS[1] {
-        polynomial(&B_POLY, s)
+        horner(&B_POLY, s)
     } else if s >= JOINTS[2] {
-        polynomial(&C_POLY, s)
+        horner(&C_POLY, s)
     } else if s >= JOINTS[3] {
         // Concave arc seen from below: F = AD - sqrt(R^2 - u^2).
         let u = s + CD;
@@ -139,13 +139,9 @@ pub(super) fn derivative_bounds(lo: f64, hi: f64) -> DerivativeBounds {
     b
 }
 
-/// Value, first and second derivative of `sum c[k] s^k` by Horner's scheme.
-fn polynomial<const N: usize>(c: &[f64; N], s: f64) -> [f64; 3] {
-    horner(c, s)
-}
-
-/// [`polynomial`] for `f64` or for SIMD lanes of `f64`: the same operations in the same
-/// order, so each lane rounds exactly as the scalar evaluation (no fused multiply-add).
+/// Value, first and second derivative of `sum c[k] s^k` by Horner's scheme, for `f64` or
+/// for SIMD lanes of `f64`: the same operations in the same order, so each lane rounds
+/// exactly as the scalar evaluation (no fused multiply-add).
 #[inline(always)]
 fn horner<T, const N: usize>(c: &[f64; N], s: T) -> [T; 3]
 where

@@ -191,33 +191,10 @@ impl Gauss<'_, '_> {
                         *slot = (mid + 0.5 * h * x, w);
                     }
                     for quad in panel[..n].chunks_exact(4) {
-                        let s4 = [quad[0].0, quad[1].0, quad[2].0, quad[3].0];
-                        let wheel = self.side.wheel().at_x4(s4);
-                        // The weights of the nodes within the cut-off, four at once after
-                        // the gaps (a dummy `z` of 0 in the lanes of nodes without weight).
-                        let (mut z4, mut fields) = ([0.0; 4], [[0.0; FIELDS]; 4]);
-                        let mut weighted = [false; 4];
-                        self.side.each_x4(s4, wheel, self.pose, |i, p| {
-                            let d = p.g + self.offset;
-                            (s_of[m], d_of[m]) = (quad[i].0, d);
+                        self.add_quad(quad, 0.5 * h, &mut current, |s, d| {
+                            (s_of[m], d_of[m]) = (s, d);
                             m += 1;
-                            // f64::min without its NaN handling: the minimum is never NaN, and a
-                            // NaN gap compares false as f64::min ignores it.
-                            if d < current.min_gap {
-                                current.min_gap = d;
-                            }
-                            let z = d / self.eps;
-                            if z <= self.cutoff {
-                                (z4[i], fields[i], weighted[i]) =
-                                    (z, fields_of(self.side, &p), true);
-                            }
                         });
-                        let weights = exp_neg_x4(z4);
-                        for i in 0..4 {
-                            if weighted[i] {
-                                current.add(0.5 * h * quad[i].1 * weights[i], &fields[i]);
-                            }
-                        }
                     }
                     nodes.extend_from_slice(&s_of[..m]);
                     gaps.extend_from_slice(&d_of[..m]);
@@ -228,6 +205,44 @@ impl Gauss<'_, '_> {
                     patches.push(avg);
                 }
                 current = Accumulator::default();
+            }
+        }
+    }
+
+    /// Four nodes `quad` (`(s, Gauss weight)`) of a panel of half-length `half_h`: their
+    /// wheel points and gaps in SIMD lanes, then the weights of those within the cut-off four
+    /// at once, added to `current` in node order; `record(s, d)` for every node over the
+    /// rail, in order.
+    #[inline(always)]
+    fn add_quad(
+        &self,
+        quad: &[(f64, f64)],
+        half_h: f64,
+        current: &mut Accumulator,
+        mut record: impl FnMut(f64, f64),
+    ) {
+        let s4 = [quad[0].0, quad[1].0, quad[2].0, quad[3].0];
+        let wheel = self.side.wheel().at_x4(s4);
+        // A dummy `z` of 0 in the lanes of nodes without weight.
+        let (mut z4, mut fields) = ([0.0; 4], [[0.0; FIELDS]; 4]);
+        let mut weighted = [false; 4];
+        self.side.each_x4(s4, wheel, self.pose, |i, p| {
+            let d = p.g + self.offset;
+            record(quad[i].0, d);
+            // f64::min without its NaN handling: the minimum is never NaN, and a NaN gap
+            // compares false as f64::min ignores it.
+            if d < current.min_gap {
+                current.min_gap = d;
+            }
+            let z = d / self.eps;
+            if z <= self.cutoff {
+                (z4[i], fields[i], weighted[i]) = (z, fields_of(self.side, &p), true);
+            }
+        });
+        let weights = exp_neg_x4(z4);
+        for i in 0..4 {
+            if weighted[i] {
+                current.add(half_h * quad[i].1 * weights[i], &fields[i]);
             }
         }
     }

@@ -95,8 +95,7 @@ impl HeightTable {
     /// interval misses the table. Exact to within the height variation of 16 entries.
     #[inline]
     pub fn max_over(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
-        let t_lo = (y_lo - self.y0) * self.inv_step;
-        let t_hi = (y_hi - self.y0) * self.inv_step;
+        let (t_lo, t_hi) = (self.coordinate(y_lo), self.coordinate(y_hi));
         // Also rejects NaN.
         if !(t_hi >= 0.0 && t_lo <= self.t_max && t_lo <= t_hi) {
             return None;
@@ -114,8 +113,7 @@ impl HeightTable {
     /// a height everywhere. Exact to within the height variation of 16 entries.
     #[inline]
     pub fn min_over(&self, y_lo: f64, y_hi: f64) -> Option<f64> {
-        let t_lo = (y_lo - self.y0) * self.inv_step;
-        let t_hi = (y_hi - self.y0) * self.inv_step;
+        let (t_lo, t_hi) = (self.coordinate(y_lo), self.coordinate(y_hi));
         // Also rejects NaN: outside the table there is no height to bound.
         if !(t_lo >= 0.0 && t_hi <= self.t_max && t_lo <= t_hi) {
             return None;
