@@ -118,6 +118,11 @@ pub(crate) struct Scanned {
 }
 
 impl Scanned {
+    /// The pose scanned, `None` before the first scan.
+    pub(crate) fn pose(&self) -> Option<SidePose> {
+        self.pose
+    }
+
     /// Whether the scan evaluated the samples of block `b`.
     #[inline]
     pub(super) fn evaluated(&self, b: usize) -> bool {

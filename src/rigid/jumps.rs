@@ -3,16 +3,18 @@
 //! minima, with bisection as the fallback.
 
 use super::level::join_sides;
+use super::minima::Scratch;
 use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, side_index};
-use crate::gap::{self, SideGap, SidePose};
+use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap, SidePose};
 use crate::track::Side;
 
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined to
-/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, cold, only)` solves one position, `cold` at the
-/// first of a refinement; `only = Some(k)` asks for wheel `k` alone, which a `separable`
-/// solver (the level wheelset, whose wheels do not interact) answers with that wheel's
-/// half of the position (see `level.rs`): the refinement of a wheel's jump solves that
-/// wheel only, and the other wheel only at the two ends of a confirmed jump.
+/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, ask)` solves one position as `ask` says
+/// ([`Ask`]: cold at the first of a refinement, one wheel only, certified or provisional);
+/// a `separable` solver (the level wheelset, whose wheels do not interact) answers
+/// `only = Some(k)` with that wheel's half of the position (see `level.rs`): the refinement
+/// of a wheel's jump solves that wheel only, and the other wheel only at the two ends of a
+/// confirmed jump.
 ///
 /// A jump is where two local minima of the gap of one wheel, `A` (the contact before) and
 /// `B` (after), exchange the role of the lowest: `h = g_A - g_B`, both followed at the
@@ -22,13 +24,26 @@ use crate::track::Side;
 /// three solves instead of ten). Otherwise, or when that stops making progress, the interval
 /// is bisected (an interval too wide to follow the minima across is bisected once and the
 /// secant tried again: see [`SECANT_RETRY_WIDTH_MM`]).
+///
+/// The positions a refinement steers by are provisional (solved without the certificate of
+/// the global minimum): only the two it ends on are reported, and those are certified on
+/// what the solves' own scans saw ([`Steps::certified`]) before a jump is confirmed or a
+/// candidate dropped. Where a certificate finds a lower point at an end, the refinement is
+/// made again with every position certified, as each was before: a separable solver's
+/// position depends on its shift alone, so the provisional steps before the first one a
+/// certificate rejects are kept; otherwise it starts again from the window. So every
+/// position the result rests on is certified, the result is the one of a refinement
+/// certified throughout, and the certificates of the discarded steps (two thirds of them
+/// on the EN 15302 pair) are not made.
 pub(super) fn find_jumps(
     sides: &[SideGap; 2],
     positions: &[Position],
     separable: bool,
-    mut solve: impl FnMut(f64, f64, bool, Option<usize>) -> Position,
+    scratch: &mut Scratch,
+    mut solve: impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
 ) -> Vec<Jump> {
     let mut jumps = Vec::new();
+    let mut steps = Steps::default();
     for w in positions.windows(2) {
         for side in [Side::Left, Side::Right] {
             let (Some(a), Some(b)) = (w[0].side(side), w[1].side(side)) else {
@@ -38,91 +53,256 @@ pub(super) fn find_jumps(
                 continue;
             }
             let k = side_index(side);
-            let (mut pa, mut pb) = (w[0], w[1]);
-            // Whether an end is a refinement's half position (separable solvers).
-            let (mut a_half, mut b_half) = (false, false);
-            let only = separable.then_some(k);
-            let mut cold = true;
-            let contact_s = |p: &Position| p.side(side).map_or(f64::NAN, |c| c.s);
-            let motion = |pa: &Position, pb: &Position| (contact_s(pa) - contact_s(pb)).abs();
-            let mut secant_steps = 0;
-            // A jump keeps its size in the part of the interval that holds it; a contact
-            // point that only moves fast moves less across each part, and once it moves less
-            // than JUMP_CONFIRM_MM across the interval the candidate is dropped (most
-            // candidates near the flange are such, after about 3 halvings instead of 10).
-            while pb.y_ws - pa.y_ws > JUMP_REFINE_MM && motion(&pa, &pb) > JUMP_CONFIRM_MM {
-                let width = pb.y_ws - pa.y_ws;
-                let root = (secant_steps < MAX_SECANT_STEPS)
-                    .then(|| competing_root(&sides[k], &pa, &pb, contact_s(&pa), contact_s(&pb)))
-                    .flatten();
-                // Without two competing minima now, bisection to the end; across an
-                // interval wider than SECANT_RETRY_WIDTH_MM the minima may only have moved
-                // out of reach, and the secant is tried again on the half bisection keeps.
-                secant_steps = if root.is_some() || width > SECANT_RETRY_WIDTH_MM {
-                    secant_steps + 1
-                } else {
-                    MAX_SECANT_STEPS
-                };
-                let ys: &[f64] = match root {
-                    Some(r) if width <= STRADDLE_WIDTHS * JUMP_REFINE_MM => {
-                        let half = 0.49 * JUMP_REFINE_MM;
-                        &[
-                            (r - half).max(pa.y_ws + 0.01 * width),
-                            (r + half).min(pb.y_ws - 0.01 * width),
-                        ]
-                    }
-                    // Kept off the ends, so that the interval shrinks.
-                    Some(r) => &[r.clamp(pa.y_ws + 0.01 * width, pb.y_ws - 0.01 * width)],
-                    None => &[0.5 * (pa.y_ws + pb.y_ws)],
-                };
-                let mut lost = false;
-                for &y in ys {
-                    // A second straddling position that the first already moved an end past
-                    // is not solved: the interval only shrinks.
-                    if !(y > pa.y_ws && y < pb.y_ws) {
-                        continue;
-                    }
-                    // From the roll of the lower end: the refinement follows the branch the
-                    // sweep came on (where two rolls balance the wheelset, as near a fold of
-                    // a measured flange, a start between the ends can land on the other).
-                    let mid = solve(y, pa.roll, cold, only);
-                    cold = false;
-                    let Some(m) = mid.side(side) else {
-                        lost = true;
-                        break;
-                    };
-                    if (m.s - contact_s(&pa)).abs() >= (m.s - contact_s(&pb)).abs() {
-                        (pb, b_half) = (mid, separable);
-                    } else {
-                        (pa, a_half) = (mid, separable);
-                    }
-                }
-                if lost {
-                    break;
-                }
-            }
-            if let (Some(ca), Some(cb)) = (pa.side(side), pb.side(side))
-                && (ca.s - cb.s).abs() > JUMP_CONFIRM_MM
+            let task = Task {
+                sides,
+                side,
+                separable,
+            };
+            steps.clear();
+            let mut ends = task.refine(w, Some(&mut steps), &[], scratch, &mut solve);
+            let provisional = [ends[0].1, ends[1].1].into_iter().flatten();
+            if !provisional
+                .into_iter()
+                .all(|i| steps.certified(sides, i, task.wheels()))
             {
-                // The other wheel at the ends of a confirmed jump, for its Δr.
-                let mut whole = |p: Position, half: bool| match half {
-                    true => join_sides(&p, &solve(p.y_ws, p.roll, false, Some(1 - k)), k),
-                    false => p,
+                // The certified steps stand where the solver's positions depend on the shift
+                // alone; the first step a certificate rejects is solved again, certified.
+                let good = if separable {
+                    (0..steps.len())
+                        .find(|&i| !steps.certified(sides, i, task.wheels()))
+                        .unwrap_or(steps.len())
+                } else {
+                    0
                 };
-                let (pa, pb) = (whole(pa, a_half), whole(pb, b_half));
-                jumps.push(Jump {
-                    side,
-                    y_from: pa.y_ws,
-                    y_to: pb.y_ws,
-                    s_from: ca.s,
-                    s_to: cb.s,
-                    delta_r_from: pa.delta_r(),
-                    delta_r_to: pb.delta_r(),
-                });
+                ends = task.refine(w, None, &steps.positions(good), scratch, &mut solve);
             }
+            let [(pa, _), (pb, _)] = ends;
+            let (Some(ca), Some(cb)) = (pa.0.side(side), pb.0.side(side)) else {
+                continue;
+            };
+            if (ca.s - cb.s).abs() <= JUMP_CONFIRM_MM {
+                continue;
+            }
+            // The other wheel at the ends of a confirmed jump, for its Δr.
+            let mut whole = |(p, half): (Position, bool)| {
+                if !half {
+                    return p;
+                }
+                let ask = Ask {
+                    cold: false,
+                    only: Some(1 - k),
+                    certified: true,
+                };
+                join_sides(&p, &solve(p.y_ws, p.roll, ask, scratch), k)
+            };
+            let (pa, pb) = (whole(pa), whole(pb));
+            jumps.push(Jump {
+                side,
+                y_from: pa.y_ws,
+                y_to: pb.y_ws,
+                s_from: ca.s,
+                s_to: cb.s,
+                delta_r_from: pa.delta_r(),
+                delta_r_to: pb.delta_r(),
+            });
         }
     }
     jumps
+}
+
+/// What [`find_jumps`] asks of a solve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Ask {
+    /// The first solve of a refinement: from no warm basins.
+    pub(super) cold: bool,
+    /// `Some(k)`: wheel `k` alone (separable solvers).
+    pub(super) only: Option<usize>,
+    /// Whether the global minimum is certified (false: provisional, see
+    /// [`Scratch::provisional`]).
+    pub(super) certified: bool,
+}
+
+/// One wheel's candidate jumps in a sweep.
+#[derive(Clone, Copy)]
+struct Task<'a, 'b> {
+    sides: &'a [SideGap<'b>; 2],
+    side: Side,
+    separable: bool,
+}
+
+/// An end of a candidate interval: the position, whether it is a refinement's half
+/// position (separable solvers), and the provisional step it was solved at (`None`:
+/// certified, the sweep's or a certified refinement's).
+type End = ((Position, bool), Option<usize>);
+
+/// What a provisional solve's scans saw at its pose, per wheel: the scan, the pose box it
+/// read and the minima found, as the solve's own certificate would have read them.
+#[derive(Debug, Default)]
+struct Seen {
+    scanned: [Scanned; 2],
+    boxes: [PoseBox; 2],
+    minima: [Vec<GapPoint>; 2],
+}
+
+/// The provisional solves of one refinement in order, each with what it saw; buffers
+/// reused across refinements.
+#[derive(Debug, Default)]
+struct Steps {
+    done: Vec<(Position, Seen)>,
+    pool: Vec<Seen>,
+}
+
+impl Steps {
+    fn clear(&mut self) {
+        self.pool.extend(self.done.drain(..).map(|(_, seen)| seen));
+    }
+
+    fn len(&self) -> usize {
+        self.done.len()
+    }
+
+    /// The positions of the first `n` steps.
+    fn positions(&self, n: usize) -> Vec<Position> {
+        self.done[..n].iter().map(|(p, _)| *p).collect()
+    }
+
+    /// Records a provisional solve `p` with what its scans saw for `wheels`, taken from
+    /// `scratch` (the scans are swapped: each keeps its own count of scans, so a buffer
+    /// handed back to the solver stays consistent); the step's index.
+    fn push(&mut self, p: Position, scratch: &mut Scratch, wheels: &[usize]) -> usize {
+        let mut seen = self.pool.pop().unwrap_or_default();
+        for &w in wheels {
+            std::mem::swap(&mut seen.scanned[w], &mut scratch.scanned[w]);
+            seen.boxes[w].clone_from(&scratch.boxes[w]);
+            seen.minima[w].clone_from(&scratch.minima[w]);
+        }
+        self.done.push((p, seen));
+        self.done.len() - 1
+    }
+
+    /// Whether step `i` holds the global minima of `wheels`: the certificate
+    /// (`gap::certify`) finds no point lower than the contact by more than its tolerance,
+    /// so that a certified solve gives the same position. It reads what the solve's scan
+    /// saw at the step's pose, with the minima the solve found, as the solve's own
+    /// certificate would have; a solve that stopped on a pose it did not scan (an
+    /// iteration cap) is scanned again.
+    fn certified(&mut self, sides: &[SideGap; 2], i: usize, wheels: &[usize]) -> bool {
+        let (p, seen) = &mut self.done[i];
+        wheels.iter().all(|&w| {
+            let (side, Some(c)) = (&sides[w], p.contact[w]) else {
+                return true;
+            };
+            let pose = SidePose::new(side.sign, p.y_ws, p.roll);
+            let minima = &seen.minima[w];
+            let found = minima.iter().find(|m| m.s.to_bits() == c.s.to_bits());
+            let Some(best) = found.copied().or_else(|| side.at(c.s, &pose)) else {
+                return false;
+            };
+            let certificate = if seen.scanned[w].pose() == Some(pose) {
+                let (pose_box, scanned) = (&mut seen.boxes[w], &mut seen.scanned[w]);
+                side.certify_scanned(&pose, best, minima, pose_box, scanned)
+            } else {
+                side.certify(&pose, best, &[best])
+            };
+            certificate.lower.is_none()
+        })
+    }
+}
+
+impl Task<'_, '_> {
+    /// The wheels whose minima a position's certificate covers: wheel `k` alone for a
+    /// separable solver (its ends are halves), both otherwise (their minima balance the roll).
+    fn wheels(&self) -> &'static [usize] {
+        match (self.separable, side_index(self.side)) {
+            (false, _) => &[0, 1],
+            (true, 0) => &[0],
+            (true, _) => &[1],
+        }
+    }
+
+    /// Narrows the window `w` on this wheel (see [`find_jumps`]): provisionally, recording
+    /// each solve in `steps`, or (`None`) certified, the first solves being `known` (the
+    /// certified positions of those steps).
+    fn refine(
+        &self,
+        w: &[Position],
+        mut steps: Option<&mut Steps>,
+        known: &[Position],
+        scratch: &mut Scratch,
+        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
+    ) -> [End; 2] {
+        let (side, k) = (self.side, side_index(self.side));
+        let mut ends: [End; 2] = [((w[0], false), None), ((w[1], false), None)];
+        let only = self.separable.then_some(k);
+        let mut cold = true;
+        let mut solved = 0;
+        let contact_s = |p: &Position| p.side(side).map_or(f64::NAN, |c| c.s);
+        let motion = |e: &[End; 2]| (contact_s(&e[0].0.0) - contact_s(&e[1].0.0)).abs();
+        let mut secant_steps = 0;
+        // A jump keeps its size in the part of the interval that holds it; a contact
+        // point that only moves fast moves less across each part, and once it moves less
+        // than JUMP_CONFIRM_MM across the interval the candidate is dropped (most
+        // candidates near the flange are such, after about 3 halvings instead of 10).
+        while ends[1].0.0.y_ws - ends[0].0.0.y_ws > JUMP_REFINE_MM
+            && motion(&ends) > JUMP_CONFIRM_MM
+        {
+            let (pa, pb) = (ends[0].0.0, ends[1].0.0);
+            let width = pb.y_ws - pa.y_ws;
+            let root = (secant_steps < MAX_SECANT_STEPS)
+                .then(|| competing_root(&self.sides[k], &pa, &pb, contact_s(&pa), contact_s(&pb)))
+                .flatten();
+            // Without two competing minima now, bisection to the end; across an
+            // interval wider than SECANT_RETRY_WIDTH_MM the minima may only have moved
+            // out of reach, and the secant is tried again on the half bisection keeps.
+            secant_steps = if root.is_some() || width > SECANT_RETRY_WIDTH_MM {
+                secant_steps + 1
+            } else {
+                MAX_SECANT_STEPS
+            };
+            let ys: &[f64] = match root {
+                Some(r) if width <= STRADDLE_WIDTHS * JUMP_REFINE_MM => {
+                    let half = 0.49 * JUMP_REFINE_MM;
+                    &[
+                        (r - half).max(pa.y_ws + 0.01 * width),
+                        (r + half).min(pb.y_ws - 0.01 * width),
+                    ]
+                }
+                // Kept off the ends, so that the interval shrinks.
+                Some(r) => &[r.clamp(pa.y_ws + 0.01 * width, pb.y_ws - 0.01 * width)],
+                None => &[0.5 * (pa.y_ws + pb.y_ws)],
+            };
+            for &y in ys {
+                let (a, b) = (ends[0].0.0, ends[1].0.0);
+                // A second straddling position that the first already moved an end past
+                // is not solved: the interval only shrinks.
+                if !(y > a.y_ws && y < b.y_ws) {
+                    continue;
+                }
+                // From the roll of the lower end: the refinement follows the branch the
+                // sweep came on (where two rolls balance the wheelset, as near a fold of
+                // a measured flange, a start between the ends can land on the other).
+                let ask = Ask {
+                    cold,
+                    only,
+                    certified: steps.is_none(),
+                };
+                let mid = match known.get(solved) {
+                    Some(p) => *p,
+                    None => solve(y, a.roll, ask, scratch),
+                };
+                (cold, solved) = (false, solved + 1);
+                let Some(m) = mid.side(side) else {
+                    return ends;
+                };
+                let step = steps
+                    .as_deref_mut()
+                    .map(|s| s.push(mid, scratch, self.wheels()));
+                let kept = usize::from((m.s - contact_s(&a)).abs() >= (m.s - contact_s(&b)).abs());
+                ends[kept] = ((mid, self.separable), step);
+            }
+        }
+        ends
+    }
 }
 
 /// How far a competing minimum is followed from where it was (mm): across a jump interval
@@ -189,16 +369,54 @@ mod tests {
         let mut solves = 0;
         let window = &wide.positions[10..12];
         assert_eq!((window[0].y_ws, window[1].y_ws), (-5.0, -4.0));
-        let jumps = find_jumps(&sides, window, false, |y, theta0, cold, _| {
-            solves += 1;
-            scratch.warm &= !cold;
-            solve_default(&sides, &settings, y, theta0, &mut scratch)
-        });
+        let jumps = find_jumps(
+            &sides,
+            window,
+            false,
+            &mut scratch,
+            |y, theta0, ask, scratch| {
+                solves += 1;
+                scratch.warm &= !ask.cold;
+                scratch.provisional = !ask.certified;
+                solve_default(&sides, &settings, y, theta0, scratch)
+            },
+        );
         assert_eq!(jumps.len(), 1, "{jumps:?}");
         // Measured: 9 solves (5 for the jump, 4 for the left wheel's candidate in the
         // window, which is no jump), 18 where a failed secant falls back to bisection.
         eprintln!("{solves} solves");
         assert!(solves <= 12, "{solves} solves");
+    }
+
+    /// On the paper scene (the roll solver) refinements steered by provisional positions
+    /// find the jumps of refinements certified throughout, bit for bit, and certify fewer
+    /// positions.
+    #[test]
+    fn provisional_refinements_with_roll_give_the_jumps_of_certified_ones() {
+        let placement = crate::gap::tests::placement();
+        let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let sweep = search(&placement, scene.sweep_mm(), Solver::default());
+        let sides = SideGap::both(&placement);
+        let settings = RollSettings::default();
+        let [(certified, all), (steered, some)] = [false, true].map(|provisional| {
+            let (mut scratch, mut certified) = (Scratch::default(), 0);
+            let jumps = find_jumps(
+                &sides,
+                &sweep.positions,
+                false,
+                &mut scratch,
+                |y, theta0, ask, s| {
+                    s.warm &= !ask.cold;
+                    s.provisional = provisional && !ask.certified;
+                    certified += usize::from(!s.provisional);
+                    solve_default(&sides, &settings, y, theta0, s)
+                },
+            );
+            (format!("{jumps:?}"), certified)
+        });
+        assert_eq!(steered, certified);
+        eprintln!("{some} of {all} solves certified");
+        assert!(some < all / 2, "{some} of {all} solves certified");
     }
 
     /// A cold solve is a function of its shift and start roll alone, whatever was solved

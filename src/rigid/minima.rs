@@ -18,6 +18,10 @@ pub(super) struct Scratch {
     pub(super) minima: [Vec<GapPoint>; 2],
     /// Whether `basins` holds the basins of a previous solution.
     pub(super) warm: bool,
+    /// Whether the solves skip the certificate of the global minimum: the provisional
+    /// positions a jump refinement steers by, whose kept ends it certifies itself
+    /// (`jumps.rs`). False (certified) by default.
+    pub(super) provisional: bool,
 }
 
 /// The lowest minimum of one side over its basins, and a second one within the two-point

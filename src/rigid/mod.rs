@@ -430,23 +430,30 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     // work, not the result; the test `a_cold_solve_does_not_depend_on_what_was_solved_before`),
     // so the second refinement goes on exactly as after solving again.
     let separable = solver == Solver::NoRoll;
-    let mut first: Option<((u64, u64), Position, Scratch)> = None;
-    let jumps = find_jumps(&sides, &positions, separable, |y, theta0, cold, only| {
-        if !cold || only.is_some() {
-            return solve(y, theta0, &mut scratch, only);
-        }
-        let key = (y.to_bits(), theta0.to_bits());
-        if let Some((k, p, after)) = &first
-            && *k == key
-        {
-            scratch.clone_from(after);
-            return *p;
-        }
-        scratch.warm = false;
-        let p = solve(y, theta0, &mut scratch, only);
-        first = Some((key, p, scratch.clone()));
-        p
-    });
+    let mut first: Option<((u64, u64, bool), Position, Scratch)> = None;
+    let jumps = find_jumps(
+        &sides,
+        &positions,
+        separable,
+        &mut scratch,
+        |y, theta0, ask, scratch| {
+            scratch.provisional = !ask.certified;
+            if !ask.cold || ask.only.is_some() {
+                return solve(y, theta0, scratch, ask.only);
+            }
+            let key = (y.to_bits(), theta0.to_bits(), ask.certified);
+            if let Some((k, p, after)) = &first
+                && *k == key
+            {
+                scratch.clone_from(after);
+                return *p;
+            }
+            scratch.warm = false;
+            let p = solve(y, theta0, scratch, ask.only);
+            first = Some((key, p, scratch.clone()));
+            p
+        },
+    );
     RigidSweep {
         solver,
         positions,

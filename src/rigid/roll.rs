@@ -129,8 +129,13 @@ pub(super) fn solve_default(
         // The minima a root is accepted on are certified global (`gap::certify`); a lower
         // point found changes `F` and the verdict. Only fresh evaluations stop: on followed
         // basins a root is verified by a scan first, and the scan is what the certificate
-        // reads.
-        if matches!(verdict, Verdict::Stop(_)) && it.fresh && certify(sides, &mut e, scratch) {
+        // reads. A provisional solve (a jump refinement's step) is certified by its caller
+        // where it is kept.
+        if matches!(verdict, Verdict::Stop(_))
+            && it.fresh
+            && !scratch.provisional
+            && certify(sides, &mut e, scratch)
+        {
             it.observe(&e, settings);
             verdict = it.check(&e, settings);
         }
