@@ -191,8 +191,8 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
     }
 }
 
-/// Runs independent scenes in parallel (rayon, one per core). A single sweep stays
-/// sequential: each position starts from the previous one's solution (continuation).
+/// Runs independent scenes in parallel (rayon, one per core); inside each, the parts of its
+/// stages that are independent join as in [`report`]'s pool.
 /// Scenes with the same profiles and track share their fitted profiles and placed rails
 /// (one [`PlacementCache`] for the run). Every scene is reported; the first error is
 /// returned after all have run.
