@@ -302,9 +302,8 @@ fn run_recorded(
 /// # Errors
 /// [`crate::Error::Scene`] naming the profile key.
 pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
-    let wheels = place_wheels(scene)?;
-    let rails = place_rails(scene)?;
-    assemble(scene, wheels, rails)
+    let (wheels, rails) = join_in_pool(|| place_wheels(scene), || place_rails(scene));
+    assemble(scene, wheels?, rails?)
 }
 
 /// [`place`], taking the fitted profiles and placed rails from `cache` where a scene run
@@ -314,9 +313,30 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
 /// # Errors
 /// As [`place`].
 pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, crate::Error> {
-    let wheels = place_wheels_in(scene, Some(cache))?;
-    let rails = place_rails_in(scene, Some(cache))?;
-    assemble(scene, wheels, rails)
+    let (wheels, rails) = join_in_pool(
+        || place_wheels_in(scene, Some(cache)),
+        || place_rails_in(scene, Some(cache)),
+    );
+    assemble(scene, wheels?, rails?)
+}
+
+/// Runs `a` and `b` in parallel on a thread of a rayon pool (joining there costs
+/// microseconds), one after the other on any other thread (where starting the pool would
+/// cost more than the work saves). Both run either way, and each returns what it would
+/// alone: the results do not depend on the number of threads. The wheels and the rails of
+/// the EN 15302 scene of `benches/data` are 3.2 M and 7.2 M instructions.
+pub(crate) fn join_in_pool<A, B, RA, RB>(a: A, b: B) -> (RA, RB)
+where
+    A: FnOnce() -> RA + Send,
+    B: FnOnce() -> RB + Send,
+    RA: Send,
+    RB: Send,
+{
+    if rayon::current_thread_index().is_some() {
+        rayon::join(a, b)
+    } else {
+        (a(), b())
+    }
 }
 
 /// The error of placing the profile of `key`.

@@ -169,3 +169,34 @@ fn reference_profiles_reproduce_annex_e_and_f() {
         );
     }
 }
+
+/// A report made on two threads of a rayon pool (where the wheels and the rails are placed,
+/// the sweep's halves solved and its windows refined, and the tables and the figures
+/// rendered at once) is the report made on the calling thread alone, byte for byte, file
+/// for file, in the same order: for the level wheelset of the EN 15302 benchmark and the
+/// default roll solver of the paper scene (its jumps refined warm from cold starts).
+#[test]
+fn a_report_on_two_threads_is_the_report_on_one() {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("a pool of two threads");
+    for scene in [
+        "benches/data/en15302_e1_delta_r.toml",
+        "reports/paper/scene.toml",
+    ] {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(scene);
+        let report = || {
+            let scene = Scene::load(&path).expect("the scene loads");
+            let results = pipeline::run(&scene).expect("the scene runs");
+            let files = wheelrail::outputs::render(&scene, &results, &[]).expect("it renders");
+            files
+                .into_iter()
+                .map(|f| (f.name, f.bytes))
+                .collect::<Vec<_>>()
+        };
+        let alone = report();
+        assert!(alone.len() > 3, "{scene}: {} files", alone.len());
+        assert!(alone == pool.install(report), "{scene}");
+    }
+}

@@ -430,30 +430,48 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     // work, not the result; the test `a_cold_solve_does_not_depend_on_what_was_solved_before`),
     // so the second refinement goes on exactly as after solving again.
     let separable = solver == Solver::NoRoll;
-    let mut first: Option<((u64, u64, bool), Position, Scratch)> = None;
-    let jumps = find_jumps(
-        &sides,
-        &positions,
-        separable,
-        &mut scratch,
-        |y, theta0, ask, scratch| {
-            scratch.provisional = !ask.certified;
-            if !ask.cold || ask.only.is_some() {
-                return solve(y, theta0, scratch, ask.only);
-            }
-            let key = (y.to_bits(), theta0.to_bits(), ask.certified);
-            if let Some((k, p, after)) = &first
-                && *k == key
-            {
-                scratch.clone_from(after);
-                return *p;
-            }
-            scratch.warm = false;
-            let p = solve(y, theta0, scratch, ask.only);
-            first = Some((key, p, scratch.clone()));
-            p
-        },
-    );
+    let jumps_in = |part: &[Position], scratch: &mut Scratch| {
+        let mut first: Option<((u64, u64, bool), Position, Scratch)> = None;
+        find_jumps(
+            &sides,
+            part,
+            separable,
+            scratch,
+            |y, theta0, ask, scratch| {
+                scratch.provisional = !ask.certified;
+                if !ask.cold || ask.only.is_some() {
+                    return solve(y, theta0, scratch, ask.only);
+                }
+                let key = (y.to_bits(), theta0.to_bits(), ask.certified);
+                if let Some((k, p, after)) = &first
+                    && *k == key
+                {
+                    scratch.clone_from(after);
+                    return *p;
+                }
+                scratch.warm = false;
+                let p = solve(y, theta0, scratch, ask.only);
+                first = Some((key, p, scratch.clone()));
+                p
+            },
+        )
+    };
+    // Each window's refinements start cold (as above: their results do not depend on what
+    // was solved before, only their work does), so in a pool the windows of the sweep's two
+    // halves are refined at once, each half with its own scratch, and their jumps joined in
+    // the windows' order: the jumps of one pass. (The first cold solve of a window is never
+    // another window's: it lies strictly inside its own window.)
+    let jumps = if in_pool && positions.len() > 2 {
+        let middle = positions.len() / 2;
+        let (mut low, high) = rayon::join(
+            || jumps_in(&positions[..=middle], &mut scratch),
+            || jumps_in(&positions[middle..], &mut Scratch::default()),
+        );
+        low.extend(high);
+        low
+    } else {
+        jumps_in(&positions, &mut scratch)
+    };
     RigidSweep {
         solver,
         positions,
