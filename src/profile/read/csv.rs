@@ -8,13 +8,14 @@ const EXPECTED: &str = "a number in mm";
 
 /// Parses the CSV text into side-frame points (the file is in the side frame already).
 ///
-/// Text whose records hold no quote and no carriage return but before a line feed (every
+/// Text whose lines hold no quote and no carriage return but before a line feed (every
 /// file the project and its users' spreadsheets write) is split into lines and fields
 /// directly ([`parse_plain`]); anything else goes through the `csv` crate
-/// ([`parse_quoted`]). The two read plain text to the same points and the same errors (the
-/// test `plain_lines_read_as_the_csv_crate_reads_them`); the direct path spares the crate's
-/// reader set-up and record copies: 0.8 M of the 2.6 M instructions the two 1000-point
-/// profiles of the EN 15302 scene of `benches/data` took to parse.
+/// ([`parse_quoted`]). The two read plain text to the same points and the same errors,
+/// each naming its true 1-based line (the test `plain_lines_read_as_the_csv_crate_reads_them`);
+/// the direct path spares the crate's reader set-up and record copies: 0.8 M of the 2.6 M
+/// instructions the two 1000-point profiles of the EN 15302 scene of `benches/data` took
+/// to parse.
 pub(super) fn parse(
     text: &str,
     kind: ProfileKind,
@@ -23,58 +24,45 @@ pub(super) fn parse(
     parse_plain(text, kind, origin).unwrap_or_else(|| parse_quoted(text, kind, origin))
 }
 
-/// [`parse`] as the `csv` crate reads plain text, or `None` at the first record that is
-/// not plain: one with a quote (which the crate would read as the start of a quoted field)
-/// or a carriage return but before its line feed (a line end of its own to the crate,
-/// not counted as a line). An error before such a record is the crate's error too.
+/// [`parse`] of plain text, or `None` at the first line that is not plain: one with a
+/// quote (which the crate would read as the start of a quoted field) or a carriage return
+/// but before its line feed (a line end of its own). An error before such a line is the
+/// crate's error too.
 ///
 /// As the crate reads plain text: records end at `\n` (a `\r` before it dropped), empty
 /// lines are skipped, a line starting with `#` is a comment (whatever it holds), and
-/// fields are split at every comma. The line a record is reported on is the crate's: the
-/// line after the previous record's end as far as the crate had read it when it returned
-/// that record, so lines skipped since (blank, comments) are not counted, nor the line
-/// feed of a CRLF end, which the crate reads with the next record.
+/// fields are split at every comma.
 fn parse_plain(
     text: &str,
     kind: ProfileKind,
     origin: &str,
 ) -> Option<Result<Vec<RawPoint>, ReadError>> {
     let mut rows = Rows::new(kind, origin);
-    let mut reported = 1;
-    let mut lines = text.split('\n').enumerate().peekable();
-    while let Some((i, line)) = lines.next() {
-        let (line_text, crlf) = match line.strip_suffix('\r') {
-            Some(head) => (head, true),
-            None => (line, false),
-        };
-        let fields = if line_text.starts_with('#') && lines.peek().is_none() {
-            // The crate reads a comment that the text ends in without a line end as a
-            // record of one empty field.
-            [Some(""), None]
-        } else if line_text.is_empty() || line_text.starts_with('#') {
+    for (i, line) in text.split('\n').enumerate() {
+        let line = line.strip_suffix('\r').unwrap_or(line);
+        if line.contains('\r') {
+            return None;
+        }
+        if line.is_empty() || line.starts_with('#') {
             continue;
-        } else {
-            first_two_fields(line_text)?
-        };
-        if let Err(e) = rows.push(fields, reported) {
+        }
+        if let Err(e) = rows.push(first_two_fields(line)?, i + 1) {
             return Some(Err(e));
         }
-        // `i` is this line's number less one.
-        reported = if crlf { i + 1 } else { i + 2 };
     }
     Some(rows.finish())
 }
 
 /// The first two comma-separated fields of a record's `line` without surrounding
-/// whitespace (`None` past its end), or `None` when the line holds a quote or a carriage
-/// return (not plain, see [`parse_plain`]). One pass over the bytes: the commas, quotes and
-/// carriage returns looked for are ASCII, so they are never part of a multi-byte character.
+/// whitespace (`None` past its end), or `None` when the line holds a quote (not plain, see
+/// [`parse_plain`]). One pass over the bytes: the commas and quotes looked for are ASCII,
+/// so they are never part of a multi-byte character.
 fn first_two_fields(line: &str) -> Option<[Option<&str>; 2]> {
     let mut commas = [line.len(); 2];
     let mut found = 0;
     for (i, &b) in line.as_bytes().iter().enumerate() {
         match b {
-            b'"' | b'\r' => return None,
+            b'"' => return None,
             b',' if found < 2 => {
                 commas[found] = i;
                 found += 1;
@@ -88,31 +76,73 @@ fn first_two_fields(line: &str) -> Option<[Option<&str>; 2]> {
 }
 
 /// [`parse`] through the `csv` crate: quoted fields, lone carriage returns.
+///
+/// Two of the crate's ways are corrected. It reports a record on the line after the
+/// previous record (blank and comment lines between them, and the line feed of a CRLF end,
+/// not counted): the line here is counted from the record's first byte ([`record_line`]).
+/// And it reads a comment that ends the text without a line end as a record of one empty
+/// field: the text is given a line end first.
 fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPoint>, ReadError> {
+    let ended;
+    let text = if text.ends_with('\n') {
+        text
+    } else {
+        ended = format!("{text}\n");
+        &ended
+    };
     let mut reader = ::csv::ReaderBuilder::new()
         .has_headers(false)
         .comment(Some(b'#'))
         .flexible(true)
         .from_reader(text.as_bytes());
     let mut rows = Rows::new(kind, origin);
+    let line_at = |p: Option<&::csv::Position>| {
+        p.map_or(0, |p| {
+            record_line(text, usize::try_from(p.byte()).unwrap_or(usize::MAX))
+        })
+    };
     // One record reused for every line: a fleet reads thousands of files.
     let mut record = ::csv::StringRecord::new();
     while reader
         .read_record(&mut record)
         .map_err(|e| ReadError::Malformed {
             origin: origin.to_owned(),
-            line: e
-                .position()
-                .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX)),
+            line: line_at(e.position()),
             problem: format!("CSV syntax error: {e}"),
         })?
     {
-        let line = record
-            .position()
-            .map_or(0, |p| usize::try_from(p.line()).unwrap_or(usize::MAX));
+        let line = line_at(record.position());
         rows.push([field(&record, 0), field(&record, 1)], line)?;
     }
     rows.finish()
+}
+
+/// The 1-based line of the record the `csv` crate read from byte `from` of `text`: the
+/// crate's position may lie on the line ends, blank lines and comment lines before the
+/// record, which are passed over. A line ends at `\n`, `\r\n` or a lone `\r`.
+fn record_line(text: &str, from: usize) -> usize {
+    let bytes = text.as_bytes();
+    let mut at = from.min(bytes.len());
+    loop {
+        match bytes.get(at) {
+            Some(b'\r' | b'\n') => at += 1,
+            Some(b'#') if at == 0 || matches!(bytes[at - 1], b'\r' | b'\n') => {
+                // A comment, to the crate's end of it: the next line feed.
+                at += bytes[at..]
+                    .iter()
+                    .position(|&b| b == b'\n')
+                    .unwrap_or(bytes.len() - at);
+            }
+            _ => break,
+        }
+    }
+    let before = &bytes[..at];
+    let line_ends = before
+        .iter()
+        .enumerate()
+        .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && before.get(i + 1) != Some(&b'\n')))
+        .count();
+    line_ends + 1
 }
 
 /// The records read so far: the header first, then one point per record.
@@ -352,13 +382,15 @@ mod tests {
         let plain = |text| parse_plain(text, ProfileKind::Rail, "t.csv").is_some();
         assert!(!plain("y_mm,z_mm\n\"1\",2\n"));
         assert!(!plain("y_mm,z_mm\r1,2\n"));
+        assert!(!plain("# a \"quote\"\ry_mm,z_mm\n1,2\n"));
         // Plain: a CRLF end, a carriage return that ends the text (the record ends there
-        // either way), quotes and carriage returns in a comment (the comment's).
+        // either way), a quote in a comment, a comment ending the text.
         for text in [
             "y_mm,z_mm\r\n1,2\r\n",
             "y_mm,z_mm\n1,2\r",
             "y_mm,z_mm\n1,2\n#c\r",
-            "# a \"quote\"\ry_mm,z_mm\n1,2\n",
+            "# a \"quote\"\ny_mm,z_mm\n1,2\n",
+            "y_mm,z_mm\n1,2\n# the end",
         ] {
             let [plain, quoted] = outcomes(text);
             assert_eq!(plain, quoted, "{text:?}");
@@ -369,5 +401,27 @@ mod tests {
             matches!(&quoted, Err(ReadError::NonNumeric { line: 2, value, .. }) if value == "1,5"),
             "{quoted:?}"
         );
+    }
+
+    /// Errors and points name the line they are on, counting every line of the file:
+    /// blank lines, comments and CRLF ends included, on both paths (the crate's own count
+    /// skips the first two and counts a CRLF file's rows one low).
+    #[test]
+    fn lines_are_the_file_lines() {
+        let lines = |text: &str| match parse(text, ProfileKind::Rail, "t.csv") {
+            Ok(points) => points.iter().map(|p| p.line).collect::<Vec<_>>(),
+            Err(ReadError::NonNumeric { line, .. }) => vec![line],
+            Err(e) => panic!("{e}"),
+        };
+        for end in ["\n", "\r\n"] {
+            for quote in ["", "\""] {
+                let text = ["# c", "y_mm,z_mm", "", "# c", "1,2", "", "3,4"]
+                    .join(end)
+                    .replace("3,", &format!("{quote}3{quote},"));
+                assert_eq!(lines(&text), [5, 7], "{text:?}");
+                let bad = format!("{text}{end}{end}# c{end}5,x{end}");
+                assert_eq!(lines(&bad), [10], "{bad:?}");
+            }
+        }
     }
 }
