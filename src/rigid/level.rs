@@ -91,8 +91,8 @@ pub(super) fn join_sides(a: &Position, b: &Position, k: usize) -> Position {
 
 #[cfg(test)]
 mod tests {
-    use super::super::jumps::find_jumps;
-    use super::super::{Solver, search};
+    use super::super::jumps::{Ask, find_jumps};
+    use super::super::{Jump, Solver, search};
     use super::*;
     use crate::scene::Scene;
     use crate::track::Placement;
@@ -105,6 +105,21 @@ mod tests {
         let scene = Scene::from_toml(&text, path, "benches/data".as_ref()).unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
         (scene, placement)
+    }
+
+    /// The jumps of `positions` refined with the level solver, solving wheel by wheel where
+    /// `separable`; `provisional(ask)` says whether a solve skips its certificate.
+    fn level_jumps(
+        sides: &[SideGap; 2],
+        positions: &[Position],
+        separable: bool,
+        mut provisional: impl FnMut(Ask) -> bool,
+    ) -> Vec<Jump> {
+        let mut scratch = Scratch::default();
+        find_jumps(sides, positions, separable, &mut scratch, |y, _, ask, s| {
+            s.provisional = provisional(ask);
+            solve_no_roll(sides, y, s, ask.only)
+        })
     }
 
     /// Two halves joined are the position solved for both wheels at once, bit for bit
@@ -137,31 +152,16 @@ mod tests {
         let (scene, placement) = en15302_e1();
         let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
         let sides = SideGap::both(&placement);
-        let mut scratch = Scratch::default();
         let (mut halves, mut wholes) = (0, 0);
-        let whole = find_jumps(
-            &sides,
-            &sweep.positions,
-            false,
-            &mut scratch,
-            |y, _, ask, s| {
-                assert_eq!(ask.only, None);
-                wholes += 1;
-                s.provisional = !ask.certified;
-                solve_no_roll(&sides, y, s, None)
-            },
-        );
-        let one = find_jumps(
-            &sides,
-            &sweep.positions,
-            true,
-            &mut scratch,
-            |y, _, ask, s| {
-                halves += usize::from(ask.only.is_some());
-                s.provisional = !ask.certified;
-                solve_no_roll(&sides, y, s, ask.only)
-            },
-        );
+        let whole = level_jumps(&sides, &sweep.positions, false, |ask| {
+            assert_eq!(ask.only, None);
+            wholes += 1;
+            !ask.certified
+        });
+        let one = level_jumps(&sides, &sweep.positions, true, |ask| {
+            halves += usize::from(ask.only.is_some());
+            !ask.certified
+        });
         assert_eq!(format!("{one:?}"), format!("{whole:?}"));
         assert_eq!(format!("{one:?}"), format!("{:?}", sweep.jumps));
         assert!(whole.len() >= 30, "{} jumps", whole.len());
@@ -180,29 +180,12 @@ mod tests {
         let (scene, placement) = en15302_e1();
         let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
         let sides = SideGap::both(&placement);
-        let mut scratch = Scratch::default();
-        let certified = find_jumps(
-            &sides,
-            &sweep.positions,
-            true,
-            &mut scratch,
-            |y, _, ask, s| {
-                s.provisional = false;
-                solve_no_roll(&sides, y, s, ask.only)
-            },
-        );
+        let certified = level_jumps(&sides, &sweep.positions, true, |_| false);
         let mut asked_certified = 0;
-        let steered = find_jumps(
-            &sides,
-            &sweep.positions,
-            true,
-            &mut scratch,
-            |y, _, ask, s| {
-                asked_certified += usize::from(ask.certified);
-                s.provisional = !ask.certified;
-                solve_no_roll(&sides, y, s, ask.only)
-            },
-        );
+        let steered = level_jumps(&sides, &sweep.positions, true, |ask| {
+            asked_certified += usize::from(ask.certified);
+            !ask.certified
+        });
         assert_eq!(format!("{steered:?}"), format!("{certified:?}"));
         // Beyond the other wheel at both ends of every jump: the replays (measured: 60
         // certified solves in 12 refinements).
