@@ -34,11 +34,12 @@ use crate::track::Side;
 /// certificate rejects are kept; otherwise it starts again from the window. So every
 /// position the result rests on is certified, the result is the one of a refinement
 /// certified throughout, and the certificates of the discarded steps (two thirds of them
-/// on the EN 15302 pair) are not made.
+/// on the EN 15302 pair) are not made. A solver that certifies nothing (`certifying` false:
+/// the paper's iteration) steers by the positions it reports, as before.
 pub(super) fn find_jumps(
     sides: &[SideGap; 2],
     positions: &[Position],
-    separable: bool,
+    (separable, certifying): (bool, bool),
     scratch: &mut Scratch,
     mut solve: impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
 ) -> Vec<Jump> {
@@ -59,7 +60,8 @@ pub(super) fn find_jumps(
                 separable,
             };
             steps.clear();
-            let mut ends = task.refine(w, Some(&mut steps), &[], scratch, &mut solve);
+            let record = certifying.then_some(&mut steps);
+            let mut ends = task.refine(w, record, &[], scratch, &mut solve);
             let provisional = [ends[0].1, ends[1].1].into_iter().flatten();
             if !provisional
                 .into_iter()
@@ -372,7 +374,7 @@ mod tests {
         let jumps = find_jumps(
             &sides,
             window,
-            false,
+            (false, true),
             &mut scratch,
             |y, theta0, ask, scratch| {
                 solves += 1;
@@ -403,7 +405,7 @@ mod tests {
             let jumps = find_jumps(
                 &sides,
                 &sweep.positions,
-                false,
+                (false, true),
                 &mut scratch,
                 |y, theta0, ask, s| {
                     s.warm &= !ask.cold;

@@ -116,10 +116,16 @@ mod tests {
         mut provisional: impl FnMut(Ask) -> bool,
     ) -> Vec<Jump> {
         let mut scratch = Scratch::default();
-        find_jumps(sides, positions, separable, &mut scratch, |y, _, ask, s| {
-            s.provisional = provisional(ask);
-            solve_no_roll(sides, y, s, ask.only)
-        })
+        find_jumps(
+            sides,
+            positions,
+            (separable, true),
+            &mut scratch,
+            |y, _, ask, s| {
+                s.provisional = provisional(ask);
+                solve_no_roll(sides, y, s, ask.only)
+            },
+        )
     }
 
     /// Two halves joined are the position solved for both wheels at once, bit for bit

@@ -429,32 +429,28 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     // depends on its shift and start roll alone (the pose boxes it may inherit change the
     // work, not the result; the test `a_cold_solve_does_not_depend_on_what_was_solved_before`),
     // so the second refinement goes on exactly as after solving again.
-    let separable = solver == Solver::NoRoll;
+    // The level wheelset's wheels are solved one at a time; the paper's iteration certifies
+    // nothing, so its refinements have no certificates to skip.
+    let kind = (solver == Solver::NoRoll, solver != Solver::Paper);
     let jumps_in = |part: &[Position], scratch: &mut Scratch| {
         let mut first: Option<((u64, u64, bool), Position, Scratch)> = None;
-        find_jumps(
-            &sides,
-            part,
-            separable,
-            scratch,
-            |y, theta0, ask, scratch| {
-                scratch.provisional = !ask.certified;
-                if !ask.cold || ask.only.is_some() {
-                    return solve(y, theta0, scratch, ask.only);
-                }
-                let key = (y.to_bits(), theta0.to_bits(), ask.certified);
-                if let Some((k, p, after)) = &first
-                    && *k == key
-                {
-                    scratch.clone_from(after);
-                    return *p;
-                }
-                scratch.warm = false;
-                let p = solve(y, theta0, scratch, ask.only);
-                first = Some((key, p, scratch.clone()));
-                p
-            },
-        )
+        find_jumps(&sides, part, kind, scratch, |y, theta0, ask, scratch| {
+            scratch.provisional = !ask.certified;
+            if !ask.cold || ask.only.is_some() {
+                return solve(y, theta0, scratch, ask.only);
+            }
+            let key = (y.to_bits(), theta0.to_bits(), ask.certified);
+            if let Some((k, p, after)) = &first
+                && *k == key
+            {
+                scratch.clone_from(after);
+                return *p;
+            }
+            scratch.warm = false;
+            let p = solve(y, theta0, scratch, ask.only);
+            first = Some((key, p, scratch.clone()));
+            p
+        })
     };
     // Each window's refinements start cold (as above: their results do not depend on what
     // was solved before, only their work does), so in a pool the windows of the sweep's two
