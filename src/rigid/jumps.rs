@@ -32,10 +32,14 @@ use crate::track::Side;
 /// made again with every position certified, as each was before: a separable solver's
 /// position depends on its shift alone, so the provisional steps before the first one a
 /// certificate rejects are kept; otherwise it starts again from the window. So every
-/// position the result rests on is certified, the result is the one of a refinement
-/// certified throughout, and the certificates of the discarded steps (two thirds of them
-/// on the EN 15302 pair) are not made. A solver that certifies nothing (`certifying` false:
-/// the paper's iteration) steers by the positions it reports, as before.
+/// position the result rests on is certified, and the certificates of the discarded steps
+/// (two thirds of them on the EN 15302 pair) are not made. A confirmed interval holds a
+/// jump of the certified contact either way; a provisional step that was no global minimum
+/// but left both ends certified may have steered to another jump of the same window than a
+/// refinement certified throughout would find (on the paper scene and the EN 15302 pair
+/// the jumps are those of such a refinement, bit for bit: the tests below and in
+/// `level.rs`). A solver that certifies nothing (`certifying` false: the paper's
+/// iteration) steers by the positions it reports, as before.
 pub(super) fn find_jumps(
     sides: &[SideGap; 2],
     positions: &[Position],
