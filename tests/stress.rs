@@ -657,6 +657,60 @@ fn a_lower_minimum_in_the_same_bracket_is_found() {
     run(&placement, &[-10.5, -10.0, -9.5], 0.01, "the seed-50 case");
 }
 
+/// The case of `sparse_and_asymmetric_wheelsets_mirror` from its parameters: sparse
+/// profiles (2 mm spacing), interpolated or smoothed, and a different noisy wheel on each
+/// side; the sweep mirrors when the sides are swapped, and converges near the centre.
+fn sparse_and_asymmetric_case(seed: u64, std_um: f64, smoothing: f64, incl: &str) {
+    let sparse_wheel = from_csv(
+        ProfileKind::Wheel,
+        &resample(&Profile::s1002(), 2.0),
+        smoothing,
+        "sparse_s1002.csv",
+    );
+    let sparse_rail = from_csv(
+        ProfileKind::Rail,
+        &resample(&Profile::uic60e1(), 2.0),
+        smoothing,
+        "sparse_uic60.csv",
+    );
+    let noisy_wheel = from_csv(
+        ProfileKind::Wheel,
+        &noisy(&resample(&Profile::s1002(), 0.5), std_um, seed),
+        4.0,
+        "noisy_s1002.csv",
+    );
+    let layout = layout(incl);
+    let context = format!("sparse/noisy {std_um:.1} um, smoothing {smoothing}, {incl}");
+    let ys = shifts(30.0, 25);
+    let ab = place(
+        [sparse_wheel.clone(), noisy_wheel.clone()],
+        [sparse_rail.clone(), sparse_rail.clone()],
+        [460.0, 460.0],
+        &layout,
+    );
+    let ba = place(
+        [noisy_wheel, sparse_wheel],
+        [sparse_rail.clone(), sparse_rail],
+        [460.0, 460.0],
+        &layout,
+    );
+    let sweep_ab = run(&ab, &ys, 0.01, &context);
+    let sweep_ba = run(&ba, &ys, 0.01, &context);
+    assert_converges_near_centre(&sweep_ab, &context);
+    assert_converges_near_centre(&sweep_ba, &context);
+    assert_mirror(&sweep_ab, &sweep_ba, &context);
+}
+
+/// A case where the roll iteration stalled (found by `sparse_and_asymmetric_wheelsets_mirror`
+/// outside CI's seed): at `y_ws = -5` its bracket on the roll collapsed to 7e-16 rad with
+/// `F = -6.4e-3 mm` at one end, because one wheel's minimum was taken from a followed basin
+/// that no longer held its lowest gap; the mirrored wheelset converged at +5. A collapse
+/// on followed basins is now verified by a scan at that pose, and both converge.
+#[test]
+fn a_collapse_on_followed_basins_is_verified_by_a_scan() {
+    sparse_and_asymmetric_case(15_219_847_925_115_496_610, 16.597342006891974, 4.0, "1:40");
+}
+
 fn inclination() -> impl Strategy<Value = &'static str> {
     prop::sample::select(vec!["vertical", "1:40", "1:20"])
 }
@@ -697,37 +751,7 @@ proptest! {
         smoothing in prop::sample::select(vec![0.0, 4.0]),
         incl in inclination(),
     ) {
-        let sparse_wheel = from_csv(
-            ProfileKind::Wheel, &resample(&Profile::s1002(), 2.0), smoothing, "sparse_s1002.csv",
-        );
-        let sparse_rail = from_csv(
-            ProfileKind::Rail, &resample(&Profile::uic60e1(), 2.0), smoothing, "sparse_uic60.csv",
-        );
-        let noisy_wheel = from_csv(
-            ProfileKind::Wheel,
-            &noisy(&resample(&Profile::s1002(), 0.5), std_um, seed),
-            4.0,
-            "noisy_s1002.csv",
-        );
-        let layout = layout(incl);
-        let context = format!("sparse/noisy {std_um:.1} um, smoothing {smoothing}, {incl}");
-        let ys = shifts(30.0, 25);
-        let ab = place(
-            [sparse_wheel.clone(), noisy_wheel.clone()],
-            [sparse_rail.clone(), sparse_rail.clone()],
-            [460.0, 460.0],
-            &layout,
-        );
-        let ba = place(
-            [noisy_wheel, sparse_wheel],
-            [sparse_rail.clone(), sparse_rail],
-            [460.0, 460.0],
-            &layout,
-        );
-        let sweep_ab = run(&ab, &ys, 0.01, &context);
-        let sweep_ba = run(&ba, &ys, 0.01, &context);
-        assert_converges_near_centre(&sweep_ab, &context);
-        assert_mirror(&sweep_ab, &sweep_ba, &context);
+        sparse_and_asymmetric_case(seed, std_um, smoothing, incl);
     }
 
     /// Asymmetric nominal radii through the scene keys, random layouts, sweeps far beyond

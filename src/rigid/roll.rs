@@ -277,6 +277,15 @@ impl Iteration {
             return Verdict::Stop(Stop::IterationCap);
         }
         if collapsed {
+            if !self.fresh {
+                // No root between two rolls a bit apart: F jumps there. On followed basins
+                // that is where one wheel's minimum was taken from a basin that no longer
+                // holds its lowest gap (the lowest gap itself, and so F, is continuous in the
+                // roll): scan at this pose, and drop the bracket built on those minima.
+                return Verdict::Verify {
+                    keep_bracket: false,
+                };
+            }
             return Verdict::Stop(Stop::Stalled);
         }
         Verdict::Step
