@@ -3,7 +3,7 @@
 use super::{PlacementError, TrackLayout, convex_from_second_derivative};
 use crate::profile::bounds::DerivativeBounds;
 use crate::profile::{Profile, ProfileKind};
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// A wheel fixed to the wheelset, in the side frame relative to the wheelset centre.
 #[derive(Debug, Clone)]
@@ -11,8 +11,9 @@ pub struct PlacedWheel {
     profile: Profile,
     taping_line_mm: f64,
     nominal_radius_mm: f64,
-    /// [`PlacedWheel::cells`] of the first grid asked for, built on first use.
-    cells: OnceLock<WheelCells>,
+    /// [`PlacedWheel::cells`] of the first grid asked for, built on first use and shared by
+    /// the wheel's clones (the same wheel: a wheelset's two equal wheels build them once).
+    cells: Arc<OnceLock<WheelCells>>,
     /// The largest value jump of the profile at a section joint (mm).
     value_jump_mm: f64,
 }
@@ -137,7 +138,7 @@ impl PlacedWheel {
         Ok(PlacedWheel {
             taping_line_mm: layout.taping_line_mm(),
             nominal_radius_mm,
-            cells: OnceLock::new(),
+            cells: Arc::default(),
             value_jump_mm: value_jump(&profile),
             profile,
         })
@@ -225,6 +226,12 @@ impl PlacedWheel {
             z: (za.min(zb) - sag - pad, za.max(zb) + sag + pad),
             jump,
         }
+    }
+
+    /// Whether `other` shares this wheel's cell bounds (a clone of it).
+    #[cfg(test)]
+    pub(crate) fn shares_cells_with(&self, other: &PlacedWheel) -> bool {
+        Arc::ptr_eq(&self.cells, &other.cells)
     }
 
     fn build_cells(&self, n: usize) -> WheelCells {
