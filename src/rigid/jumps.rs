@@ -9,8 +9,9 @@ use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap, SidePose};
 use crate::track::Side;
 
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined to
-/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, ask)` solves one position as `ask` says
-/// ([`Ask`]: cold at the first of a refinement, one wheel only, certified or provisional);
+/// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, ask, scratch)` solves one position as `ask`
+/// says ([`Ask`]: cold at the first of a refinement, one wheel only), certified or
+/// provisionally as `scratch` is set for it here ([`Scratch::provisional`]);
 /// a `separable` solver (the level wheelset, whose wheels do not interact) answers
 /// `only = Some(k)` with that wheel's half of the position (see `level.rs`): the refinement
 /// of a wheel's jump solves that wheel only, and the other wheel only at the two ends of a
@@ -66,11 +67,8 @@ pub(super) fn find_jumps(
             steps.clear();
             let record = certifying.then_some(&mut steps);
             let mut ends = task.refine(w, record, &[], scratch, &mut solve);
-            let provisional = [ends[0].1, ends[1].1].into_iter().flatten();
-            if !provisional
-                .into_iter()
-                .all(|i| steps.certified(sides, i, task.wheels()))
-            {
+            let mut provisional = [ends[0].1, ends[1].1].into_iter().flatten();
+            if !provisional.all(|i| steps.certified(sides, i, task.wheels())) {
                 // The certified steps stand where the solver's positions depend on the shift
                 // alone; the first step a certificate rejects is solved again, certified.
                 let good = if separable {
@@ -99,7 +97,7 @@ pub(super) fn find_jumps(
                     only: Some(1 - k),
                     certified: true,
                 };
-                join_sides(&p, &solve(p.y_ws, p.roll, ask, scratch), k)
+                join_sides(&p, &ask.solve(&mut solve, p.y_ws, p.roll, scratch), k)
             };
             let (pa, pb) = (whole(pa), whole(pb));
             jumps.push(Jump {
@@ -126,6 +124,20 @@ pub(super) struct Ask {
     /// Whether the global minimum is certified (false: provisional, see
     /// [`Scratch::provisional`]).
     pub(super) certified: bool,
+}
+
+impl Ask {
+    /// `solve(y_ws, theta0, self)`, provisional ([`Scratch::provisional`]) unless certified.
+    fn solve(
+        self,
+        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
+        y_ws: f64,
+        theta0: f64,
+        scratch: &mut Scratch,
+    ) -> Position {
+        scratch.provisional = !self.certified;
+        solve(y_ws, theta0, self, scratch)
+    }
 }
 
 /// One wheel's candidate jumps in a sweep.
@@ -294,7 +306,7 @@ impl Task<'_, '_> {
                 };
                 let mid = match known.get(solved) {
                     Some(p) => *p,
-                    None => solve(y, a.roll, ask, scratch),
+                    None => ask.solve(solve, y, a.roll, scratch),
                 };
                 (cold, solved) = (false, solved + 1);
                 let Some(m) = mid.side(side) else {
@@ -383,7 +395,6 @@ mod tests {
             |y, theta0, ask, scratch| {
                 solves += 1;
                 scratch.warm &= !ask.cold;
-                scratch.provisional = !ask.certified;
                 solve_default(&sides, &settings, y, theta0, scratch)
             },
         );

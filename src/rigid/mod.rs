@@ -435,7 +435,6 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     let jumps_in = |part: &[Position], scratch: &mut Scratch| {
         let mut first: Option<((u64, u64, bool), Position, Scratch)> = None;
         find_jumps(&sides, part, kind, scratch, |y, theta0, ask, scratch| {
-            scratch.provisional = !ask.certified;
             if !ask.cold || ask.only.is_some() {
                 return solve(y, theta0, scratch, ask.only);
             }
