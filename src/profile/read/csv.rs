@@ -79,7 +79,7 @@ fn first_two_fields(line: &str) -> Option<[Option<&str>; 2]> {
 ///
 /// Two of the crate's ways are corrected. It reports a record on the line after the
 /// previous record (blank and comment lines between them, and the line feed of a CRLF end,
-/// not counted): the line here is counted from the record's first byte ([`record_line`]).
+/// not counted): the line here is counted from the record's first byte ([`LineCount`]).
 /// And it reads a comment that ends the text without a line end as a record of one empty
 /// field: the text is given a line end first.
 fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPoint>, ReadError> {
@@ -96,9 +96,11 @@ fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPo
         .flexible(true)
         .from_reader(text.as_bytes());
     let mut rows = Rows::new(kind, origin);
-    let line_at = |p: Option<&::csv::Position>| {
+    // The crate's positions increase: lines are counted on from the last record's start.
+    let mut lines = LineCount::default();
+    let mut line_at = |p: Option<&::csv::Position>| {
         p.map_or(0, |p| {
-            record_line(text, usize::try_from(p.byte()).unwrap_or(usize::MAX))
+            lines.record_line(text, usize::try_from(p.byte()).unwrap_or(usize::MAX))
         })
     };
     // One record reused for every line: a fleet reads thousands of files.
@@ -117,32 +119,48 @@ fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPo
     rows.finish()
 }
 
-/// The 1-based line of the record the `csv` crate read from byte `from` of `text`: the
-/// crate's position may lie on the line ends, blank lines and comment lines before the
-/// record, which are passed over. A line ends at `\n`, `\r\n` or a lone `\r`.
-fn record_line(text: &str, from: usize) -> usize {
-    let bytes = text.as_bytes();
-    let mut at = from.min(bytes.len());
-    loop {
-        match bytes.get(at) {
-            Some(b'\r' | b'\n') => at += 1,
-            Some(b'#') if at == 0 || matches!(bytes[at - 1], b'\r' | b'\n') => {
-                // A comment, to the crate's end of it: the next line feed.
-                at += bytes[at..]
-                    .iter()
-                    .position(|&b| b == b'\n')
-                    .unwrap_or(bytes.len() - at);
+/// The lines of a text counted up to a byte, on from where the last count ended.
+#[derive(Default)]
+struct LineCount {
+    /// The byte counted up to, and the line ends before it.
+    at: usize,
+    ends: usize,
+}
+
+impl LineCount {
+    /// The 1-based line of the record the `csv` crate read from byte `from` of `text` (at or
+    /// after the last one asked for): the crate's position may lie on the line ends, blank
+    /// lines and comment lines before the record, which are passed over. A line ends at
+    /// `\n`, `\r\n` or a lone `\r`.
+    fn record_line(&mut self, text: &str, from: usize) -> usize {
+        let bytes = text.as_bytes();
+        let mut at = from.min(bytes.len());
+        loop {
+            match bytes.get(at) {
+                Some(b'\r' | b'\n') => at += 1,
+                Some(b'#') if at == 0 || matches!(bytes[at - 1], b'\r' | b'\n') => {
+                    // A comment, to the crate's end of it: the next line feed.
+                    at += bytes[at..]
+                        .iter()
+                        .position(|&b| b == b'\n')
+                        .unwrap_or(bytes.len() - at);
+                }
+                _ => break,
             }
-            _ => break,
         }
+        if at < self.at {
+            // Asked out of order: counted again from the start.
+            *self = LineCount::default();
+        }
+        let start = self.at;
+        self.ends += (start..at)
+            .filter(|&i| {
+                bytes[i] == b'\n' || (bytes[i] == b'\r' && bytes.get(i + 1) != Some(&b'\n'))
+            })
+            .count();
+        self.at = at;
+        self.ends + 1
     }
-    let before = &bytes[..at];
-    let line_ends = before
-        .iter()
-        .enumerate()
-        .filter(|&(i, &b)| b == b'\n' || (b == b'\r' && before.get(i + 1) != Some(&b'\n')))
-        .count();
-    line_ends + 1
 }
 
 /// The records read so far: the header first, then one point per record.
