@@ -205,15 +205,25 @@ impl DeltaR {
     }
 
     /// The equilibrium: the stable zero crossing of Δr (from negative to positive) nearest
-    /// to `y = 0`, as the band `[from, to]` where Δr = 0 (`from == to` for a crossing point).
-    /// `None` when Δr has no stable crossing.
+    /// to `y = 0`, as the band `[from, to]` where Δr = 0 (`from == to` for a crossing point);
+    /// of two equally near, the one at positive `y` (a symmetric wheelset's two equilibria
+    /// off the centre are mirror images, with the same conicity). `None` when Δr has no
+    /// stable crossing.
     pub fn equilibrium(&self) -> Option<(f64, f64)> {
         let (y, d) = (&self.y, &self.dr);
         let n = y.len();
         let mut best: Option<(f64, f64)> = None;
         let mut consider = |band: (f64, f64)| {
             let mid = 0.5 * (band.0 + band.1);
-            if best.is_none_or(|b| mid.abs() < (0.5 * (b.0 + b.1)).abs()) {
+            let nearer = |b: (f64, f64)| {
+                let other = 0.5 * (b.0 + b.1);
+                match mid.abs().total_cmp(&other.abs()) {
+                    std::cmp::Ordering::Less => true,
+                    std::cmp::Ordering::Equal => mid > other,
+                    std::cmp::Ordering::Greater => false,
+                }
+            };
+            if best.is_none_or(nearer) {
                 best = Some(band);
             }
         };
@@ -244,5 +254,27 @@ impl DeltaR {
             i += 1;
         }
         best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::DeltaR;
+
+    /// An odd Δr falling through 0 (unstable) between two stable crossings at ±2 mm, as a
+    /// symmetric wheelset may give it: of the two equally near equilibria, the positive one.
+    #[test]
+    fn of_two_equally_near_equilibria_the_positive_one() {
+        let y: Vec<f64> = (-4..=4).map(f64::from).collect();
+        // Δr = y (y^2 - 4) / 4: zeros at 0 (falling) and ±2 (rising).
+        let dr: Vec<f64> = y.iter().map(|&y| y * (y * y - 4.0) / 4.0).collect();
+        let d = DeltaR::new(y.clone(), dr.clone()).unwrap();
+        assert_eq!(d.equilibrium(), Some((2.0, 2.0)));
+        // A crossing nearer the centre still wins, on either side: the zero at -2 moved
+        // to -1.5.
+        let mut nearer = y;
+        nearer[2] = -1.5;
+        let d = DeltaR::new(nearer, dr).unwrap();
+        assert_eq!(d.equilibrium(), Some((-1.5, -1.5)));
     }
 }

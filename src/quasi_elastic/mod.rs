@@ -71,6 +71,16 @@ pub struct Patch {
 }
 
 impl Patch {
+    /// The patch seen in the mirror `y -> -y` of the track: the other wheel's at the
+    /// mirrored position (only the track-frame `y` changes sign, as for
+    /// [`crate::rigid::SideContact`]).
+    fn mirrored(&self) -> Patch {
+        Patch {
+            y: -self.y,
+            ..*self
+        }
+    }
+
     /// The averaged contact point: the columns shared with the rigid contact.
     pub fn point(&self) -> ContactPoint {
         ContactPoint {
@@ -154,6 +164,11 @@ pub struct QuasiElasticSweep {
 
 /// Averages the contact of every position of a rigid sweep.
 ///
+/// On a [mirror-symmetric](crate::track::Placement::is_mirror_symmetric) wheelset whose
+/// rigid positions are mirror images about the middle one (as [`crate::rigid::search`] gives
+/// them on a symmetric sweep), the positions from the middle on are averaged and those
+/// before it are their mirror images, bit for bit what averaging them would give.
+///
 /// # Example
 /// ```
 /// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
@@ -167,10 +182,18 @@ pub struct QuasiElasticSweep {
 /// ```
 pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) -> QuasiElasticSweep {
     let sides = SideGap::both(placement);
+    // A mirror-symmetric wheelset whose rigid positions are mirror images about the middle
+    // one (as `rigid::search` gives them): a wheel at a position is averaged exactly as the
+    // other wheel at the mirrored position, operation for operation (both in their side
+    // frames), so the positions before the middle are the mirror images of those after it.
+    let all = &rigid.positions;
+    let n = all.len();
+    let mirror = placement.is_mirror_symmetric()
+        && (0..n / 2).all(|i| all[i] == all[n - 1 - i].mirrored(all[i].y_ws));
+    let first = if mirror { n / 2 } else { 0 };
     // Positions are independent: averaged in parallel (rayon), buffers per thread.
     use rayon::prelude::*;
-    let positions = rigid
-        .positions
+    let mut positions: Vec<Position> = all[first..]
         .par_iter()
         .map_init(Work::default, |work, p| {
             let mut result = [SideResult::default(), SideResult::default()];
@@ -196,6 +219,20 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
             }
         })
         .collect();
+    if mirror {
+        let mirrored = (0..first).map(|i| {
+            let p = &positions[n - 1 - i - first];
+            let side = |k: usize| SideResult {
+                patches: p.sides[k].patches.iter().map(Patch::mirrored).collect(),
+            };
+            Position {
+                y_ws: all[i].y_ws,
+                sides: [side(1), side(0)],
+                rigid_stop: p.rigid_stop,
+            }
+        });
+        positions.splice(0..0, mirrored.collect::<Vec<_>>());
+    }
     QuasiElasticSweep {
         settings: *settings,
         positions,
@@ -583,6 +620,35 @@ pub fn average<const N: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// On a mirror-symmetric wheelset whose rigid positions mirror about the middle, the
+    /// positions before the middle are mirror images of those after it, and they are bit
+    /// for bit what averaging them gives (each wheel is averaged in its side frame), with
+    /// either quadrature.
+    #[test]
+    fn a_symmetric_sweep_mirrors_its_half() {
+        let scene = crate::scene::Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let rigid = crate::rigid::search(&placement, scene.sweep_mm(), Default::default());
+        // The mirror is taken: the rigid positions are mirror images.
+        let p = &rigid.positions;
+        let n = p.len();
+        assert!(placement.is_mirror_symmetric() && n == 301);
+        assert!((0..n).all(|i| p[i] == p[n - 1 - i].mirrored(p[i].y_ws)));
+        let apart = placement.with_sides_apart();
+        for quadrature in [
+            Quadrature::default(),
+            Quadrature::Trapezoid { max_step_mm: 0.05 },
+        ] {
+            let settings = Settings::default().with_quadrature(quadrature).unwrap();
+            let mirrored = search(&placement, &rigid, &settings);
+            let averaged = search(&apart, &rigid, &settings);
+            assert_eq!(
+                format!("{:?}", mirrored.positions),
+                format!("{:?}", averaged.positions)
+            );
+        }
+    }
 
     /// The shortcut for a gap that falls then rises gives what the scan gives, on random
     /// sequences of few distinct values (ties, plateaus, bumps), half of them unimodal.

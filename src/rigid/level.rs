@@ -156,6 +156,8 @@ mod tests {
     #[test]
     fn jumps_refined_on_one_wheel_are_those_of_whole_positions() {
         let (scene, placement) = en15302_e1();
+        // Every window refined, none of them mirrored.
+        let placement = placement.with_sides_apart();
         let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
         let sides = SideGap::both(&placement);
         let (mut halves, mut wholes) = (0, 0);
@@ -174,6 +176,36 @@ mod tests {
         // Measured: 468 half solves against 392 whole ones (784 halves).
         eprintln!("{halves} half solves against {wholes} whole ones");
         assert!(halves < 2 * wholes * 2 / 3, "{halves} vs {wholes}");
+    }
+
+    /// On a mirror-symmetric wheelset the positions before the middle of a symmetric sweep,
+    /// and their jumps, are the mirror images of those after it: they are what solving
+    /// every position gives, the half after the middle bit for bit (the same solves in the
+    /// same order) and the mirrored half to the last bits of a bisection's midpoints. On
+    /// the EN 15302 pair, whose level wheelset is solved wheel by wheel from the shift
+    /// alone, the mirrored positions are the solved ones bit for bit too.
+    #[test]
+    fn a_symmetric_sweep_mirrors_its_half() {
+        let (scene, placement) = en15302_e1();
+        assert!(placement.is_mirror_symmetric());
+        let sweep = scene.sweep_mm();
+        let mirrored = search(&placement, sweep, Solver::NoRoll);
+        let solved = search(&placement.with_sides_apart(), sweep, Solver::NoRoll);
+        let n = sweep.len();
+        for (i, (m, s)) in mirrored.positions.iter().zip(&solved.positions).enumerate() {
+            assert_eq!(format!("{m:?}"), format!("{s:?}"), "y = {}", s.y_ws);
+            // The images themselves, field by field.
+            let image = mirrored.positions[n - 1 - i].mirrored(sweep[i]);
+            assert_eq!(format!("{image:?}"), format!("{m:?}"));
+        }
+        assert_eq!(mirrored.jumps.len(), solved.jumps.len());
+        assert!(mirrored.jumps.len() >= 30);
+        for (m, s) in mirrored.jumps.iter().zip(&solved.jumps) {
+            assert_eq!((m.side, m.s_from, m.s_to), (s.side, s.s_from, s.s_to));
+            assert!((m.y_from - s.y_from).abs() <= 1e-15 && (m.y_to - s.y_to).abs() <= 1e-15);
+            assert!((m.delta_r_from - s.delta_r_from).abs() <= 1e-15);
+            assert!((m.delta_r_to - s.delta_r_to).abs() <= 1e-15);
+        }
     }
 
     /// Refinements steered by provisional positions find the jumps of refinements certified

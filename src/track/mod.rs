@@ -318,6 +318,41 @@ impl Placement {
         Placement::new(layout, left, right)
     }
 
+    /// Whether the right side is the left one mirrored: the same wheel (a clone, as
+    /// [`Placement::symmetric`] and a scene naming one profile and radius for both wheels
+    /// make) on the same rail (one shared placed rail). Each side is computed in its own
+    /// mirrored side frame, so the right wheel at a shift `-y` and roll `-theta` is then
+    /// the left wheel at `y` and `theta` operation for operation: a sweep symmetric about
+    /// the centre needs only its half. Equal wheels or rails placed separately are not
+    /// recognised (the test is by identity, not by content).
+    pub fn is_mirror_symmetric(&self) -> bool {
+        self.left.wheel.shares_cells_with(&self.right.wheel)
+            && Arc::ptr_eq(&self.left.rail, &self.right.rail)
+    }
+
+    /// This placement with its right side placed again, apart from the left: the same
+    /// numbers, but not [mirror-symmetric](Placement::is_mirror_symmetric), so that a sweep
+    /// solves every position (to compare with the mirror images).
+    #[cfg(test)]
+    pub(crate) fn with_sides_apart(&self) -> Placement {
+        let wheel = &self.right.wheel;
+        let apart = Placement {
+            layout: self.layout.clone(),
+            left: self.left.clone(),
+            right: SidePair {
+                wheel: PlacedWheel::place(
+                    wheel.profile().clone(),
+                    wheel.nominal_radius_mm(),
+                    &self.layout,
+                )
+                .unwrap(),
+                rail: Arc::new(PlacedRail::clone(&self.right.rail)),
+            },
+        };
+        assert!(!apart.is_mirror_symmetric());
+        apart
+    }
+
     /// The side pair of `side`.
     pub fn side(&self, side: Side) -> &SidePair {
         match side {

@@ -228,8 +228,8 @@ impl PlacedWheel {
         }
     }
 
-    /// Whether `other` shares this wheel's cell bounds (a clone of it).
-    #[cfg(test)]
+    /// Whether `other` shares this wheel's cell bounds: a clone of it, the same profile at
+    /// the same radius and placement.
     pub(crate) fn shares_cells_with(&self, other: &PlacedWheel) -> bool {
         Arc::ptr_eq(&self.cells, &other.cells)
     }
