@@ -35,6 +35,23 @@ fn rigid_sweep() -> &'static RigidSweep {
     R.get_or_init(|| rigid::search(placement(), scene().sweep_mm(), Solver::default()))
 }
 
+/// The paper placement with its right side placed apart from the left: the same numbers,
+/// but not mirror-symmetric, so that every position of a sweep is solved and averaged (the
+/// work of a wheelset whose two wheels differ, such as a measured pair).
+fn placement_apart() -> &'static Placement {
+    static P: OnceLock<Placement> = OnceLock::new();
+    P.get_or_init(|| {
+        let p = placement();
+        let layout = p.layout();
+        let wheel = p.right().wheel();
+        let wheel = PlacedWheel::place(wheel.profile().clone(), wheel.nominal_radius_mm(), layout);
+        let right = SidePair::new(wheel.unwrap(), p.right().rail().clone());
+        let apart = Placement::new(layout.clone(), p.left().clone(), right).unwrap();
+        assert!(!apart.is_mirror_symmetric());
+        apart
+    })
+}
+
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
     static Q: OnceLock<QuasiElasticSweep> = OnceLock::new();
     Q.get_or_init(|| quasi_elastic::search(placement(), rigid_sweep(), scene().quasi_elastic()))
@@ -63,8 +80,10 @@ fn sampled_points() -> &'static (Points, Points) {
 }
 
 /// The sampled wheel and rail checked, fitted (interpolating splines) and placed as the
-/// paper scene places the analytic ones (`pipeline::place`): each profile fitted once, the
-/// wheel placed on both sides, the rail placed once and shared by both sides.
+/// paper scene places the analytic ones (`pipeline::place`): each profile fitted and placed
+/// once, the wheel cloned for the right side and the rail shared by both sides (a
+/// mirror-symmetric wheelset, as a scene naming one measured profile for both wheels
+/// gives).
 fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
     let analytic = placement();
     let layout = analytic.layout();
@@ -81,13 +100,10 @@ fn place_sampled_pair(wheel: &[[f64; 2]], rail: &[[f64; 2]]) -> Placement {
         )
         .unwrap(),
     );
-    let side = |pair: &SidePair, rail: Arc<PlacedRail>| {
-        let wheel =
-            PlacedWheel::place(wheel.clone(), pair.wheel().nominal_radius_mm(), layout).unwrap();
-        SidePair::new(wheel, rail)
-    };
-    let left = side(analytic.left(), rail.clone());
-    let right = side(analytic.right(), rail);
+    let wheel =
+        PlacedWheel::place(wheel, analytic.left().wheel().nominal_radius_mm(), layout).unwrap();
+    let left = SidePair::new(wheel.clone(), rail.clone());
+    let right = SidePair::new(wheel, rail);
     Placement::new(layout.clone(), left, right).unwrap()
 }
 
@@ -147,6 +163,17 @@ fn rigid_default() -> RigidSweep {
     )
 }
 
+/// The same sweep solved at every position: the placement's sides placed apart, so that the
+/// positions left of the centre are not mirrored (a wheelset of two different wheels).
+#[divan::bench]
+fn rigid_default_unmirrored() -> RigidSweep {
+    rigid::search(
+        black_box(placement_apart()),
+        scene().sweep_mm(),
+        black_box(Solver::default()),
+    )
+}
+
 /// The rigid sweep with the paper's solver.
 #[divan::bench(sample_count = 30)]
 fn rigid_paper() -> RigidSweep {
@@ -162,6 +189,17 @@ fn rigid_paper() -> RigidSweep {
 fn quasi_elastic() -> QuasiElasticSweep {
     quasi_elastic::search(
         black_box(placement()),
+        rigid_sweep(),
+        scene().quasi_elastic(),
+    )
+}
+
+/// The same pass averaging every position (the placement's sides apart, as
+/// `rigid_default_unmirrored`).
+#[divan::bench]
+fn quasi_elastic_unmirrored() -> QuasiElasticSweep {
+    quasi_elastic::search(
+        black_box(placement_apart()),
         rigid_sweep(),
         scene().quasi_elastic(),
     )

@@ -110,81 +110,133 @@ pub fn sweep(
     e_star_mpa: f64,
     settings: &Settings,
 ) -> Vec<Position> {
-    rigid
+    sweep_reusing(
+        rigid,
+        quasi_elastic,
+        wheel_load_n,
+        e_star_mpa,
+        settings,
+        true,
+    )
+    .0
+}
+
+/// What one wheel's ellipse depends on, as bits: rolling radius, contact angle, lateral
+/// curvatures of wheel and rail, the patch's weight share and the number of patches; or
+/// why there is no contact.
+type Input = Result<([u64; 5], usize), String>;
+
+/// [`sweep`], where a wheel whose input is bit for bit the other wheel's at the mirrored
+/// position (the positions before and after the middle of a mirror-symmetric wheelset's
+/// sweep) takes that wheel's result when `reuse`: the ellipse is a function of its input.
+/// Also returns how many results were taken.
+fn sweep_reusing(
+    rigid: &RigidSweep,
+    quasi_elastic: Option<&QuasiElasticSweep>,
+    wheel_load_n: f64,
+    e_star_mpa: f64,
+    settings: &Settings,
+    reuse: bool,
+) -> (Vec<Position>, usize) {
+    let input = |i: usize, k: usize| -> Input {
+        let p = &rigid.positions[i];
+        if p.stop != Stop::Converged {
+            return Err(format!("rigid search: {}", p.stop.status_text()));
+        }
+        let contact = match settings.source {
+            ContactSource::Rigid => {
+                p.contact[k].map(|c| ([c.r, c.gamma, c.wheel_curvature, c.rail_curvature, 1.0], 1))
+            }
+            ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
+                let side = &q.positions[i].sides[k];
+                side.main().map(|m| {
+                    let values = [m.r, m.gamma, m.wheel_curvature, m.rail_curvature];
+                    (
+                        [values[0], values[1], values[2], values[3], m.weight_share],
+                        side.patches.len(),
+                    )
+                })
+            }),
+        };
+        contact
+            .map(|(v, patches)| (v.map(f64::to_bits), patches))
+            .ok_or_else(|| "no contact".into())
+    };
+    let solve = |input: &Input| -> SideHertz {
+        let (bits, patches) = match input {
+            Ok(v) => *v,
+            Err(status) => return missing(status.clone()),
+        };
+        let [r, gamma, kw, kr, share] = bits.map(f64::from_bits);
+        let (a, b) = relative_curvatures(
+            &PrincipalCurvatures {
+                wheel_rolling: gamma.cos() / r,
+                wheel_lateral: kw,
+                rail_rolling: 0.0,
+                rail_lateral: kr,
+            },
+            0.0,
+        );
+        let vertical = wheel_load_n * share;
+        let load = match settings.normal_load {
+            NormalLoad::Projected => vertical / gamma.cos(),
+            NormalLoad::Vertical => vertical,
+        };
+        let (contact, mut status) = match ellipse(a, b, load, e_star_mpa, settings.method) {
+            Ok(c @ Contact::Hertzian(e)) => {
+                let status = match e.stop {
+                    super::Stop::Converged => "ok".to_string(),
+                    other => format!("ellipse: {other}"),
+                };
+                (Some(c), status)
+            }
+            Ok(c @ Contact::NotHertzian(reason)) => (Some(c), reason.to_string()),
+            Err(e) => (None, format!("error: {e}")),
+        };
+        if patches > 1 {
+            status.push_str(&format!(
+                "; {patches} patches, load split by weight (reported patch {:.0} %)",
+                100.0 * share
+            ));
+        }
+        SideHertz {
+            a_curvature: a,
+            b_curvature: b,
+            normal_load_n: load,
+            contact,
+            status,
+        }
+    };
+    let n = rigid.positions.len();
+    let inputs: Vec<[Input; 2]> = (0..n).map(|i| [0, 1].map(|k| input(i, k))).collect();
+    // From the middle on first, so that the positions before it can take their mirror
+    // images' results.
+    let mut sides: Vec<Option<[SideHertz; 2]>> = vec![None; n];
+    let mut taken = 0;
+    for i in (n / 2..n).chain(0..n / 2) {
+        let j = n - 1 - i;
+        sides[i] = Some([0, 1].map(|k| {
+            if reuse
+                && i < n / 2
+                && inputs[i][k] == inputs[j][1 - k]
+                && let Some(mirror) = &sides[j]
+            {
+                taken += 1;
+                return mirror[1 - k].clone();
+            }
+            solve(&inputs[i][k])
+        }));
+    }
+    let positions = rigid
         .positions
         .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let sides = [0, 1].map(|k| {
-                if p.stop != Stop::Converged {
-                    return missing(format!("rigid search: {}", p.stop.status_text()));
-                }
-                // (r, gamma, wheel curvature, rail curvature, weight share, patches)
-                let contact = match settings.source {
-                    ContactSource::Rigid => p.contact[k]
-                        .map(|c| (c.r, c.gamma, c.wheel_curvature, c.rail_curvature, 1.0, 1)),
-                    ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
-                        let side = &q.positions[i].sides[k];
-                        side.main().map(|m| {
-                            (
-                                m.r,
-                                m.gamma,
-                                m.wheel_curvature,
-                                m.rail_curvature,
-                                m.weight_share,
-                                side.patches.len(),
-                            )
-                        })
-                    }),
-                };
-                let Some((r, gamma, kw, kr, share, patches)) = contact else {
-                    return missing("no contact".into());
-                };
-                let (a, b) = relative_curvatures(
-                    &PrincipalCurvatures {
-                        wheel_rolling: gamma.cos() / r,
-                        wheel_lateral: kw,
-                        rail_rolling: 0.0,
-                        rail_lateral: kr,
-                    },
-                    0.0,
-                );
-                let vertical = wheel_load_n * share;
-                let load = match settings.normal_load {
-                    NormalLoad::Projected => vertical / gamma.cos(),
-                    NormalLoad::Vertical => vertical,
-                };
-                let (contact, mut status) = match ellipse(a, b, load, e_star_mpa, settings.method) {
-                    Ok(c @ Contact::Hertzian(e)) => {
-                        let status = match e.stop {
-                            super::Stop::Converged => "ok".to_string(),
-                            other => format!("ellipse: {other}"),
-                        };
-                        (Some(c), status)
-                    }
-                    Ok(c @ Contact::NotHertzian(reason)) => (Some(c), reason.to_string()),
-                    Err(e) => (None, format!("error: {e}")),
-                };
-                if patches > 1 {
-                    status.push_str(&format!(
-                        "; {patches} patches, load split by weight (reported patch {:.0} %)",
-                        100.0 * share
-                    ));
-                }
-                SideHertz {
-                    a_curvature: a,
-                    b_curvature: b,
-                    normal_load_n: load,
-                    contact,
-                    status,
-                }
-            });
-            Position {
-                y_ws: p.y_ws,
-                sides,
-            }
+        .zip(sides)
+        .map(|(p, sides)| Position {
+            y_ws: p.y_ws,
+            sides: sides.expect("every position solved"),
         })
-        .collect()
+        .collect();
+    (positions, taken)
 }
 
 fn missing(status: String) -> SideHertz {
@@ -194,5 +246,32 @@ fn missing(status: String) -> SideHertz {
         normal_load_n: f64::NAN,
         contact: None,
         status,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// On the paper scene (a mirror-symmetric wheelset, its sweep mirrored about the
+    /// middle), every wheel before the middle takes its mirror image's ellipse, and the
+    /// sweep is what computing every ellipse gives, for both contact sources.
+    #[test]
+    fn mirrored_wheels_take_their_images_ellipses() {
+        let scene = crate::scene::Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let placement = crate::pipeline::place(&scene).unwrap();
+        let rigid = crate::rigid::search(&placement, scene.sweep_mm(), Default::default());
+        let qe = crate::quasi_elastic::search(&placement, &rigid, scene.quasi_elastic());
+        let e_star = super::super::effective_modulus(scene.wheel_material(), scene.rail_material());
+        for source in [ContactSource::QuasiElastic, ContactSource::Rigid] {
+            let settings = Settings {
+                source,
+                ..Settings::default()
+            };
+            let run = |reuse| sweep_reusing(&rigid, Some(&qe), 70e3, e_star, &settings, reuse);
+            let ((taken, n), (computed, none)) = (run(true), run(false));
+            assert_eq!((n, none), (300, 0), "{source:?}");
+            assert_eq!(format!("{taken:?}"), format!("{computed:?}"));
+        }
     }
 }

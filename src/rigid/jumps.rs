@@ -365,16 +365,26 @@ mod tests {
     /// of a symmetric sweep are the positions solved before it, to the solver's accuracy:
     /// the roll solve of a mirrored position starts from the mirrored prediction, and its
     /// root is found to 1e-11 mm of residual, not bit for bit. The half after the middle
-    /// is the same solves in the same order, bit for bit.
+    /// is the same solves in the same order, bit for bit. The sweep is spaced evenly as
+    /// `-15 + 30 i / 300`, whose opposite shifts differ in their last bits: mirrored all
+    /// the same (`MIRRORED_SHIFT_MM`), each image reported at the sweep's own shift.
     #[test]
     fn a_symmetric_sweep_with_roll_mirrors_its_half() {
         let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
         assert!(placement.is_mirror_symmetric());
-        let sweep = scene.sweep_mm();
-        let mirrored = search(&placement, sweep, Solver::default());
-        let solved = search(&placement.with_sides_apart(), sweep, Solver::default());
+        let sweep: Vec<f64> = (0..301)
+            .map(|i| -15.0 + 30.0 * f64::from(i) / 300.0)
+            .collect();
+        let sweep = &sweep[..];
         let n = sweep.len();
+        assert!((0..n / 2).any(|i| sweep[i].to_bits() != (-sweep[n - 1 - i]).to_bits()));
+        let mirrored = search(&placement, sweep, Solver::default());
+        for (i, p) in mirrored.positions.iter().enumerate() {
+            let image = mirrored.positions[n - 1 - i].mirrored(sweep[i]);
+            assert_eq!(format!("{p:?}"), format!("{image:?}"));
+        }
+        let solved = search(&placement.with_sides_apart(), sweep, Solver::default());
         let (mut roll, mut s, mut r, mut height) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
         for (i, (m, p)) in mirrored.positions.iter().zip(&solved.positions).enumerate() {
             if i >= n / 2 {

@@ -246,13 +246,21 @@ impl Jump {
     }
 }
 
+/// Shifts of a sweep opposite within this are mirror images of each other (mm): a sweep
+/// computed as `from + i * step` or `from + (to - from) * i / (n - 1)` rounds the shifts
+/// of one side differently from the other's by an ulp or so (2e-15 mm at 15 mm). A
+/// mirrored position is reported at the sweep's own shift, at most this far from the shift
+/// it was solved at: its contact moves by about as much (far below the solver's 1e-11 mm
+/// residual), unless a jump lies in between, which no sweep resolves that finely.
+const MIRRORED_SHIFT_MM: f64 = 1e-12;
+
 /// Whether the shifts of `sweep_mm` are symmetric about the centre: the `i`-th from either
-/// end are exactly opposite, and an odd sweep has 0 in its middle.
+/// end are opposite, and an odd sweep has 0 in its middle (within [`MIRRORED_SHIFT_MM`]).
 fn mirrored_sweep(sweep_mm: &[f64]) -> bool {
     let n = sweep_mm.len();
     n >= 2
-        && (0..n / 2).all(|i| sweep_mm[i].to_bits() == (-sweep_mm[n - 1 - i]).to_bits())
-        && (n.is_multiple_of(2) || sweep_mm[n / 2].abs().to_bits() == 0)
+        && (0..n / 2).all(|i| (sweep_mm[i] + sweep_mm[n - 1 - i]).abs() <= MIRRORED_SHIFT_MM)
+        && (n.is_multiple_of(2) || sweep_mm[n / 2].abs() <= MIRRORED_SHIFT_MM)
 }
 
 /// A contact point moving more than this between neighbouring positions of the sweep is
@@ -409,8 +417,8 @@ fn side_index(side: Side) -> usize {
 /// Solves the rigid contact at every lateral shift of `sweep_mm` (increasing).
 ///
 /// A [mirror-symmetric](Placement::is_mirror_symmetric) wheelset on a sweep symmetric about
-/// the centre (`-15..15` mm in steps that divide it, as scenes make them) is solved from the
-/// middle position on, and the positions before it and their jumps are the mirror images:
+/// the centre (shifts opposite within 1e-12 mm, as scenes and evenly spaced sweeps give
+/// them) is solved from the middle position on, and the positions before it and their jumps are the mirror images:
 /// the wheels swapped, the roll and the track-frame `y` of the contacts negated. They equal
 /// what solving them gives to the solver's accuracy (bit for bit for the level wheelset),
 /// and the Δr function is exactly odd.
