@@ -210,7 +210,15 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
         )
         .map_err(|e| crate::Error::Other(e.to_string()))
     };
-    Placement::new(scene.layout.clone(), side(0)?, side(1)?)
+    // One profile and radius for both wheels and one rail profile: one side placed and
+    // cloned for the other, as `pipeline::place` places a scene's measured files (the
+    // wheelset is then mirror-symmetric, and a symmetric sweep solves half of it).
+    let left = side(0)?;
+    let same = scene.wheel_profiles[0] == scene.wheel_profiles[1]
+        && scene.nominal_radius_mm[0].to_bits() == scene.nominal_radius_mm[1].to_bits()
+        && scene.rail_profiles[0] == scene.rail_profiles[1];
+    let right = if same { left.clone() } else { side(1)? };
+    Placement::new(scene.layout.clone(), left, right)
         .map_err(|e| crate::Error::Other(e.to_string()))
 }
 
