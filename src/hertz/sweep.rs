@@ -150,11 +150,14 @@ fn sweep_reusing(
             ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
                 let side = &q.positions[i].sides[k];
                 side.main().map(|m| {
-                    let values = [m.r, m.gamma, m.wheel_curvature, m.rail_curvature];
-                    (
-                        [values[0], values[1], values[2], values[3], m.weight_share],
-                        side.patches.len(),
-                    )
+                    let values = [
+                        m.r,
+                        m.gamma,
+                        m.wheel_curvature,
+                        m.rail_curvature,
+                        m.weight_share,
+                    ];
+                    (values, side.patches.len())
                 })
             }),
         };
@@ -269,9 +272,10 @@ mod tests {
                 ..Settings::default()
             };
             let run = |reuse| sweep_reusing(&rigid, Some(&qe), 70e3, e_star, &settings, reuse);
-            let ((taken, n), (computed, none)) = (run(true), run(false));
-            assert_eq!((n, none), (300, 0), "{source:?}");
-            assert_eq!(format!("{taken:?}"), format!("{computed:?}"));
+            let ((reusing, taken), (computing, none)) = (run(true), run(false));
+            // Both wheels of the 150 positions before the middle.
+            assert_eq!((taken, none), (300, 0), "{source:?}");
+            assert_eq!(format!("{reusing:?}"), format!("{computing:?}"));
         }
     }
 }

@@ -186,6 +186,8 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
     // one (as `rigid::search` gives them): a wheel at a position is averaged exactly as the
     // other wheel at the mirrored position, operation for operation (both in their side
     // frames), so the positions before the middle are the mirror images of those after it.
+    // (A position with a NaN, such as one without contact, compares unequal to its image:
+    // then every position is averaged.)
     let all = &rigid.positions;
     let n = all.len();
     let mirror = placement.is_mirror_symmetric()
