@@ -40,16 +40,7 @@ fn rigid_sweep() -> &'static RigidSweep {
 /// work of a wheelset whose two wheels differ, such as a measured pair).
 fn placement_apart() -> &'static Placement {
     static P: OnceLock<Placement> = OnceLock::new();
-    P.get_or_init(|| {
-        let p = placement();
-        let layout = p.layout();
-        let wheel = p.right().wheel();
-        let wheel = PlacedWheel::place(wheel.profile().clone(), wheel.nominal_radius_mm(), layout);
-        let right = SidePair::new(wheel.unwrap(), p.right().rail().clone());
-        let apart = Placement::new(layout.clone(), p.left().clone(), right).unwrap();
-        assert!(!apart.is_mirror_symmetric());
-        apart
-    })
+    P.get_or_init(|| placement().with_sides_apart())
 }
 
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {

@@ -395,9 +395,7 @@ fn place_wheels_in(
     };
     let left = place(0, load(0)?)?;
     let same_profile = scene.wheel_profiles[1] == scene.wheel_profiles[0];
-    let right = if same_profile
-        && scene.nominal_radius_mm[1].to_bits() == scene.nominal_radius_mm[0].to_bits()
-    {
+    let right = if scene.same_wheels() {
         // The same wheel: its clone shares the cell bounds the searches build on first use
         // (0.75 M instructions and some 50 pages of memory per wheel on the EN 15302 scene
         // of `benches/data`).
@@ -460,7 +458,7 @@ fn place_rails_in(
         }
     };
     let left = place(0)?;
-    let right = if scene.rail_profiles[1] == scene.rail_profiles[0] {
+    let right = if scene.same_rails() {
         Arc::clone(&left)
     } else {
         place(1)?

@@ -214,10 +214,11 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
     // cloned for the other, as `pipeline::place` places a scene's measured files (the
     // wheelset is then mirror-symmetric, and a symmetric sweep solves half of it).
     let left = side(0)?;
-    let same = scene.wheel_profiles[0] == scene.wheel_profiles[1]
-        && scene.nominal_radius_mm[0].to_bits() == scene.nominal_radius_mm[1].to_bits()
-        && scene.rail_profiles[0] == scene.rail_profiles[1];
-    let right = if same { left.clone() } else { side(1)? };
+    let right = if scene.same_wheels() && scene.same_rails() {
+        left.clone()
+    } else {
+        side(1)?
+    };
     Placement::new(scene.layout.clone(), left, right)
         .map_err(|e| crate::Error::Other(e.to_string()))
 }

@@ -1,8 +1,6 @@
 //! Quasi-elastic search: analytic averages, convergence to the rigid solution as eps -> 0,
 //! smoothing of the rigid jumps, and mirror symmetry.
 
-mod common;
-
 use proptest::prelude::*;
 use std::path::Path;
 use std::sync::OnceLock;
@@ -193,7 +191,7 @@ proptest! {
     #[test]
     fn mirror_symmetry(y in 0.0f64..15.0) {
         // Both shifts solved and averaged: a mirror-symmetric placement would mirror them.
-        let apart = common::placed_apart(placement());
+        let apart = placement().with_sides_apart();
         let r = rigid::search(&apart, &[-y, y], Solver::default());
         let q = quasi_elastic::search(&apart, &r, &Settings::default());
         let (m, p) = (&q.positions[0], &q.positions[1]);

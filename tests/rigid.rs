@@ -2,8 +2,6 @@
 //! features of S1002 on UIC60 1:40 (from the project's reference notes on the contact search,
 //! outside this repository; each value is restated where it is checked).
 
-mod common;
-
 use proptest::prelude::*;
 use std::path::Path;
 use std::sync::OnceLock;
@@ -23,7 +21,7 @@ fn paper_placement() -> &'static Placement {
 /// The paper placement with its sides placed apart: `-y` solved, not mirrored from `y`.
 fn paper_placement_apart() -> &'static Placement {
     static P: OnceLock<Placement> = OnceLock::new();
-    P.get_or_init(|| common::placed_apart(paper_placement()))
+    P.get_or_init(|| paper_placement().with_sides_apart())
 }
 
 fn paper_sweep(solver: Solver) -> &'static rigid::RigidSweep {

@@ -225,6 +225,18 @@ pub struct FleetSettings {
 }
 
 impl Scene {
+    /// Whether both wheels are one: the same profile at the same radius (placed once and
+    /// cloned, a mirror-symmetric wheelset with [`Scene::same_rails`]).
+    pub(crate) fn same_wheels(&self) -> bool {
+        self.wheel_profiles[1] == self.wheel_profiles[0]
+            && self.nominal_radius_mm[1].to_bits() == self.nominal_radius_mm[0].to_bits()
+    }
+
+    /// Whether both rails name the same profile (placed once and shared).
+    pub(crate) fn same_rails(&self) -> bool {
+        self.rail_profiles[1] == self.rail_profiles[0]
+    }
+
     /// The scene file (for messages and provenance).
     pub fn path(&self) -> &str {
         &self.path

@@ -330,27 +330,31 @@ impl Placement {
             && Arc::ptr_eq(&self.left.rail, &self.right.rail)
     }
 
-    /// This placement with its right side placed again, apart from the left: the same
-    /// numbers, but not [mirror-symmetric](Placement::is_mirror_symmetric), so that a sweep
-    /// solves every position (to compare with the mirror images).
-    #[cfg(test)]
-    pub(crate) fn with_sides_apart(&self) -> Placement {
-        let wheel = &self.right.wheel;
-        let apart = Placement {
+    /// This placement with its right side's wheel and rail copied apart from the left's: the
+    /// same numbers, but not [mirror-symmetric](Placement::is_mirror_symmetric), so that a
+    /// sweep solves every position (to measure or check the mirrored half, or the work of a
+    /// wheelset whose two wheels differ).
+    ///
+    /// # Example
+    /// ```
+    /// use wheelrail::profile::Profile;
+    /// use wheelrail::track::{Inclination, Placement, TrackLayout};
+    /// let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
+    /// let placement = Placement::symmetric(
+    ///     Profile::s1002(), 460.0, Profile::uic60e1(), Inclination::VERTICAL, layout,
+    /// ).unwrap();
+    /// assert!(placement.is_mirror_symmetric());
+    /// assert!(!placement.with_sides_apart().is_mirror_symmetric());
+    /// ```
+    pub fn with_sides_apart(&self) -> Placement {
+        Placement {
             layout: self.layout.clone(),
             left: self.left.clone(),
             right: SidePair {
-                wheel: PlacedWheel::place(
-                    wheel.profile().clone(),
-                    wheel.nominal_radius_mm(),
-                    &self.layout,
-                )
-                .unwrap(),
+                wheel: self.right.wheel.with_own_cells(),
                 rail: Arc::new(PlacedRail::clone(&self.right.rail)),
             },
-        };
-        assert!(!apart.is_mirror_symmetric());
-        apart
+        }
     }
 
     /// The side pair of `side`.

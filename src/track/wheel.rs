@@ -228,6 +228,15 @@ impl PlacedWheel {
         }
     }
 
+    /// A copy of this wheel that builds its cell bounds for itself instead of sharing them:
+    /// the same wheel, not recognised as a clone by [`Self::shares_cells_with`].
+    pub(crate) fn with_own_cells(&self) -> PlacedWheel {
+        PlacedWheel {
+            cells: Arc::default(),
+            ..self.clone()
+        }
+    }
+
     /// Whether `other` shares this wheel's cell bounds: a clone of it, the same profile at
     /// the same radius and placement.
     pub(crate) fn shares_cells_with(&self, other: &PlacedWheel) -> bool {

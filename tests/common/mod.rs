@@ -190,26 +190,3 @@ pub fn y_ws_column(csv: &str) -> Option<Vec<f64>> {
 pub fn strictly_increasing(v: &[f64]) -> bool {
     v.windows(2).all(|w| w[0] < w[1])
 }
-
-/// `placement` with its sides placed apart: the same numbers, but not
-/// [mirror-symmetric](wheelrail::track::Placement::is_mirror_symmetric), so that a sweep
-/// solves the shifts `-y` themselves instead of mirroring the solutions at `y`.
-pub fn placed_apart(placement: &wheelrail::track::Placement) -> wheelrail::track::Placement {
-    use wheelrail::track::{PlacedWheel, Placement, SidePair};
-    let layout = placement.layout();
-    let side = |s: &SidePair| {
-        let wheel = s.wheel();
-        SidePair::new(
-            PlacedWheel::place(wheel.profile().clone(), wheel.nominal_radius_mm(), layout).unwrap(),
-            s.rail().clone(),
-        )
-    };
-    let apart = Placement::new(
-        layout.clone(),
-        side(placement.left()),
-        side(placement.right()),
-    )
-    .unwrap();
-    assert!(!apart.is_mirror_symmetric());
-    apart
-}
