@@ -93,6 +93,7 @@ pub mod error;
 pub mod fleet;
 pub mod gap;
 pub mod hertz;
+mod message;
 #[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;

@@ -173,8 +173,8 @@ pub fn run(args: &HertzArgs) -> Result<Solved, HertzError> {
             format!("NaN,NaN,NaN,NaN,NaN,{},0,not_hertzian", args.method),
             Some(format!(
                 "no Hertz ellipse for A = {} 1/mm, B = {} 1/mm ({reason}): the row is NaN",
-                crate::error::Number(a),
-                crate::error::Number(b)
+                crate::message::Number(a),
+                crate::message::Number(b)
             )),
         ),
     };

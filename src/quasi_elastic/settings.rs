@@ -1,7 +1,7 @@
 //! The quasi-elastic search's settings, with their defaults and the ranges
 //! [`Settings::new`] accepts, each with its reason.
 
-use crate::error::Number;
+use crate::message::Number;
 use std::fmt;
 
 /// Default regularisation parameter (mm): the paper's 1e-5 m.

@@ -11,9 +11,9 @@ use super::{
     MAX_WHEEL_LOAD_N, MIN_SWEEP_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE,
     ProfileRef, Scene, YOUNG_RANGE_GPA,
 };
-use crate::error::Number;
 use crate::hertz::Material;
 use crate::hertz::sweep::Settings as HertzSettings;
+use crate::message::Number;
 use crate::profile::Profile;
 use crate::quasi_elastic::{EPSILON_RANGE_MM, Quadrature, Settings as QeSettings, SettingsError};
 use crate::rigid::Solver;

@@ -2,7 +2,7 @@
 //! [`TrackLayout`] that exists is a track (a gauge in use, a gauge point in the rail head, a
 //! wheelset that fits the gauge, an inclination towards the track centre).
 
-use crate::error::Number;
+use crate::message::Number;
 use std::fmt;
 
 /// Distance from the inner face of a wheel to its taping line (EN 13715), mm.

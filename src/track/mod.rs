@@ -85,7 +85,7 @@ impl fmt::Display for PlacementError {
             PlacementError::NominalRadius { radius_mm } => write!(
                 f,
                 "{} mm is not a railway wheel radius; expected {} to {} mm",
-                crate::error::Number(*radius_mm),
+                crate::message::Number(*radius_mm),
                 NOMINAL_RADIUS_RANGE_MM.0,
                 NOMINAL_RADIUS_RANGE_MM.1
             ),
