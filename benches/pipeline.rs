@@ -35,12 +35,11 @@ fn rigid_sweep() -> &'static RigidSweep {
     R.get_or_init(|| rigid::search(placement(), scene().sweep_mm(), Solver::default()))
 }
 
-/// The paper placement with its right side placed apart from the left: the same numbers,
-/// but not mirror-symmetric, so that every position of a sweep is solved and averaged (the
-/// work of a wheelset whose two wheels differ, such as a measured pair).
-fn placement_apart() -> &'static Placement {
+/// The paper placement with the mirror switched off: every position of a sweep is solved
+/// and averaged (the work of a wheelset whose two wheels differ, such as a measured pair).
+fn placement_unmirrored() -> &'static Placement {
     static P: OnceLock<Placement> = OnceLock::new();
-    P.get_or_init(|| placement().with_sides_apart())
+    P.get_or_init(|| placement().clone().without_mirroring())
 }
 
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
@@ -154,12 +153,12 @@ fn rigid_default() -> RigidSweep {
     )
 }
 
-/// The same sweep solved at every position: the placement's sides placed apart, so that the
+/// The same sweep solved at every position: the mirror switched off, so that the
 /// positions left of the centre are not mirrored (a wheelset of two different wheels).
 #[divan::bench]
 fn rigid_default_unmirrored() -> RigidSweep {
     rigid::search(
-        black_box(placement_apart()),
+        black_box(placement_unmirrored()),
         scene().sweep_mm(),
         black_box(Solver::default()),
     )
@@ -185,12 +184,12 @@ fn quasi_elastic() -> QuasiElasticSweep {
     )
 }
 
-/// The same pass averaging every position (the placement's sides apart, as
+/// The same pass averaging every position (the mirror switched off, as
 /// `rigid_default_unmirrored`).
 #[divan::bench]
 fn quasi_elastic_unmirrored() -> QuasiElasticSweep {
     quasi_elastic::search(
-        black_box(placement_apart()),
+        black_box(placement_unmirrored()),
         rigid_sweep(),
         scene().quasi_elastic(),
     )

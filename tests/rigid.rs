@@ -18,10 +18,10 @@ fn paper_placement() -> &'static Placement {
     })
 }
 
-/// The paper placement with its sides placed apart: `-y` solved, not mirrored from `y`.
-fn paper_placement_apart() -> &'static Placement {
+/// The paper placement with the mirror switched off: `-y` solved, not mirrored from `y`.
+fn paper_placement_unmirrored() -> &'static Placement {
     static P: OnceLock<Placement> = OnceLock::new();
-    P.get_or_init(|| paper_placement().with_sides_apart())
+    P.get_or_init(|| paper_placement().clone().without_mirroring())
 }
 
 fn paper_sweep(solver: Solver) -> &'static rigid::RigidSweep {
@@ -274,7 +274,7 @@ fn paper_solver_error_against_default_is_bounded() {
 }
 
 /// Checks that the solutions at `-y` and `+y` of the symmetric paper scene mirror each
-/// other, both solved (its sides placed apart: a mirror-symmetric placement would mirror
+/// other, both solved (the mirror switched off: a mirror-symmetric placement would mirror
 /// the solution at `y` onto `-y`).
 fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     // A symmetric scene: results at -y equal those at +y with sides swapped and roll
@@ -291,7 +291,7 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     // g'' = 2.8e-3 1/mm) moves 2.5e4 mm per radian, and the two solves' contacts differ by
     // 1.44e-9 mm for rolls 1.6e-14 rad apart: 4.1e-10 mm from the roll, 7e-10 mm per
     // side from the rounding. Positions are compared within 1e-9 mm plus twice both.
-    let s = rigid::search(paper_placement_apart(), &[-y, y], Solver::default());
+    let s = rigid::search(paper_placement_unmirrored(), &[-y, y], Solver::default());
     let (m, p) = (&s.positions[0], &s.positions[1]);
     let d_roll = (m.roll + p.roll).abs();
     prop_assert!(d_roll < 1e-9);
@@ -393,4 +393,69 @@ fn contact_positions_converge_with_profile_resolution() {
     );
     assert!(worst_s < 5e-3, "{worst_s}");
     assert!(worst_roll < 5e-6, "{worst_roll}");
+}
+
+/// Mirror symmetry is decided by content: the paper's wheelset placed as a scene places it
+/// (one side cloned), with `Placement::symmetric`, with its two sides placed separately,
+/// and from separately fitted splines through the same points, is mirror-symmetric every
+/// way and gives the same sweep to the bit (compared through `Debug`); another radius or a
+/// fitted wheel on one side is not mirror-symmetric.
+#[test]
+fn equal_placements_built_any_way_give_the_same_results() {
+    use wheelrail::profile::{Profile, read::PointProfile};
+    use wheelrail::track::{Inclination, SidePair};
+    let layout = paper_placement().layout().clone();
+    let upright = Inclination::VERTICAL;
+    let side = |wheel: Profile, radius: f64, rail: Profile| {
+        SidePair::place(wheel, radius, rail, upright, &layout).unwrap()
+    };
+    let apart = |wheel: &dyn Fn() -> Profile, rail: &dyn Fn() -> Profile, right_radius| {
+        let left = side(wheel(), 460.0, rail());
+        let right = side(wheel(), right_radius, rail());
+        Placement::new(layout.clone(), left, right).unwrap()
+    };
+    let sampled = |p: Profile| {
+        let kind = p.kind();
+        let points = p.sample(0.5).iter().map(|r| [r[0], r[1]]).collect();
+        let points = PointProfile::from_points(kind, "sampled", points).unwrap();
+        Profile::from_points(points, 0.0).unwrap()
+    };
+    let symmetric = Placement::symmetric(
+        Profile::s1002(),
+        460.0,
+        Profile::uic60e1(),
+        upright,
+        layout.clone(),
+    )
+    .unwrap();
+    let analytic = [
+        paper_placement().clone(),
+        symmetric,
+        apart(&Profile::s1002, &Profile::uic60e1, 460.0),
+    ];
+    let wheel = || sampled(Profile::s1002());
+    let rail = || sampled(Profile::uic60e1());
+    let fitted = [apart(&wheel, &rail, 460.0), {
+        let (wheel, rail) = (wheel(), rail());
+        Placement::symmetric(wheel, 460.0, rail, upright, layout.clone()).unwrap()
+    }];
+    let sweep: Vec<f64> = (-60..=60).map(|i| 0.25 * f64::from(i)).collect();
+    for same in [&analytic[..], &fitted[..]] {
+        let runs: Vec<String> = same
+            .iter()
+            .map(|p| {
+                assert!(p.is_mirror_symmetric() && p.mirrors());
+                format!("{:?}", rigid::search(p, &sweep, Solver::default()))
+            })
+            .collect();
+        assert!(runs.iter().all(|r| *r == runs[0]));
+    }
+    assert!(!apart(&Profile::s1002, &Profile::uic60e1, 455.0).is_mirror_symmetric());
+    let left = side(Profile::s1002(), 460.0, Profile::uic60e1());
+    let right = side(wheel(), 460.0, Profile::uic60e1());
+    assert!(
+        !Placement::new(layout.clone(), left, right)
+            .unwrap()
+            .is_mirror_symmetric()
+    );
 }

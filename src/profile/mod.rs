@@ -155,6 +155,18 @@ impl Profile {
         })
     }
 
+    /// Whether `other` has this profile's data to the bit (the same definition, or a spline
+    /// through the same points with the same filter): its numbers are the same everywhere.
+    /// The name and source, which only label it, may differ.
+    pub(crate) fn same_data(&self, other: &Profile) -> bool {
+        self.kind == other.kind
+            && match (&self.shape, &other.shape) {
+                (Shape::S1002, Shape::S1002) | (Shape::Uic60, Shape::Uic60) => true,
+                (Shape::Sampled(a), Shape::Sampled(b)) => a.same_data(b),
+                _ => false,
+            }
+    }
+
     /// Wheel or rail.
     pub fn kind(&self) -> ProfileKind {
         self.kind

@@ -190,8 +190,8 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
     // then every position is averaged.)
     let all = &rigid.positions;
     let n = all.len();
-    let mirror = placement.is_mirror_symmetric()
-        && (0..n / 2).all(|i| all[i] == all[n - 1 - i].mirrored(all[i].y_ws));
+    let mirror =
+        placement.mirrors() && (0..n / 2).all(|i| all[i] == all[n - 1 - i].mirrored(all[i].y_ws));
     let first = if mirror { n / 2 } else { 0 };
     // Positions are independent: averaged in parallel (rayon), buffers per thread.
     use rayon::prelude::*;
@@ -637,14 +637,14 @@ mod tests {
         let n = p.len();
         assert!(placement.is_mirror_symmetric() && n == 301);
         assert!((0..n).all(|i| p[i] == p[n - 1 - i].mirrored(p[i].y_ws)));
-        let apart = placement.with_sides_apart();
+        let unmirrored = placement.clone().without_mirroring();
         for quadrature in [
             Quadrature::default(),
             Quadrature::Trapezoid { max_step_mm: 0.05 },
         ] {
             let settings = Settings::default().with_quadrature(quadrature).unwrap();
             let mirrored = search(&placement, &rigid, &settings);
-            let averaged = search(&apart, &rigid, &settings);
+            let averaged = search(&unmirrored, &rigid, &settings);
             assert_eq!(
                 format!("{:?}", mirrored.positions),
                 format!("{:?}", averaged.positions)

@@ -384,7 +384,11 @@ mod tests {
             let image = mirrored.positions[n - 1 - i].mirrored(sweep[i]);
             assert_eq!(format!("{p:?}"), format!("{image:?}"));
         }
-        let solved = search(&placement.with_sides_apart(), sweep, Solver::default());
+        let solved = search(
+            &placement.clone().without_mirroring(),
+            sweep,
+            Solver::default(),
+        );
         let (mut roll, mut s, mut r, mut height) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
         for (i, (m, p)) in mirrored.positions.iter().zip(&solved.positions).enumerate() {
             if i >= n / 2 {

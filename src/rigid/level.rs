@@ -157,7 +157,7 @@ mod tests {
     fn jumps_refined_on_one_wheel_are_those_of_whole_positions() {
         let (scene, placement) = en15302_e1();
         // Every window refined, none of them mirrored.
-        let placement = placement.with_sides_apart();
+        let placement = placement.clone().without_mirroring();
         let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
         let sides = SideGap::both(&placement);
         let (mut halves, mut wholes) = (0, 0);
@@ -190,7 +190,11 @@ mod tests {
         assert!(placement.is_mirror_symmetric());
         let sweep = scene.sweep_mm();
         let mirrored = search(&placement, sweep, Solver::NoRoll);
-        let solved = search(&placement.with_sides_apart(), sweep, Solver::NoRoll);
+        let solved = search(
+            &placement.clone().without_mirroring(),
+            sweep,
+            Solver::NoRoll,
+        );
         let n = sweep.len();
         for (i, (m, s)) in mirrored.positions.iter().zip(&solved.positions).enumerate() {
             assert_eq!(format!("{m:?}"), format!("{s:?}"), "y = {}", s.y_ws);

@@ -452,7 +452,7 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     // from the middle on are solved, those before it are their mirror images (see
     // `Placement::is_mirror_symmetric`), and so are their jumps.
     let n = sweep_mm.len();
-    let mirror = placement.is_mirror_symmetric() && mirrored_sweep(sweep_mm);
+    let mirror = placement.mirrors() && mirrored_sweep(sweep_mm);
     let mut positions = Vec::with_capacity(n);
     // Continue outwards from the position nearest the centre, so each start is close.
     let start = if mirror {

@@ -153,6 +153,11 @@ pub struct SidePair {
 }
 
 /// Both sides of a wheelset on its track.
+///
+/// Whether the wheelset is [mirror-symmetric](Placement::is_mirror_symmetric) is decided
+/// once, by content, when the placement is made: sweeps symmetric about the centre then
+/// solve their half from the middle on and mirror the rest (see
+/// [`Placement::without_mirroring`] for the switch that solves every position).
 #[derive(Debug, Clone)]
 pub struct Placement {
     /// The layout the sides were placed with.
@@ -161,6 +166,10 @@ pub struct Placement {
     pub(crate) left: SidePair,
     /// Right side (y < 0).
     pub(crate) right: SidePair,
+    /// Whether the right side is the left one mirrored (see [`Placement::new`]).
+    mirror_symmetric: bool,
+    /// Whether sweeps use the mirror symmetry (true unless switched off).
+    mirroring: bool,
 }
 
 impl SidePair {
@@ -219,6 +228,14 @@ impl SidePair {
 impl Placement {
     /// A wheelset on its track from its two sides, each placed for `layout`.
     ///
+    /// The wheelset is mirror-symmetric when its right side has the left side's content to
+    /// the bit: the same wheel profile data at the same radius, the same rail profile data
+    /// placed the same way (the layout, one for both sides, is mirror-symmetric: one gauge,
+    /// inclination and flange-back distance). Profiles are compared by their data, not by
+    /// their names, so equal sides built any way (one side cloned, or both placed from
+    /// equal files) make equal placements, with bit-identical results. Two equal wheels
+    /// then share their cell bounds (built once, on first use).
+    ///
     /// # Errors
     /// [`PlacementError::LayoutMismatch`] when a side was placed for another layout (its
     /// taping line or gauge point is elsewhere), [`PlacementError::NoOverlap`] when a wheel
@@ -258,10 +275,17 @@ impl Placement {
                 });
             }
         }
+        let mirror_symmetric = left.wheel.same_as(&right.wheel) && left.rail.same_as(&right.rail);
+        let mut right = right;
+        if mirror_symmetric {
+            right.wheel.share_cells_with(&left.wheel);
+        }
         Ok(Placement {
             layout,
             left,
             right,
+            mirror_symmetric,
+            mirroring: true,
         })
     }
 
@@ -282,7 +306,7 @@ impl Placement {
 
     /// A wheelset whose two wheels have the same profile and radius on two rails of the same
     /// profile (each side in its mirrored side frame): the usual case, placed once (the
-    /// right side shares the left's rail).
+    /// right side shares the left's rail) and [mirror-symmetric](Self::is_mirror_symmetric).
     ///
     /// `rail_profile_inclination` is the inclination the rail profile data already has
     /// (upright: `Inclination::VERTICAL`); the layout's inclination is the track's.
@@ -318,22 +342,26 @@ impl Placement {
         Placement::new(layout, left, right)
     }
 
-    /// Whether the right side is the left one mirrored: the same wheel (a clone, as
-    /// [`Placement::symmetric`] and a scene naming one profile and radius for both wheels
-    /// make) on the same rail (one shared placed rail). Each side is computed in its own
-    /// mirrored side frame, so the right wheel at a shift `-y` and roll `-theta` is then
-    /// the left wheel at `y` and `theta` operation for operation: a sweep symmetric about
-    /// the centre needs only its half. Equal wheels or rails placed separately are not
-    /// recognised (the test is by identity, not by content).
+    /// Whether the right side is the left one mirrored: the same wheel profile data and
+    /// radius, the same rail profile data placed the same way (decided by
+    /// [`Placement::new`]). Each side is computed in its own mirrored side frame, so the
+    /// right wheel at a shift `-y` and roll `-theta` is then the left wheel at `y` and
+    /// `theta`, operation for operation: a sweep symmetric about the centre needs only
+    /// its half.
     pub fn is_mirror_symmetric(&self) -> bool {
-        self.left.wheel.shares_cells_with(&self.right.wheel)
-            && Arc::ptr_eq(&self.left.rail, &self.right.rail)
+        self.mirror_symmetric
     }
 
-    /// This placement with its right side's wheel and rail copied apart from the left's: the
-    /// same numbers, but not [mirror-symmetric](Placement::is_mirror_symmetric), so that a
-    /// sweep solves every position (to measure or check the mirrored half, or the work of a
-    /// wheelset whose two wheels differ).
+    /// Whether sweeps on this placement solve half of a symmetric sweep and mirror the
+    /// rest: [mirror-symmetric](Self::is_mirror_symmetric) and not
+    /// [switched off](Self::without_mirroring).
+    pub fn mirrors(&self) -> bool {
+        self.mirror_symmetric && self.mirroring
+    }
+
+    /// This placement with the mirror switched off: every position of a sweep is solved,
+    /// symmetric or not (to check the mirrored half against solved positions, or to
+    /// measure the work of a wheelset whose two wheels differ). The same numbers otherwise.
     ///
     /// # Example
     /// ```
@@ -343,17 +371,14 @@ impl Placement {
     /// let placement = Placement::symmetric(
     ///     Profile::s1002(), 460.0, Profile::uic60e1(), Inclination::VERTICAL, layout,
     /// ).unwrap();
-    /// assert!(placement.is_mirror_symmetric());
-    /// assert!(!placement.with_sides_apart().is_mirror_symmetric());
+    /// assert!(placement.mirrors());
+    /// let every_position = placement.without_mirroring();
+    /// assert!(every_position.is_mirror_symmetric() && !every_position.mirrors());
     /// ```
-    pub fn with_sides_apart(&self) -> Placement {
+    pub fn without_mirroring(self) -> Placement {
         Placement {
-            layout: self.layout.clone(),
-            left: self.left.clone(),
-            right: SidePair {
-                wheel: self.right.wheel.with_own_cells(),
-                rail: Arc::new(PlacedRail::clone(&self.right.rail)),
-            },
+            mirroring: false,
+            ..self
         }
     }
 
@@ -380,5 +405,31 @@ impl Placement {
                 pair.rail.at(p.y).map(|r| r0 + p.z - r.z)
             })
             .fold(f64::INFINITY, f64::min)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two equal wheels placed separately are recognised by their content, and share their
+    /// cell bounds from then on (built once for both).
+    #[test]
+    fn equal_sides_placed_separately_are_mirror_symmetric() {
+        let layout = TrackLayout::standard(Inclination::parse("1:40").unwrap());
+        let side = || {
+            let (wheel, rail) = (Profile::s1002(), Profile::uic60e1());
+            SidePair::place(wheel, 460.0, rail, Inclination::VERTICAL, &layout).unwrap()
+        };
+        let (left, right) = (side(), side());
+        assert!(!left.wheel.shares_cells_with(&right.wheel));
+        let placement = Placement::new(layout.clone(), left, right).unwrap();
+        assert!(placement.is_mirror_symmetric());
+        assert!(
+            placement
+                .right
+                .wheel
+                .shares_cells_with(&placement.left.wheel)
+        );
     }
 }

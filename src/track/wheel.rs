@@ -12,7 +12,8 @@ pub struct PlacedWheel {
     taping_line_mm: f64,
     nominal_radius_mm: f64,
     /// [`PlacedWheel::cells`] of the first grid asked for, built on first use and shared by
-    /// the wheel's clones (the same wheel: a wheelset's two equal wheels build them once).
+    /// the wheel's clones and by an equal wheel on the other side of a placement
+    /// ([`Placement::new`](super::Placement::new)): a wheelset's two equal wheels build them once.
     cells: Arc<OnceLock<WheelCells>>,
     /// The largest value jump of the profile at a section joint (mm).
     value_jump_mm: f64,
@@ -228,17 +229,25 @@ impl PlacedWheel {
         }
     }
 
-    /// A copy of this wheel that builds its cell bounds for itself instead of sharing them:
-    /// the same wheel, not recognised as a clone by [`Self::shares_cells_with`].
-    pub(crate) fn with_own_cells(&self) -> PlacedWheel {
-        PlacedWheel {
-            cells: Arc::default(),
-            ..self.clone()
-        }
+    /// Whether `other` is this wheel to the bit: the same profile data at the same radius
+    /// and taping line (its cell bounds, built from these, are then the same too).
+    pub(crate) fn same_as(&self, other: &PlacedWheel) -> bool {
+        let bits = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        self.profile.same_data(&other.profile)
+            && bits(self.nominal_radius_mm, other.nominal_radius_mm)
+            && bits(self.taping_line_mm, other.taping_line_mm)
     }
 
-    /// Whether `other` shares this wheel's cell bounds: a clone of it, the same profile at
-    /// the same radius and placement.
+    /// Shares the cell bounds of `other`, a wheel [the same as this one](Self::same_as):
+    /// built once for both (a wheelset's two equal wheels).
+    pub(crate) fn share_cells_with(&mut self, other: &PlacedWheel) {
+        debug_assert!(self.same_as(other));
+        self.cells = Arc::clone(&other.cells);
+    }
+
+    /// Whether `other` shares this wheel's cell bounds (a test of the sharing, which
+    /// decides nothing).
+    #[cfg(test)]
     pub(crate) fn shares_cells_with(&self, other: &PlacedWheel) -> bool {
         Arc::ptr_eq(&self.cells, &other.cells)
     }

@@ -154,6 +154,20 @@ pub struct SmoothingSpline {
 }
 
 impl SmoothingSpline {
+    /// Whether `other` is this spline to the bit: the same knots, values and coefficients
+    /// (and so the same numbers everywhere).
+    pub(crate) fn same_data(&self, other: &SmoothingSpline) -> bool {
+        let bits = |a: &[f64], b: &[f64]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+        };
+        bits(&self.knots, &other.knots)
+            && bits(&self.values, &other.values)
+            && bits(self.coeffs.as_flattened(), other.coeffs.as_flattened())
+            && self.buckets == other.buckets
+            && bits(&[self.bucket_scale], &[other.bucket_scale])
+            && bits(&self.end_slopes, &other.end_slopes)
+    }
+
     /// `[f(x), f'(x), f''(x)]`; linear extrapolation outside [`domain`](Self::domain)
     /// (f'' = 0 there). NaN in, NaN out.
     pub fn eval(&self, x: f64) -> [f64; 3] {

@@ -271,6 +271,31 @@ impl PlacedRail {
         Ok(self.rotated(u_gp))
     }
 
+    /// Whether `other` is this rail to the bit: the same profile data placed by the same
+    /// frame onto the same running surface. Everything else of a placed rail (its tables)
+    /// is computed from these, so the two answer every lookup alike.
+    pub(crate) fn same_as(&self, other: &PlacedRail) -> bool {
+        let bits = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits());
+        let numbers = |r: &PlacedRail| {
+            let (t, c) = (r.frame.translation.vector, r.frame.rotation);
+            [
+                t.x,
+                t.y,
+                c.re,
+                c.im,
+                r.surface.0,
+                r.surface.1,
+                r.y_range.0,
+                r.y_range.1,
+                r.gauge_point[0],
+                r.gauge_point[1],
+                r.top[0],
+                r.top[1],
+            ]
+        };
+        self.profile.same_data(&other.profile) && bits(&numbers(self), &numbers(other))
+    }
+
     /// The profile this rail was placed from.
     pub fn profile(&self) -> &Profile {
         &self.profile
