@@ -19,7 +19,7 @@ fn paper_sweep() -> &'static RigidSweep {
     R.get_or_init(|| {
         let scene = Scene::from_toml("", "paper defaults", Path::new(".")).unwrap();
         let placement = pipeline::place(&scene).unwrap();
-        rigid::search(&placement, scene.sweep_mm(), Solver::default())
+        rigid::search(&placement, scene.sweep(), Solver::default())
     })
 }
 

@@ -13,6 +13,7 @@ use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::scene::Scene;
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{PlacedRail, PlacedWheel, Placement, SidePair};
 use wheelrail::{hertz, pipeline};
 
@@ -32,7 +33,7 @@ fn placement() -> &'static Placement {
 
 fn rigid_sweep() -> &'static RigidSweep {
     static R: OnceLock<RigidSweep> = OnceLock::new();
-    R.get_or_init(|| rigid::search(placement(), scene().sweep_mm(), Solver::default()))
+    R.get_or_init(|| rigid::search(placement(), scene().sweep(), Solver::default()))
 }
 
 /// The paper placement with the mirror switched off: every position of a sweep is solved
@@ -118,7 +119,7 @@ fn place_sampled() -> Placement {
 fn rigid_sampled() -> RigidSweep {
     rigid::search(
         black_box(sampled_placement()),
-        scene().sweep_mm(),
+        scene().sweep(),
         black_box(Solver::default()),
     )
 }
@@ -148,7 +149,7 @@ fn place_cached() -> Placement {
 fn rigid_default() -> RigidSweep {
     rigid::search(
         black_box(placement()),
-        scene().sweep_mm(),
+        scene().sweep(),
         black_box(Solver::default()),
     )
 }
@@ -159,7 +160,7 @@ fn rigid_default() -> RigidSweep {
 fn rigid_default_unmirrored() -> RigidSweep {
     rigid::search(
         black_box(placement_unmirrored()),
-        scene().sweep_mm(),
+        scene().sweep(),
         black_box(Solver::default()),
     )
 }
@@ -169,7 +170,7 @@ fn rigid_default_unmirrored() -> RigidSweep {
 fn rigid_paper() -> RigidSweep {
     rigid::search(
         black_box(placement()),
-        scene().sweep_mm(),
+        scene().sweep(),
         black_box(Solver::Paper),
     )
 }
@@ -211,10 +212,11 @@ fn hertz_sweep() -> Vec<hertz::sweep::Position> {
 
 /// Positions from -15 to 15 mm, `n` of them: the sweep-length scaling of the rigid sweep
 /// and the quasi-elastic pass (time per position = median / n).
-fn sweep_of(n: usize) -> Vec<f64> {
-    (0..n)
+fn sweep_of(n: usize) -> Sweep {
+    let shifts: Vec<f64> = (0..n)
         .map(|i| -15.0 + 30.0 * i as f64 / (n - 1) as f64)
-        .collect()
+        .collect();
+    Sweep::from_slice(&shifts).unwrap()
 }
 
 /// The rigid sweep (default solver) over 31, 301 and 3001 positions.

@@ -3,6 +3,7 @@
 //! parallel (rayon). Run: `cargo bench --bench scene`.
 
 use std::path::Path;
+use wheelrail::sweep::Sweep;
 use wheelrail::{outputs, pipeline, scene::Scene};
 
 fn main() {
@@ -112,11 +113,13 @@ fn batch_of_8_parallel(bencher: divan::Bencher) {
 fn rigid_sweep_two_calls_in_parallel(bencher: divan::Bencher) {
     let scene = paper();
     let placement = pipeline::place(&scene).unwrap();
-    let (a, b) = scene.sweep_mm().split_at(scene.sweep_mm().len() / 2);
+    let shifts = scene.sweep().shifts_mm();
+    let (a, b) = shifts.split_at(shifts.len() / 2);
+    let (a, b) = (Sweep::from_slice(a).unwrap(), Sweep::from_slice(b).unwrap());
     bencher.bench(|| {
         rayon::join(
-            || wheelrail::rigid::search(&placement, a, scene.rigid_solver()),
-            || wheelrail::rigid::search(&placement, b, scene.rigid_solver()),
+            || wheelrail::rigid::search(&placement, &a, scene.rigid_solver()),
+            || wheelrail::rigid::search(&placement, &b, scene.rigid_solver()),
         )
     });
 }
@@ -125,5 +128,5 @@ fn rigid_sweep_two_calls_in_parallel(bencher: divan::Bencher) {
 fn rigid_sweep_one_call(bencher: divan::Bencher) {
     let scene = paper();
     let placement = pipeline::place(&scene).unwrap();
-    bencher.bench(|| wheelrail::rigid::search(&placement, scene.sweep_mm(), scene.rigid_solver()));
+    bencher.bench(|| wheelrail::rigid::search(&placement, scene.sweep(), scene.rigid_solver()));
 }

@@ -30,7 +30,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for (label, scene) in &scenes {
         let placement = pipeline::place(scene)?;
         counters::take(); // placing evaluates no gap
-        let rigid = rigid::search(&placement, scene.sweep_mm(), scene.rigid_solver());
+        let rigid = rigid::search(&placement, scene.sweep(), scene.rigid_solver());
         let searched = counters::take();
         // The quasi-elastic pass only where the scene's outputs need it, as a report runs.
         let needs_quasi = pipeline::needed_stages(scene).contains(&Stage::QuasiElastic);

@@ -9,6 +9,7 @@ use wheelrail::profile::read::{self, ReadOptions, StepBack};
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic;
 use wheelrail::rigid::{self, Solver};
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{Inclination, Placement, TrackLayout};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -43,7 +44,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         layout,
     )?;
     let shifts: Vec<f64> = (-8..=8).map(f64::from).collect();
-    let rigid = rigid::search(&placement, &shifts, Solver::default());
+    let rigid = rigid::search(
+        &placement,
+        &Sweep::from_slice(&shifts).unwrap(),
+        Solver::default(),
+    );
     let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 
     // Hertz on the heaviest quasi-elastic patch, 70 kN per wheel, steel on steel.

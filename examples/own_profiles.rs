@@ -6,6 +6,7 @@
 use wheelrail::conicity;
 use wheelrail::profile::{Profile, ProfileKind, read::PointProfile};
 use wheelrail::rigid::{self, Solver};
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{Inclination, Placement, TrackLayout};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -26,7 +27,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // Lateral shifts of the wheelset from -10 to 10 mm every 0.1 mm, roll solved.
     let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();
-    let sweep = rigid::search(&placement, &shifts, Solver::default());
+    let sweep = rigid::search(
+        &placement,
+        &Sweep::from_slice(&shifts).unwrap(),
+        Solver::default(),
+    );
     let pair = conicity::assess(&sweep, &conicity::Settings::default());
 
     println!("y_ws_mm, delta_r_mm (every 2 mm)");

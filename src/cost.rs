@@ -76,7 +76,7 @@ impl Estimate {
 /// ```
 pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     let stages = pipeline::needed_stages(scene);
-    let positions = scene.sweep_mm.len() as f64;
+    let positions = scene.sweep.len() as f64;
     let mut drivers: Vec<(&'static str, String)> = Vec::new();
     if !stages.contains(&Stage::Rigid) {
         return Estimate {
@@ -84,10 +84,7 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
             drivers,
         };
     }
-    drivers.push((
-        "sweep.step_mm",
-        format!("{} positions", scene.sweep_mm.len()),
-    ));
+    drivers.push(("sweep.step_mm", format!("{} positions", scene.sweep.len())));
     let rigid = match scene.rigid_solver {
         crate::rigid::Solver::Paper => {
             drivers.push(("rigid.solver", "\"paper\"".into()));

@@ -37,7 +37,7 @@
 //! let layout = TrackLayout::standard(Inclination::parse("1:40")?);
 //! let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
 //! let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect(); // mm
-//! let sweep = rigid::search(&placement, &shifts, rigid::Solver::default());
+//! let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&shifts).unwrap(), rigid::Solver::default());
 //! let pair = conicity::assess(&sweep, &conicity::Settings::default());
 //! let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
 //! assert!((0.1..0.3).contains(&tan_gamma_e_3mm));
@@ -105,6 +105,7 @@ mod rng;
 pub mod scene;
 pub mod stage;
 pub mod stop;
+pub mod sweep;
 pub mod track;
 #[cfg(feature = "cli")]
 pub mod tradeoff;

@@ -228,7 +228,7 @@ fn run_recorded(
             Stage::Profiles => {}
             Stage::Rigid => {
                 let r = record.time(stage, || {
-                    rigid::search(&results.placement, &scene.sweep_mm, scene.rigid_solver)
+                    rigid::search(&results.placement, &scene.sweep, scene.rigid_solver)
                 });
                 results.rigid = Some(r);
             }

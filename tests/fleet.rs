@@ -673,7 +673,7 @@ fn two_minima_in_one_bracket_of_a_generated_wheel_converge() {
     let placement = wheelrail::pipeline::place(&scene).unwrap();
     let sweep = wheelrail::rigid::search(
         &placement,
-        scene.sweep_mm(),
+        scene.sweep(),
         wheelrail::rigid::Solver::default(),
     );
     for p in &sweep.positions {

@@ -34,6 +34,7 @@ use wheelrail::profile::read::{
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::scene::Scene;
+use wheelrail::sweep::Sweep;
 
 fn cases() -> u32 {
     std::env::var("WHEELRAIL_FUZZ_CASES")
@@ -401,14 +402,15 @@ fn scene_text() -> impl Strategy<Value = String> {
 /// The scene parser's contract; returns the scene when accepted.
 fn check_scene(text: &str) -> Option<Scene> {
     let scene = Scene::from_toml(text, "fuzz.toml", Path::new(".")).ok()?;
-    assert!(!scene.sweep_mm().is_empty());
+    assert!(!scene.sweep().shifts_mm().is_empty());
     assert!(
         scene
-            .sweep_mm()
+            .sweep()
+            .shifts_mm()
             .iter()
             .all(|y| y.is_finite() && y.abs() <= 100.0)
     );
-    assert!(scene.sweep_mm().windows(2).all(|w| w[1] > w[0]));
+    assert!(scene.sweep().shifts_mm().windows(2).all(|w| w[1] > w[0]));
     assert!(
         scene
             .nominal_radius_mm()
@@ -445,15 +447,19 @@ fn run_scene(scene: &Scene) {
     let Ok(placement) = wheelrail::pipeline::place(scene) else {
         return;
     };
-    let n = scene.sweep_mm().len();
+    let n = scene.sweep().shifts_mm().len();
     let ys = [
-        scene.sweep_mm()[0],
-        scene.sweep_mm()[n / 2],
-        scene.sweep_mm()[n - 1],
+        scene.sweep().shifts_mm()[0],
+        scene.sweep().shifts_mm()[n / 2],
+        scene.sweep().shifts_mm()[n - 1],
     ];
     let mut ys = ys.to_vec();
     ys.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
-    let sweep = rigid::search(&placement, &ys, scene.rigid_solver());
+    let sweep = rigid::search(
+        &placement,
+        &Sweep::from_slice(&ys).unwrap(),
+        scene.rigid_solver(),
+    );
     for p in &sweep.positions {
         if p.stop == Stop::Converged {
             assert!(p.roll.is_finite() && p.axle_height.is_finite(), "{p:?}");

@@ -12,6 +12,7 @@ use wheelrail::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM;
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, Settings};
 use wheelrail::rigid::{self, Solver, Stop};
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{
     Inclination, PlacedRail, PlacedWheel, Placement, Side, SidePair, TrackLayout,
 };
@@ -101,7 +102,11 @@ fn placement(wheel: Profile, rail: Profile, rail_inclination: Inclination) -> Pl
 /// how many positions converged.
 fn check(placement: &Placement, name: &str) -> usize {
     let ys: Vec<f64> = (0..=100).map(|i| -25.0 + 0.5 * f64::from(i)).collect();
-    let sweep = rigid::search(placement, &ys, Solver::default());
+    let sweep = rigid::search(
+        placement,
+        &Sweep::from_slice(&ys).unwrap(),
+        Solver::default(),
+    );
     let qe = quasi_elastic::search(placement, &sweep, &Settings::default());
     let mut converged = 0;
     for (pos, q) in sweep.positions.iter().zip(&qe.positions) {

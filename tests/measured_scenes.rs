@@ -92,7 +92,7 @@ fn quasi_elastic_on_measured_profiles_is_converged() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/measured_average/scene.toml");
     let scene = Scene::load(&path).unwrap();
     let placement = pipeline::place(&scene).unwrap();
-    let rigid = wheelrail::rigid::search(&placement, scene.sweep_mm(), Default::default());
+    let rigid = wheelrail::rigid::search(&placement, scene.sweep(), Default::default());
     let e_star = hertz::effective_modulus(scene.wheel_material(), scene.rail_material());
     let run = |settings: &Settings| {
         let qe = quasi_elastic::search(&placement, &rigid, settings);

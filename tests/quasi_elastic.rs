@@ -7,6 +7,7 @@ use std::sync::OnceLock;
 use wheelrail::quasi_elastic::{self, Settings, average};
 use wheelrail::rigid::{self, Solver};
 use wheelrail::scene::Scene;
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{Placement, Side};
 
 fn placement() -> &'static Placement {
@@ -91,7 +92,11 @@ fn cutoff_changes_nothing_at_output_precision() {
     // sweep. The cut-off moves the ends of the integration regions and so the quadrature
     // panels: the results differ by the quadrature's own error, about 1e-12 mm (measured).
     let sweep: Vec<f64> = (0..=30).map(|i| -15.0 + f64::from(i)).collect();
-    let r = rigid::search(placement(), &sweep, Solver::default());
+    let r = rigid::search(
+        placement(),
+        &Sweep::from_slice(&sweep).unwrap(),
+        Solver::default(),
+    );
     let a = quasi_elastic::search(placement(), &r, &Settings::default());
     let b = quasi_elastic::search(
         placement(),
@@ -119,7 +124,11 @@ fn converges_to_rigid_as_eps_decreases() {
     // 0.0034 mm; the weight is a Gaussian of width sqrt(eps / d'') whose skew from the third
     // derivative of the gap shifts its mean in proportion to eps).
     let sweep = [-12.0, -8.0, -3.0, 2.0, 3.5, 9.0, 13.0];
-    let r = rigid::search(placement(), &sweep, Solver::default());
+    let r = rigid::search(
+        placement(),
+        &Sweep::from_slice(&sweep).unwrap(),
+        Solver::default(),
+    );
     let errs: Vec<f64> = [0.01, 0.001, 0.0001]
         .iter()
         .map(|&e| {
@@ -153,7 +162,11 @@ fn smooths_the_rigid_jumps() {
     // from the tread patch to the flange-root patch instead. The flange onset (6.26 mm) is
     // excluded: there the flange is a new body in contact.
     let sweep: Vec<f64> = (0..=60).map(|i| 0.1 * f64::from(i)).collect();
-    let r = rigid::search(placement(), &sweep, Solver::default());
+    let r = rigid::search(
+        placement(),
+        &Sweep::from_slice(&sweep).unwrap(),
+        Solver::default(),
+    );
     let q = quasi_elastic::search(placement(), &r, &Settings::default());
     let mut rigid_max: f64 = 0.0;
     for (a, b) in r.positions.iter().zip(&r.positions[1..]) {
@@ -192,7 +205,7 @@ proptest! {
     fn mirror_symmetry(y in 0.0f64..15.0) {
         // Both shifts solved and averaged: a mirror-symmetric placement would mirror them.
         let unmirrored = placement().clone().without_mirroring();
-        let r = rigid::search(&unmirrored, &[-y, y], Solver::default());
+        let r = rigid::search(&unmirrored, &Sweep::from_slice(&[-y, y]).unwrap(), Solver::default());
         let q = quasi_elastic::search(&unmirrored, &r, &Settings::default());
         let (m, p) = (&q.positions[0], &q.positions[1]);
         let pairs = [(m.side(Side::Left), p.side(Side::Right)), (m.side(Side::Right), p.side(Side::Left))];
@@ -218,7 +231,11 @@ fn weight_shares_match_an_independent_integration() {
     // curvature jumps: below 1e-4 of the share, measured).
     use wheelrail::gap::{SideGap, SidePose};
     let sweep: Vec<f64> = (0..=30).map(|i| 3.5 + 0.1 * f64::from(i)).collect();
-    let r = rigid::search(placement(), &sweep, Solver::default());
+    let r = rigid::search(
+        placement(),
+        &Sweep::from_slice(&sweep).unwrap(),
+        Solver::default(),
+    );
     let q = quasi_elastic::search(placement(), &r, &Settings::default());
     let side = SideGap::new(placement().left(), 1.0);
     let mut checked = 0;

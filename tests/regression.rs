@@ -6,6 +6,7 @@ use wheelrail::profile::Profile;
 use wheelrail::quasi_elastic::{self, Settings};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::scene::Scene;
+use wheelrail::sweep::Sweep;
 use wheelrail::track::Side;
 
 fn place(toml: &str) -> wheelrail::track::Placement {
@@ -27,7 +28,11 @@ fn place(toml: &str) -> wheelrail::track::Placement {
 fn quasi_elastic_regions_share_the_rigid_minimum() {
     let placement = place("");
     let ys: Vec<f64> = (0..=200).map(|i| 3.0 + 0.02 * f64::from(i)).collect();
-    let rigid = rigid::search(&placement, &ys, Solver::default());
+    let rigid = rigid::search(
+        &placement,
+        &Sweep::from_slice(&ys).unwrap(),
+        Solver::default(),
+    );
     for eps in [1e-3, 3e-3] {
         let settings = Settings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, &rigid, &settings);
@@ -81,7 +86,11 @@ fn s1002_end_of_definition_has_finite_derivatives() {
          [track]\ngauge_mm = 1430.0\ngauge_point_depth_mm = 10.0\n\
          [wheelset]\nflange_back_mm = 1355.0\n",
     );
-    let rigid = rigid::search(&placement, &[-45.0, 45.0], Solver::default());
+    let rigid = rigid::search(
+        &placement,
+        &Sweep::from_slice(&[-45.0, 45.0]).unwrap(),
+        Solver::default(),
+    );
     let settings = Settings::default().with_epsilon(1.0).unwrap();
     let qe = quasi_elastic::search(&placement, &rigid, &settings);
     for q in &qe.positions {
@@ -110,7 +119,11 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
          [wheelset]\nflange_back_mm = 1355.0\n",
     );
     let ys: Vec<f64> = (0..=24).map(|i| -6.0 + 0.5 * f64::from(i)).collect();
-    let rigid = rigid::search(&placement, &ys, Solver::default());
+    let rigid = rigid::search(
+        &placement,
+        &Sweep::from_slice(&ys).unwrap(),
+        Solver::default(),
+    );
     for eps in [1e-5, 1e-4] {
         let settings = Settings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, &rigid, &settings);
@@ -186,7 +199,11 @@ fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
     );
     // The stress suite's sweep: -45..45 mm every 3 mm (continuation reaches 21 mm from it).
     let ys: Vec<f64> = (0..31).map(|i| -45.0 + 3.0 * f64::from(i)).collect();
-    let rigid = rigid::search(&placement, &ys, Solver::default());
+    let rigid = rigid::search(
+        &placement,
+        &Sweep::from_slice(&ys).unwrap(),
+        Solver::default(),
+    );
     let settings = Settings::default().with_epsilon(1e-5).unwrap();
     let qe = quasi_elastic::search(&placement, &rigid, &settings);
     let mut checked = 0;
@@ -226,7 +243,11 @@ fn rigid_converges_at_a_contact_on_the_end_of_the_rail_surface() {
     let scene = Scene::load(&path).unwrap();
     let placement = wheelrail::pipeline::place(&scene).unwrap();
     let sweep: Vec<f64> = (-40..=40).map(|i| f64::from(3 * i) / 10.0).collect();
-    let r = rigid::search(&placement, &sweep, Solver::default());
+    let r = rigid::search(
+        &placement,
+        &Sweep::from_slice(&sweep).unwrap(),
+        Solver::default(),
+    );
     let at = r
         .positions
         .iter()

@@ -8,6 +8,7 @@ use std::sync::OnceLock;
 use wheelrail::gap::{SideGap, SidePose};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::scene::Scene;
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{Placement, Side};
 
 fn paper_placement() -> &'static Placement {
@@ -33,7 +34,13 @@ fn paper_sweep(solver: Solver) -> &'static rigid::RigidSweep {
     } else {
         &P
     };
-    cell.get_or_init(|| rigid::search(paper_placement(), &sweep, solver))
+    cell.get_or_init(|| {
+        rigid::search(
+            paper_placement(),
+            &Sweep::from_slice(&sweep).unwrap(),
+            solver,
+        )
+    })
 }
 
 /// The smallest gap of one side over wheel points every `step` mm, at a solved position.
@@ -171,7 +178,11 @@ fn default_solver_agrees_with_brute_force() {
     let shifts = [
         -12.3, -7.7, -3.3, -1.05, 0.0, 0.55, 2.7, 4.4, 5.6, 8.9, 14.2,
     ];
-    let solved = rigid::search(paper_placement(), &shifts, Solver::default());
+    let solved = rigid::search(
+        paper_placement(),
+        &Sweep::from_slice(&shifts).unwrap(),
+        Solver::default(),
+    );
     for pos in &solved.positions {
         let (roll, s) = brute_force(pos.y_ws);
         assert!(
@@ -291,7 +302,11 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     // g'' = 2.8e-3 1/mm) moves 2.5e4 mm per radian, and the two solves' contacts differ by
     // 1.44e-9 mm for rolls 1.6e-14 rad apart: 4.1e-10 mm from the roll, 7e-10 mm per
     // side from the rounding. Positions are compared within 1e-9 mm plus twice both.
-    let s = rigid::search(paper_placement_unmirrored(), &[-y, y], Solver::default());
+    let s = rigid::search(
+        paper_placement_unmirrored(),
+        &Sweep::from_slice(&[-y, y]).unwrap(),
+        Solver::default(),
+    );
     let (m, p) = (&s.positions[0], &s.positions[1]);
     let d_roll = (m.roll + p.roll).abs();
     prop_assert!(d_roll < 1e-9);
@@ -374,7 +389,11 @@ fn contact_positions_converge_with_profile_resolution() {
     // where the roll changes by 7e-3 rad per mm of shift (ill-conditioned there).
     let sweep: Vec<f64> = (0..=300).map(|i| -15.0 + 0.1 * f64::from(i)).collect();
     let exact = paper_sweep(Solver::default());
-    let resampled = rigid::search(&resampled_placement(0.1), &sweep, Solver::default());
+    let resampled = rigid::search(
+        &resampled_placement(0.1),
+        &Sweep::from_slice(&sweep).unwrap(),
+        Solver::default(),
+    );
     let near_jump = |y: f64| exact.jumps.iter().any(|j| (y - j.y_from).abs() < 0.3);
     let mut worst_s: f64 = 0.0;
     let mut worst_roll: f64 = 0.0;
@@ -439,7 +458,7 @@ fn equal_placements_built_any_way_give_the_same_results() {
         let (wheel, rail) = (wheel(), rail());
         Placement::symmetric(wheel, 460.0, rail, upright, layout.clone()).unwrap()
     }];
-    let sweep: Vec<f64> = (-60..=60).map(|i| 0.25 * f64::from(i)).collect();
+    let sweep = Sweep::range(-15.0, 15.0, 0.25).unwrap();
     for same in [&analytic[..], &fitted[..]] {
         let runs: Vec<String> = same
             .iter()

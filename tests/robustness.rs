@@ -55,7 +55,7 @@ fn trapezoid_search_with_the_largest_step_terminates() {
     )
     .unwrap();
     let placement = wheelrail::pipeline::place(&scene).unwrap();
-    let rigid = wheelrail::rigid::search(&placement, scene.sweep_mm(), scene.rigid_solver());
+    let rigid = wheelrail::rigid::search(&placement, scene.sweep(), scene.rigid_solver());
     let huge = Quadrature::Trapezoid {
         max_step_mm: f64::MAX,
     };

@@ -53,6 +53,7 @@ use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, Settings};
 use wheelrail::rigid::{self, Position, RigidSweep, Solver, Stop};
 use wheelrail::scene::Scene;
+use wheelrail::sweep::Sweep;
 use wheelrail::track::{
     Inclination, PlacedRail, PlacedWheel, Placement, Side, SidePair, TrackLayout,
 };
@@ -522,7 +523,11 @@ fn check_quasi_elastic(
 
 /// Rigid and quasi-elastic checks over `ys`; returns the sweep.
 fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSweep {
-    let sweep = rigid::search(placement, ys, Solver::default());
+    let sweep = rigid::search(
+        placement,
+        &Sweep::from_slice(ys).unwrap(),
+        Solver::default(),
+    );
     assert_eq!(sweep.positions.len(), ys.len(), "{context}");
     check_rigid(placement, &sweep, context);
     let settings = Settings::default()

@@ -13,7 +13,7 @@ fuzz_target!(|data: &[u8]| {
     let Ok(scene) = Scene::from_toml(&text, "fuzz.toml", std::path::Path::new(".")) else {
         return;
     };
-    let sweep = scene.sweep_mm();
+    let sweep = scene.sweep().shifts_mm();
     assert!(!sweep.is_empty());
     assert!(sweep.iter().all(|y| y.is_finite() && y.abs() <= 100.0));
     assert!(sweep.windows(2).all(|w| w[1] > w[0]));

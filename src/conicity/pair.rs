@@ -234,7 +234,7 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 /// ```
 /// use wheelrail::{conicity, pipeline, rigid, scene::Scene};
 /// let scene = Scene::from_toml("[sweep]\nfrom_mm = -10.0\nto_mm = 10.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
-/// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), scene.sweep_mm(), rigid::Solver::default());
+/// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), scene.sweep(), rigid::Solver::default());
 /// let pair = conicity::assess(&sweep, &conicity::Settings::default());
 /// let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
 /// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
@@ -333,7 +333,7 @@ mod tests {
         )
         .unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
-        let sweep = search(&placement, &scene.sweep_mm, Solver::default());
+        let sweep = search(&placement, &scene.sweep, Solver::default());
         for method in [Method::Klingel, Method::Regression] {
             let settings = Settings {
                 method,

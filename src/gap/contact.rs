@@ -16,7 +16,7 @@
 /// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::default());
+/// let rigid = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap(), rigid::Solver::default());
 /// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 /// let a = rigid.positions[0].contact[0].unwrap().point();
 /// let b = qe.positions[0].sides[0].main().unwrap().point();

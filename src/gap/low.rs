@@ -213,7 +213,11 @@ mod tests {
     fn paper_sweep(from: f64, n: u32) -> (Placement, RigidSweep) {
         let placement = super::super::tests::placement();
         let ys: Vec<f64> = (0..=n).map(|i| from + 0.5 * f64::from(i)).collect();
-        let sweep = search(&placement, &ys, Solver::default());
+        let sweep = search(
+            &placement,
+            &crate::sweep::Sweep::from_slice(&ys).unwrap(),
+            Solver::default(),
+        );
         (placement, sweep)
     }
 

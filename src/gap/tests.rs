@@ -20,13 +20,18 @@ fn poses() -> Vec<SidePose> {
             [-0.02, -1e-3, 0.0, 7e-4, 0.02].map(|roll| SidePose::new(1.0, y_ws, roll))
         })
         .collect();
-    let near_jumps: Vec<f64> = (0..=40)
+    let mut near_jumps: Vec<f64> = (0..=40)
         .flat_map(|i| {
             let d = 0.0025 * f64::from(i) - 0.05;
             [0.226 + d, 4.992 + d, 6.26 + d]
         })
         .collect();
-    let sweep = crate::rigid::search(&placement(), &near_jumps, crate::rigid::Solver::default());
+    near_jumps.sort_by(f64::total_cmp);
+    let sweep = crate::rigid::search(
+        &placement(),
+        &crate::sweep::Sweep::from_slice(&near_jumps).unwrap(),
+        crate::rigid::Solver::default(),
+    );
     poses.extend(
         sweep
             .positions

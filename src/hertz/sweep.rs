@@ -263,7 +263,7 @@ mod tests {
     fn mirrored_wheels_take_their_images_ellipses() {
         let scene = crate::scene::Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
-        let rigid = crate::rigid::search(&placement, scene.sweep_mm(), Default::default());
+        let rigid = crate::rigid::search(&placement, scene.sweep(), Default::default());
         let qe = crate::quasi_elastic::search(&placement, &rigid, scene.quasi_elastic());
         let e_star = super::super::effective_modulus(scene.wheel_material(), scene.rail_material());
         for source in [ContactSource::QuasiElastic, ContactSource::Rigid] {

@@ -52,9 +52,9 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
     let t = fleet.template();
     let sweep = format!(
         "{} to {} mm, {} positions",
-        t.sweep_mm.first().copied().unwrap_or(f64::NAN),
-        t.sweep_mm.last().copied().unwrap_or(f64::NAN),
-        t.sweep_mm.len()
+        t.sweep.shifts_mm().first().copied().unwrap_or(f64::NAN),
+        t.sweep.shifts_mm().last().copied().unwrap_or(f64::NAN),
+        t.sweep.len()
     );
     let mut lines = vec![
         format!(
@@ -564,9 +564,9 @@ fn page(
                 "sweep (mm)".into(),
                 format!(
                     "{} to {}, {} positions",
-                    t.sweep_mm.first().copied().unwrap_or(f64::NAN),
-                    t.sweep_mm.last().copied().unwrap_or(f64::NAN),
-                    t.sweep_mm.len()
+                    t.sweep.shifts_mm().first().copied().unwrap_or(f64::NAN),
+                    t.sweep.shifts_mm().last().copied().unwrap_or(f64::NAN),
+                    t.sweep.len()
                 ),
             ),
             ("equivalent conicity method".into(), t.conicity.method.name().into()),

@@ -140,9 +140,9 @@ fn parameters(scene: &Scene) -> Vec<(String, String)> {
             "sweep (mm)".into(),
             format!(
                 "{} to {}, {} positions",
-                scene.sweep_mm.first().copied().unwrap_or(f64::NAN),
-                scene.sweep_mm.last().copied().unwrap_or(f64::NAN),
-                scene.sweep_mm.len()
+                scene.sweep.shifts_mm().first().copied().unwrap_or(f64::NAN),
+                scene.sweep.shifts_mm().last().copied().unwrap_or(f64::NAN),
+                scene.sweep.len()
             ),
         ),
         ("rigid solver".into(), scene.rigid_solver.name().into()),

@@ -174,7 +174,7 @@ pub struct QuasiElasticSweep {
 /// use wheelrail::{pipeline, quasi_elastic, rigid, scene::Scene};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let rigid = rigid::search(&placement, &[2.0], rigid::Solver::default());
+/// let rigid = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap(), rigid::Solver::default());
 /// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
 /// let patch = qe.positions[0].sides[0].main().unwrap();
 /// // Averaging moves the contact point, but stays on the tread near the rigid point.
@@ -631,7 +631,7 @@ mod tests {
     fn a_symmetric_sweep_mirrors_its_half() {
         let scene = crate::scene::Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
-        let rigid = crate::rigid::search(&placement, scene.sweep_mm(), Default::default());
+        let rigid = crate::rigid::search(&placement, scene.sweep(), Default::default());
         // The mirror is taken: the rigid positions are mirror images.
         let p = &rigid.positions;
         let n = p.len();

@@ -102,6 +102,7 @@ mod tests {
     fn predicted_contact_points_start_closer_than_the_previous_ones() {
         let placement = crate::gap::tests::placement();
         let sweep: Vec<f64> = (0..=150).map(|i| 0.1 * f64::from(i)).collect();
+        let sweep = crate::sweep::Sweep::from_slice(&sweep).unwrap();
         let positions = search(&placement, &sweep, Solver::default()).positions;
         let mut path = Continuation::new(0.0);
         let (mut predicted, mut previous, mut count) = (0.0, 0.0, 0);
@@ -132,7 +133,12 @@ mod tests {
     #[test]
     fn contact_points_moving_linearly_are_predicted_exactly() {
         let placement = crate::gap::tests::placement();
-        let mut p = search(&placement, &[1.0], Solver::default()).positions[0];
+        let mut p = search(
+            &placement,
+            &crate::sweep::Sweep::from_slice(&[1.0]).unwrap(),
+            Solver::default(),
+        )
+        .positions[0];
         let mut path = Continuation::new(0.0);
         // Moves of 0.25 mm (below JUMP_SCREEN_MM), exact in binary.
         for (y, s) in [(1.0, -2.0), (1.5, -1.75)] {

@@ -376,17 +376,18 @@ mod tests {
         let sweep: Vec<f64> = (0..301)
             .map(|i| -15.0 + 30.0 * f64::from(i) / 300.0)
             .collect();
-        let sweep = &sweep[..];
         let n = sweep.len();
         assert!((0..n / 2).any(|i| sweep[i].to_bits() != (-sweep[n - 1 - i]).to_bits()));
-        let mirrored = search(&placement, sweep, Solver::default());
+        let shifts = crate::sweep::Sweep::from_slice(&sweep).unwrap();
+        assert!(shifts.is_symmetric());
+        let mirrored = search(&placement, &shifts, Solver::default());
         for (i, p) in mirrored.positions.iter().enumerate() {
             let image = mirrored.positions[n - 1 - i].mirrored(sweep[i]);
             assert_eq!(format!("{p:?}"), format!("{image:?}"));
         }
         let solved = search(
             &placement.clone().without_mirroring(),
-            sweep,
+            &shifts,
             Solver::default(),
         );
         let (mut roll, mut s, mut r, mut height) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
@@ -434,8 +435,12 @@ mod tests {
         let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
         let coarse: Vec<f64> = (-15..=15).map(f64::from).collect();
-        let wide = search(&placement, &coarse, Solver::default());
-        let fine = search(&placement, scene.sweep_mm(), Solver::default());
+        let wide = search(
+            &placement,
+            &crate::sweep::Sweep::from_slice(&coarse).unwrap(),
+            Solver::default(),
+        );
+        let fine = search(&placement, scene.sweep(), Solver::default());
         assert_eq!(wide.jumps.len(), fine.jumps.len());
         for (w, f) in wide.jumps.iter().zip(&fine.jumps) {
             // Both intervals, each at most JUMP_REFINE_MM wide, hold the same jump.
@@ -476,7 +481,7 @@ mod tests {
     fn provisional_refinements_with_roll_give_the_jumps_of_certified_ones() {
         let placement = crate::gap::tests::placement();
         let scene = Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
-        let sweep = search(&placement, scene.sweep_mm(), Solver::default());
+        let sweep = search(&placement, scene.sweep(), Solver::default());
         let sides = SideGap::both(&placement);
         let settings = RollSettings::default();
         let [(certified, all), (steered, some)] = [false, true].map(|provisional| {

@@ -158,7 +158,7 @@ mod tests {
         let (scene, placement) = en15302_e1();
         // Every window refined, none of them mirrored.
         let placement = placement.clone().without_mirroring();
-        let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
+        let sweep = search(&placement, scene.sweep(), Solver::NoRoll);
         let sides = SideGap::both(&placement);
         let (mut halves, mut wholes) = (0, 0);
         let whole = level_jumps(&sides, &sweep.positions, false, |ask| {
@@ -188,7 +188,7 @@ mod tests {
     fn a_symmetric_sweep_mirrors_its_half() {
         let (scene, placement) = en15302_e1();
         assert!(placement.is_mirror_symmetric());
-        let sweep = scene.sweep_mm();
+        let sweep = scene.sweep();
         let mirrored = search(&placement, sweep, Solver::NoRoll);
         let solved = search(
             &placement.clone().without_mirroring(),
@@ -199,7 +199,7 @@ mod tests {
         for (i, (m, s)) in mirrored.positions.iter().zip(&solved.positions).enumerate() {
             assert_eq!(format!("{m:?}"), format!("{s:?}"), "y = {}", s.y_ws);
             // The images themselves, field by field.
-            let image = mirrored.positions[n - 1 - i].mirrored(sweep[i]);
+            let image = mirrored.positions[n - 1 - i].mirrored(sweep.shifts_mm()[i]);
             assert_eq!(format!("{image:?}"), format!("{m:?}"));
         }
         assert_eq!(mirrored.jumps.len(), solved.jumps.len());
@@ -220,7 +220,7 @@ mod tests {
     #[test]
     fn provisional_refinements_give_the_jumps_of_certified_ones() {
         let (scene, placement) = en15302_e1();
-        let sweep = search(&placement, scene.sweep_mm(), Solver::NoRoll);
+        let sweep = search(&placement, scene.sweep(), Solver::NoRoll);
         let sides = SideGap::both(&placement);
         let certified = level_jumps(&sides, &sweep.positions, true, |_| false);
         let mut asked_certified = 0;

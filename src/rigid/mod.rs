@@ -43,6 +43,7 @@ use roll::solve_default;
 pub use settings::RollSettings;
 
 use crate::gap::{ContactPoint, GapPoint, SideGap};
+use crate::sweep::Sweep;
 use crate::track::{Placement, Side};
 
 /// Why the roll iteration at one position stopped (shared with [`crate::hertz`]).
@@ -246,23 +247,6 @@ impl Jump {
     }
 }
 
-/// Shifts of a sweep opposite within this are mirror images of each other (mm): a sweep
-/// computed as `from + i * step` or `from + (to - from) * i / (n - 1)` rounds the shifts
-/// of one side differently from the other's by an ulp or so (2e-15 mm at 15 mm). A
-/// mirrored position is reported at the sweep's own shift, at most this far from the shift
-/// it was solved at: its contact moves by about as much (far below the solver's 1e-11 mm
-/// residual), unless a jump lies in between, which no sweep resolves that finely.
-const MIRRORED_SHIFT_MM: f64 = 1e-12;
-
-/// Whether the shifts of `sweep_mm` are symmetric about the centre: the `i`-th from either
-/// end are opposite, and an odd sweep has 0 in its middle (within [`MIRRORED_SHIFT_MM`]).
-fn mirrored_sweep(sweep_mm: &[f64]) -> bool {
-    let n = sweep_mm.len();
-    n >= 2
-        && (0..n / 2).all(|i| (sweep_mm[i] + sweep_mm[n - 1 - i]).abs() <= MIRRORED_SHIFT_MM)
-        && (n.is_multiple_of(2) || sweep_mm[n / 2].abs() <= MIRRORED_SHIFT_MM)
-}
-
 /// A contact point moving more than this between neighbouring positions of the sweep is
 /// examined as a possible jump (mm).
 pub const JUMP_SCREEN_MM: f64 = 0.5;
@@ -354,7 +338,8 @@ impl RigidSweep {
     /// ```
     /// use wheelrail::{pipeline, rigid, scene::Scene};
     /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
-    /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), &[2.0], rigid::Solver::default());
+    /// let shifts = wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap();
+    /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), &shifts, rigid::Solver::default());
     /// let w = sweep.wickens(&sweep.positions[0]);
     /// // S1002 on UIC60 1:40 at 2 mm: a conicity of about 0.2.
     /// assert!(w.lambda > 0.1 && w.lambda < 0.3);
@@ -428,13 +413,14 @@ fn side_index(side: Side) -> usize {
 /// use wheelrail::{scene::Scene, pipeline, rigid};
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
-/// let sweep = rigid::search(&placement, &[0.0, 3.0], rigid::Solver::default());
+/// let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[0.0, 3.0]).unwrap(), rigid::Solver::default());
 /// // A symmetric wheelset at y_ws = 0 does not roll.
 /// assert!(sweep.positions[0].roll.abs() < 1e-12);
 /// // Shifted to the left it rolls to lift the left wheel (positive roll, crate docs).
 /// assert!(sweep.positions[1].roll > 0.0);
 /// ```
-pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidSweep {
+pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSweep {
+    let sweep_mm = sweep.shifts_mm();
     let mut sides = SideGap::both(placement);
     if solver == Solver::Paper {
         sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
@@ -452,7 +438,7 @@ pub fn search(placement: &Placement, sweep_mm: &[f64], solver: Solver) -> RigidS
     // from the middle on are solved, those before it are their mirror images (see
     // `Placement::is_mirror_symmetric`), and so are their jumps.
     let n = sweep_mm.len();
-    let mirror = placement.mirrors() && mirrored_sweep(sweep_mm);
+    let mirror = placement.mirrors() && sweep.is_symmetric();
     let mut positions = Vec::with_capacity(n);
     // Continue outwards from the position nearest the centre, so each start is close.
     let start = if mirror {

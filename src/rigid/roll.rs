@@ -341,7 +341,12 @@ mod tests {
     #[test]
     fn the_settings_decide_where_the_iteration_stops() {
         let placement = crate::gap::tests::placement();
-        let default = search(&placement, &[5.0], Solver::default()).positions[0];
+        let default = search(
+            &placement,
+            &crate::sweep::Sweep::from_slice(&[5.0]).unwrap(),
+            Solver::default(),
+        )
+        .positions[0];
         assert_eq!(default.stop, Stop::Converged);
         assert!(default.residual <= RollSettings::default().residual_tol_mm);
         // At 5 mm the start roll (the centre's, 0) is off: the first evaluation is no root.
@@ -350,7 +355,12 @@ mod tests {
             max_iter: 1,
             ..RollSettings::default()
         };
-        let p = search(&placement, &[5.0], Solver::Default(capped)).positions[0];
+        let p = search(
+            &placement,
+            &crate::sweep::Sweep::from_slice(&[5.0]).unwrap(),
+            Solver::Default(capped),
+        )
+        .positions[0];
         assert_eq!((p.stop, p.iterations), (Stop::IterationCap, 1));
         assert_eq!(p.stop.status_text(), "iteration cap");
     }

@@ -16,7 +16,7 @@ use super::Solver;
 /// let placement = pipeline::place(&scene).unwrap();
 /// // A looser residual than the default's 1e-11 mm.
 /// let loose = rigid::RollSettings { residual_tol_mm: 1e-6, ..Default::default() };
-/// let sweep = rigid::search(&placement, &[3.0], rigid::Solver::Default(loose));
+/// let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[3.0]).unwrap(), rigid::Solver::Default(loose));
 /// assert_eq!(sweep.positions[0].stop, rigid::Stop::Converged);
 /// assert!(sweep.positions[0].residual <= 1e-6);
 /// ```

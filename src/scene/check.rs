@@ -7,9 +7,8 @@ use super::{
     DEFAULT_POISSON, DEFAULT_RAIL_PROFILE, DEFAULT_RAIL_PROFILE_INCLINATION,
     DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_SWEEP_MM, DEFAULT_SWEEP_STEP_MM,
     DEFAULT_WHEEL_LOAD_KN, DEFAULT_WHEEL_PROFILE, DEFAULT_YOUNG_GPA, FleetSettings, ImageFormat,
-    MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_SMOOTHING_WAVELENGTH_MM, MAX_SWEEP_POSITIONS,
-    MAX_WHEEL_LOAD_N, MIN_SWEEP_STEP_MM, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE,
-    ProfileRef, Scene, YOUNG_RANGE_GPA,
+    MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_SMOOTHING_WAVELENGTH_MM, MAX_WHEEL_LOAD_N,
+    MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
 };
 use crate::hertz::Material;
 use crate::hertz::sweep::Settings as HertzSettings;
@@ -18,6 +17,7 @@ use crate::profile::Profile;
 use crate::quasi_elastic::{EPSILON_RANGE_MM, Quadrature, Settings as QeSettings, SettingsError};
 use crate::rigid::Solver;
 use crate::stage::Figure;
+use crate::sweep::{Sweep, SweepError};
 use crate::track::{
     GAUGE_POINT_DEPTH_MM, Inclination, LayoutError, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
     TrackLayout,
@@ -64,7 +64,7 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let nominal_radius_mm = nominal_radii(raw)?;
     let (layout, rail_profile_inclination, smoothing_wavelength_mm) = track(raw)?;
     let (wheel_load_n, wheel_material, rail_material) = load_and_materials(raw)?;
-    let sweep_mm = sweep(&raw.sweep)?;
+    let sweep = sweep(&raw.sweep)?;
     let (figures, formats) = outputs(raw)?;
     let rigid_solver = rigid_solver(raw)?;
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
@@ -90,7 +90,7 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         wheel_load_n,
         wheel_material,
         rail_material,
-        sweep_mm,
+        sweep,
         figures,
         formats,
         rigid_solver,
@@ -533,11 +533,12 @@ fn conicity_settings(
     };
     if let Some(a) = &raw.amplitudes_mm {
         let key = "conicity.amplitudes_mm";
-        if a.is_empty() || a.len() > MAX_SWEEP_POSITIONS {
+        if a.is_empty() || a.len() > crate::sweep::MAX_POSITIONS {
             return Err((
                 key,
                 format!(
-                    "expected 1 to {MAX_SWEEP_POSITIONS} amplitudes, found {}",
+                    "expected 1 to {} amplitudes, found {}",
+                    crate::sweep::MAX_POSITIONS,
                     a.len()
                 ),
             ));
@@ -595,7 +596,7 @@ fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, S
 }
 
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
-fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
+fn sweep(raw: &RawSweep) -> Result<Sweep, (&'static str, String)> {
     let from = raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0);
     let to = raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1);
     let step = raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM);
@@ -608,14 +609,11 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
             return Err((key, format!("{} must be a finite number", Number(v))));
         }
     }
-    if step < MIN_SWEEP_STEP_MM {
-        return Err((
-            "sweep.step_mm",
-            format!(
-                "{} mm is below {MIN_SWEEP_STEP_MM:e} mm: positions are rounded to 1e-9 mm and would repeat or be unevenly spaced",
-                Number(step)
-            ),
-        ));
+    // `Sweep::range` checks the step and the number of positions; the keys' own
+    // conditions (the order of the ends, their bounds) come in between, as before.
+    let step_error = |e: SweepError| ("sweep.step_mm", e.to_string());
+    if let Err(e @ SweepError::StepTooSmall { .. }) = Sweep::range(0.0, 0.0, step) {
+        return Err(step_error(e));
     }
     if to < from {
         return Err((
@@ -638,33 +636,5 @@ fn sweep(raw: &RawSweep) -> Result<Vec<f64>, (&'static str, String)> {
             ));
         }
     }
-    // A step that divides the range to within 1e-9 of a step includes `to`.
-    let n = ((to - from) / step + 1e-9).floor();
-    if n + 1.0 > MAX_SWEEP_POSITIONS as f64 {
-        return Err((
-            "sweep.step_mm",
-            format!(
-                "{} mm gives {} positions; at most {MAX_SWEEP_POSITIONS} are allowed",
-                Number(step),
-                Number(n + 1.0)
-            ),
-        ));
-    }
-    let n = n as usize;
-    // Positions computed as from + i * step (not accumulated) so that 0.0 is hit exactly
-    // when it lies on the grid, and rounded to 1e-9 mm so printed values stay clean.
-    let positions: Vec<f64> = (0..=n)
-        .map(|i| ((from + i as f64 * step) * 1e9).round() / 1e9)
-        .collect();
-    // MIN_SWEEP_STEP_MM guarantees this; checked because every stage relies on it.
-    if positions.windows(2).any(|p| p[1] <= p[0]) {
-        return Err((
-            "sweep.step_mm",
-            format!(
-                "{} mm gives positions that are not strictly increasing after rounding to 1e-9 mm",
-                Number(step)
-            ),
-        ));
-    }
-    Ok(positions)
+    Sweep::range(from, to, step).map_err(step_error)
 }

@@ -48,10 +48,6 @@ const N_PER_KN: f64 = 1000.0;
 /// Megapascals per gigapascal (the scene gives moduli in GPa, the numerics take MPa).
 const MPA_PER_GPA: f64 = 1000.0;
 
-/// The largest number of lateral positions a sweep may have. A sweep of a million positions
-/// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
-pub const MAX_SWEEP_POSITIONS: usize = 100_001;
-
 /// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
 pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
 /// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
@@ -68,10 +64,6 @@ pub const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
 /// The longest filter wavelength of the profile spline (mm): longer than a wheel's tread
 /// and flange together, the filter flattens the profile itself.
 pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
-/// The smallest sweep step (mm): positions are rounded to 1e-9 mm (clean printed values),
-/// so a step must be far above that rounding for positions to stay distinct and evenly
-/// spaced; 1e-6 mm (a nanometre) is a thousand roundings and far below any physical use.
-pub const MIN_SWEEP_STEP_MM: f64 = 1e-6;
 /// The largest number of values of eps in the sensitivity figure: each is a quasi-elastic
 /// pass over the whole sweep.
 pub const MAX_EPSILON_SENSITIVITY: usize = 16;
@@ -197,7 +189,7 @@ pub struct Scene {
     /// Rail material.
     pub(crate) rail_material: crate::hertz::Material,
     /// Lateral shifts of the sweep, mm, increasing.
-    pub(crate) sweep_mm: Vec<f64>,
+    pub(crate) sweep: crate::sweep::Sweep,
     /// Figures to render.
     pub(crate) figures: Vec<crate::stage::Figure>,
     /// Formats to render them in.
@@ -298,8 +290,8 @@ impl Scene {
     }
 
     /// Lateral shifts of the sweep, mm, increasing.
-    pub fn sweep_mm(&self) -> &[f64] {
-        &self.sweep_mm
+    pub fn sweep(&self) -> &crate::sweep::Sweep {
+        &self.sweep
     }
 
     /// Figures to render.
@@ -364,7 +356,7 @@ impl Scene {
     /// ```
     /// use wheelrail::scene::Scene;
     /// let scene = Scene::load("reports/paper/scene.toml".as_ref()).unwrap();
-    /// assert_eq!(scene.sweep_mm().len(), 301);
+    /// assert_eq!(scene.sweep().len(), 301);
     /// assert_eq!(scene.wheel_load_n(), 70_000.0); // 70 kN in the file
     /// ```
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
@@ -476,8 +468,9 @@ mod tests {
     #[test]
     fn defaults_are_the_paper_case() {
         let s = scene("").unwrap();
-        assert_eq!(s.sweep_mm.len(), 301);
-        assert!(s.sweep_mm[150].abs() < 1e-15 && (s.sweep_mm[300] - 15.0).abs() < 1e-12);
+        let sweep = s.sweep.shifts_mm();
+        assert_eq!(sweep.len(), 301);
+        assert!(sweep[150].abs() < 1e-15 && (sweep[300] - 15.0).abs() < 1e-12);
         assert!((s.wheel_load_n - 70_000.0).abs() < 1e-9);
         assert!((s.wheel_material.young_mpa - 210_000.0).abs() < 1e-9);
     }

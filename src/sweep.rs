@@ -1,0 +1,262 @@
+//! The lateral shifts of the wheelset a contact search sweeps: [`Sweep`], checked once when
+//! it is made (finite, strictly increasing), so that no search has to check or sort them.
+
+use crate::message::Number;
+use std::fmt;
+
+/// The largest number of positions [`Sweep::range`] makes: a sweep of a million positions
+/// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
+pub(crate) const MAX_POSITIONS: usize = 100_001;
+
+/// The smallest step of [`Sweep::range`] (mm): its positions are rounded to 1e-9 mm (clean
+/// printed values, and opposite positions exactly opposite), so a step must be far above
+/// that rounding for positions to stay distinct and evenly spaced; 1e-6 mm (a nanometre) is
+/// a thousand roundings and far below any physical use.
+pub(crate) const MIN_STEP_MM: f64 = 1e-6;
+
+/// Shifts of a sweep opposite within this are mirror images of each other (mm): a sweep
+/// computed as `from + i * step` or `from + (to - from) * i / (n - 1)` rounds the shifts of
+/// one side differently from the other's by an ulp or so (2e-15 mm at 15 mm). A mirrored
+/// position is reported at the sweep's own shift, at most this far from the shift it was
+/// solved at: its contact moves by about as much (far below the roll solver's 1e-11 mm
+/// residual), unless a jump lies in between, which no sweep resolves that finely.
+const MIRRORED_SHIFT_MM: f64 = 1e-12;
+
+/// Why shifts are no sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SweepError {
+    /// No shifts at all.
+    Empty,
+    /// A shift, or an end or the step of a range, is not a finite number.
+    NonFinite {
+        /// The offending value.
+        value: f64,
+    },
+    /// A shift is not above the one before it (shifts must be strictly increasing).
+    NotIncreasing {
+        /// Its index in the sweep.
+        index: usize,
+        /// The shift (mm).
+        shift_mm: f64,
+        /// The shift before it (mm).
+        previous_mm: f64,
+    },
+    /// A range's step is below 1e-6 mm (or not positive).
+    StepTooSmall {
+        /// The step (mm).
+        step_mm: f64,
+    },
+    /// A range ends below its start.
+    Reversed {
+        /// Its start (mm).
+        from_mm: f64,
+        /// Its end (mm).
+        to_mm: f64,
+    },
+    /// A range of more than 100001 positions.
+    TooManyPositions {
+        /// The step (mm).
+        step_mm: f64,
+        /// The number of positions it gives.
+        positions: f64,
+    },
+}
+
+impl fmt::Display for SweepError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            SweepError::Empty => f.write_str("a sweep needs at least one position"),
+            SweepError::NonFinite { value } => {
+                write!(f, "{} must be a finite number", Number(value))
+            }
+            SweepError::NotIncreasing {
+                index,
+                shift_mm,
+                previous_mm,
+            } => write!(
+                f,
+                "shift {index} ({} mm) is not above the one before it ({} mm): shifts must increase strictly",
+                Number(shift_mm),
+                Number(previous_mm)
+            ),
+            SweepError::StepTooSmall { step_mm } => write!(
+                f,
+                "{} mm is below {MIN_STEP_MM:e} mm: positions are rounded to 1e-9 mm and would repeat or be unevenly spaced",
+                Number(step_mm)
+            ),
+            SweepError::Reversed { from_mm, to_mm } => write!(
+                f,
+                "{} is below the start {}: the sweep is empty",
+                Number(to_mm),
+                Number(from_mm)
+            ),
+            SweepError::TooManyPositions { step_mm, positions } => write!(
+                f,
+                "{} mm gives {} positions; at most {MAX_POSITIONS} are allowed",
+                Number(step_mm),
+                Number(positions)
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SweepError {}
+
+/// The lateral shifts `y_ws` of a sweep (mm, track frame: positive to the left): at least
+/// one, finite and strictly increasing, as every contact search needs them.
+///
+/// Whether the shifts are symmetric about the centre (the `i`-th from either end opposite
+/// within 1e-12 mm, an odd sweep's middle 0 within as much) is found once, here: on a
+/// [mirror-symmetric](crate::track::Placement::is_mirror_symmetric) wheelset such a sweep
+/// is solved from its middle on and the rest mirrored.
+///
+/// # Example
+/// ```
+/// use wheelrail::sweep::Sweep;
+/// let sweep = Sweep::range(-15.0, 15.0, 0.1)?;
+/// assert_eq!(sweep.len(), 301);
+/// assert!(sweep.is_symmetric() && sweep.shifts_mm()[150] == 0.0);
+/// assert!(Sweep::from_slice(&[0.0, 2.0, 1.0]).is_err());
+/// # Ok::<(), wheelrail::sweep::SweepError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sweep {
+    shifts_mm: Vec<f64>,
+    symmetric: bool,
+}
+
+impl Sweep {
+    /// The sweep of `shifts_mm` (mm).
+    ///
+    /// # Errors
+    /// [`SweepError::Empty`], [`SweepError::NonFinite`] or [`SweepError::NotIncreasing`].
+    pub fn from_slice(shifts_mm: &[f64]) -> Result<Sweep, SweepError> {
+        if shifts_mm.is_empty() {
+            return Err(SweepError::Empty);
+        }
+        if let Some(&value) = shifts_mm.iter().find(|v| !v.is_finite()) {
+            return Err(SweepError::NonFinite { value });
+        }
+        if let Some(i) = (1..shifts_mm.len()).find(|&i| shifts_mm[i] <= shifts_mm[i - 1]) {
+            return Err(SweepError::NotIncreasing {
+                index: i,
+                shift_mm: shifts_mm[i],
+                previous_mm: shifts_mm[i - 1],
+            });
+        }
+        let n = shifts_mm.len();
+        let opposite = |a: f64, b: f64| (a + b).abs() <= MIRRORED_SHIFT_MM;
+        let symmetric = n >= 2
+            && (0..n / 2).all(|i| opposite(shifts_mm[i], shifts_mm[n - 1 - i]))
+            && (n.is_multiple_of(2) || shifts_mm[n / 2].abs() <= MIRRORED_SHIFT_MM);
+        Ok(Sweep {
+            shifts_mm: shifts_mm.to_vec(),
+            symmetric,
+        })
+    }
+
+    /// The shifts `from_mm + i step_mm` up to `to_mm` (included when the step divides the
+    /// range to within 1e-9 of a step), each computed from its index (not accumulated, so
+    /// that 0 is hit exactly when it lies on the grid) and rounded to 1e-9 mm, so that
+    /// printed values stay clean and opposite shifts are exactly opposite.
+    ///
+    /// # Errors
+    /// [`SweepError::NonFinite`], [`SweepError::StepTooSmall`] (below 1e-6 mm),
+    /// [`SweepError::Reversed`], [`SweepError::TooManyPositions`] (above 100001).
+    pub fn range(from_mm: f64, to_mm: f64, step_mm: f64) -> Result<Sweep, SweepError> {
+        if let Some(value) = [from_mm, to_mm, step_mm]
+            .into_iter()
+            .find(|v| !v.is_finite())
+        {
+            return Err(SweepError::NonFinite { value });
+        }
+        if step_mm < MIN_STEP_MM {
+            return Err(SweepError::StepTooSmall { step_mm });
+        }
+        if to_mm < from_mm {
+            return Err(SweepError::Reversed { from_mm, to_mm });
+        }
+        let n = ((to_mm - from_mm) / step_mm + 1e-9).floor();
+        if n + 1.0 > MAX_POSITIONS as f64 {
+            return Err(SweepError::TooManyPositions {
+                step_mm,
+                positions: n + 1.0,
+            });
+        }
+        let shifts: Vec<f64> = (0..=n as usize)
+            .map(|i| ((from_mm + i as f64 * step_mm) * 1e9).round() / 1e9)
+            .collect();
+        Sweep::from_slice(&shifts)
+    }
+
+    /// The shifts (mm), strictly increasing.
+    pub fn shifts_mm(&self) -> &[f64] {
+        &self.shifts_mm
+    }
+
+    /// The number of positions (at least one).
+    #[allow(clippy::len_without_is_empty)]
+    pub fn len(&self) -> usize {
+        self.shifts_mm.len()
+    }
+
+    /// Whether the shifts are symmetric about the centre (see [`Sweep`]).
+    pub fn is_symmetric(&self) -> bool {
+        self.symmetric
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shifts_are_checked() {
+        assert_eq!(Sweep::from_slice(&[]), Err(SweepError::Empty));
+        assert!(matches!(
+            Sweep::from_slice(&[0.0, f64::NAN]),
+            Err(SweepError::NonFinite { .. })
+        ));
+        assert!(matches!(
+            Sweep::from_slice(&[0.0, 1.0, 1.0]),
+            Err(SweepError::NotIncreasing { index: 2, .. })
+        ));
+        assert!(matches!(
+            Sweep::range(0.0, 1.0, 0.0),
+            Err(SweepError::StepTooSmall { .. })
+        ));
+        assert!(matches!(
+            Sweep::range(1.0, 0.0, 0.1),
+            Err(SweepError::Reversed { .. })
+        ));
+        assert!(matches!(
+            Sweep::range(-100.0, 100.0, 1e-3),
+            Err(SweepError::TooManyPositions { .. })
+        ));
+    }
+
+    /// A range includes its end when the step divides it, its shifts are rounded to 1e-9
+    /// mm, and symmetry is found within 1e-12 mm, not beyond.
+    #[test]
+    fn ranges_and_their_symmetry() {
+        let sweep = Sweep::range(-15.0, 15.0, 0.1).unwrap();
+        let s = sweep.shifts_mm();
+        assert_eq!((s.len(), s[0], s[300]), (301, -15.0, 15.0));
+        // Opposite to the bit: their sum is +0.
+        assert!((0..301).all(|i| (s[i] + s[300 - i]).to_bits() == 0));
+        assert!(sweep.is_symmetric());
+        assert!(
+            Sweep::from_slice(&[-1.0, 1.0 + 1e-13])
+                .unwrap()
+                .is_symmetric()
+        );
+        assert!(
+            !Sweep::from_slice(&[-1.0, 1.0 + 1e-11])
+                .unwrap()
+                .is_symmetric()
+        );
+        assert!(!Sweep::from_slice(&[-1.0, 0.1, 1.0]).unwrap().is_symmetric());
+        assert!(!Sweep::range(0.0, 15.0, 0.1).unwrap().is_symmetric());
+        assert!(!Sweep::from_slice(&[0.0]).unwrap().is_symmetric());
+    }
+}
