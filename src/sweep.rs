@@ -1,7 +1,10 @@
 //! The lateral shifts of the wheelset a contact search sweeps: [`Sweep`], checked once when
-//! it is made (finite, strictly increasing), so that no search has to check or sort them.
+//! it is made (finite, strictly increasing), so that no search has to check or sort them;
+//! and the one decision of which positions a stage computes and which it mirrors
+//! (`Mirror`), shared by the rigid search, the quasi-elastic pass and the Hertz sweep.
 
 use crate::message::Number;
+use crate::track::Placement;
 use std::fmt;
 
 /// The largest number of positions [`Sweep::range`] makes: a sweep of a million positions
@@ -204,6 +207,63 @@ impl Sweep {
     pub fn is_symmetric(&self) -> bool {
         self.symmetric
     }
+}
+
+/// The positions of a sweep a stage computes when the wheelset is mirror-symmetric and the
+/// sweep symmetric about the centre: those from the middle one on (`n / 2`); each position
+/// `i` before it is the mirror image of position `n - 1 - i`.
+///
+/// The rigid search decides it ([`Mirror::of`]) and keeps it with its sweep; the stages
+/// computed from a rigid sweep (quasi-elastic, Hertz) mirror where it did, since their
+/// inputs are then exact mirror images.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Mirror {
+    len: usize,
+}
+
+impl Mirror {
+    /// `Some` where `sweep` on `placement` is solved from its middle on and mirrored:
+    /// the placement [mirrors](Placement::mirrors) and the sweep is symmetric.
+    ///
+    /// The pose of a position is its shift and the roll solved for it, whose mirror image is
+    /// the opposite shift and roll. A pose parameter given per position (a yaw `psi(y)`)
+    /// joins the decision here: the image of `(y, psi)` is `(-y, -psi)`, so it must be odd
+    /// in `y` for the images to be the positions before the middle.
+    pub(crate) fn of(placement: &Placement, sweep: &Sweep) -> Option<Mirror> {
+        (placement.mirrors() && sweep.is_symmetric()).then_some(Mirror { len: sweep.len() })
+    }
+
+    /// The first position computed: the middle one (`n / 2`).
+    pub(crate) fn middle(self) -> usize {
+        self.len / 2
+    }
+
+    /// The whole sweep's results from `solved`, the results from the middle position on,
+    /// each position before it the image of its mirror position reported at its own shift
+    /// (`y_ws(i)`).
+    pub(crate) fn complete<T: Mirrored>(
+        self,
+        solved: Vec<T>,
+        y_ws: impl Fn(usize) -> f64,
+    ) -> Vec<T> {
+        let middle = self.middle();
+        debug_assert_eq!(solved.len(), self.len - middle);
+        let images: Vec<T> = (0..middle)
+            .map(|i| solved[self.len - 1 - i - middle].mirrored(y_ws(i)))
+            .collect();
+        let mut all = images;
+        all.extend(solved);
+        all
+    }
+}
+
+/// A result at one position of a sweep with a mirror image: the result of a
+/// mirror-symmetric wheelset at the opposite shift, which swaps the wheels and negates
+/// track-frame lateral quantities (the roll, the contacts' `y`), side-frame quantities
+/// unchanged (each side is computed in its own mirrored frame).
+pub(crate) trait Mirrored {
+    /// The mirror image, reported at the shift `y_ws`.
+    fn mirrored(&self, y_ws: f64) -> Self;
 }
 
 #[cfg(test)]

@@ -15,6 +15,7 @@
 use super::{Contact, Method, PrincipalCurvatures, ellipse, relative_curvatures};
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::rigid::{RigidSweep, Stop};
+use crate::sweep::{Mirror, Mirrored};
 
 /// Which contact the ellipses are computed for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -98,8 +99,25 @@ pub struct Position {
     pub sides: [SideHertz; 2],
 }
 
+impl Mirrored for Position {
+    /// The other wheel's result at the mirrored position: every Hertz quantity is the same
+    /// in either side's frame.
+    fn mirrored(&self, y_ws: f64) -> Position {
+        let [left, right] = &self.sides;
+        Position {
+            y_ws,
+            sides: [right.clone(), left.clone()],
+        }
+    }
+}
+
 /// Computes the ellipses of both wheels over a sweep. `quasi_elastic` must be given when
 /// `settings.source` is [`ContactSource::QuasiElastic`].
+///
+/// Where the contacts before the middle of the sweep are the mirror images of those after it
+/// (a mirror-symmetric wheelset on a symmetric sweep), the ellipses from the middle on are
+/// computed and the others are their mirror images: each ellipse is a function of its
+/// wheel's contact alone.
 ///
 /// # Units
 /// `wheel_load_n` in N, `e_star_mpa` in MPa.
@@ -110,136 +128,129 @@ pub fn sweep(
     e_star_mpa: f64,
     settings: &Settings,
 ) -> Vec<Position> {
-    sweep_reusing(
-        rigid,
-        quasi_elastic,
-        wheel_load_n,
-        e_star_mpa,
-        settings,
-        true,
-    )
-    .0
+    let mirror = match settings.source {
+        ContactSource::Rigid => rigid.mirror(),
+        ContactSource::QuasiElastic => quasi_elastic.and_then(QuasiElasticSweep::mirror),
+    };
+    let first = mirror.map_or(0, Mirror::middle);
+    let solved: Vec<Position> = rigid.positions[first..]
+        .iter()
+        .enumerate()
+        .map(|(j, p)| {
+            let i = first + j;
+            let side = |k: usize| {
+                let input = contact_input(rigid, quasi_elastic, settings.source, i, k);
+                side_hertz(input, wheel_load_n, e_star_mpa, settings)
+            };
+            Position {
+                y_ws: p.y_ws,
+                sides: [side(0), side(1)],
+            }
+        })
+        .collect();
+    match mirror {
+        Some(mirror) => mirror.complete(solved, |i| rigid.positions[i].y_ws),
+        None => solved,
+    }
 }
 
-/// What one wheel's ellipse depends on, as bits: rolling radius, contact angle, lateral
-/// curvatures of wheel and rail, the patch's weight share and the number of patches; or
-/// why there is no contact.
-type Input = Result<([u64; 5], usize), String>;
+/// What one wheel's ellipse depends on: rolling radius, contact angle, lateral curvatures of
+/// wheel and rail, the patch's weight share and the number of patches.
+struct Input {
+    r: f64,
+    gamma: f64,
+    wheel_curvature: f64,
+    rail_curvature: f64,
+    share: f64,
+    patches: usize,
+}
 
-/// [`sweep`], where a wheel whose input is bit for bit the other wheel's at the mirrored
-/// position (the positions before and after the middle of a mirror-symmetric wheelset's
-/// sweep) takes that wheel's result when `reuse`: the ellipse is a function of its input.
-/// Also returns how many results were taken.
-fn sweep_reusing(
+/// The input of wheel `k` at position `i`, or why there is no contact to compute.
+fn contact_input(
     rigid: &RigidSweep,
     quasi_elastic: Option<&QuasiElasticSweep>,
+    source: ContactSource,
+    i: usize,
+    k: usize,
+) -> Result<Input, String> {
+    let p = &rigid.positions[i];
+    if p.stop != Stop::Converged {
+        return Err(format!("rigid search: {}", p.stop.status_text()));
+    }
+    let contact = match source {
+        ContactSource::Rigid => p.contact[k].map(|c| Input {
+            r: c.r,
+            gamma: c.gamma,
+            wheel_curvature: c.wheel_curvature,
+            rail_curvature: c.rail_curvature,
+            share: 1.0,
+            patches: 1,
+        }),
+        ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
+            let side = &q.positions[i].sides[k];
+            side.main().map(|m| Input {
+                r: m.r,
+                gamma: m.gamma,
+                wheel_curvature: m.wheel_curvature,
+                rail_curvature: m.rail_curvature,
+                share: m.weight_share,
+                patches: side.patches.len(),
+            })
+        }),
+    };
+    contact.ok_or_else(|| "no contact".into())
+}
+
+/// The Hertz result of one wheel from its contact `input`.
+fn side_hertz(
+    input: Result<Input, String>,
     wheel_load_n: f64,
     e_star_mpa: f64,
     settings: &Settings,
-    reuse: bool,
-) -> (Vec<Position>, usize) {
-    let input = |i: usize, k: usize| -> Input {
-        let p = &rigid.positions[i];
-        if p.stop != Stop::Converged {
-            return Err(format!("rigid search: {}", p.stop.status_text()));
-        }
-        let contact = match settings.source {
-            ContactSource::Rigid => {
-                p.contact[k].map(|c| ([c.r, c.gamma, c.wheel_curvature, c.rail_curvature, 1.0], 1))
-            }
-            ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
-                let side = &q.positions[i].sides[k];
-                side.main().map(|m| {
-                    let values = [
-                        m.r,
-                        m.gamma,
-                        m.wheel_curvature,
-                        m.rail_curvature,
-                        m.weight_share,
-                    ];
-                    (values, side.patches.len())
-                })
-            }),
-        };
-        contact
-            .map(|(v, patches)| (v.map(f64::to_bits), patches))
-            .ok_or_else(|| "no contact".into())
+) -> SideHertz {
+    let c = match input {
+        Ok(c) => c,
+        Err(status) => return missing(status),
     };
-    let solve = |input: &Input| -> SideHertz {
-        let (bits, patches) = match input {
-            Ok(v) => *v,
-            Err(status) => return missing(status.clone()),
-        };
-        let [r, gamma, kw, kr, share] = bits.map(f64::from_bits);
-        let (a, b) = relative_curvatures(
-            &PrincipalCurvatures {
-                wheel_rolling: gamma.cos() / r,
-                wheel_lateral: kw,
-                rail_rolling: 0.0,
-                rail_lateral: kr,
-            },
-            0.0,
-        );
-        let vertical = wheel_load_n * share;
-        let load = match settings.normal_load {
-            NormalLoad::Projected => vertical / gamma.cos(),
-            NormalLoad::Vertical => vertical,
-        };
-        let (contact, mut status) = match ellipse(a, b, load, e_star_mpa, settings.method) {
-            Ok(c @ Contact::Hertzian(e)) => {
-                let status = match e.stop {
-                    super::Stop::Converged => "ok".to_string(),
-                    other => format!("ellipse: {other}"),
-                };
-                (Some(c), status)
-            }
-            Ok(c @ Contact::NotHertzian(reason)) => (Some(c), reason.to_string()),
-            Err(e) => (None, format!("error: {e}")),
-        };
-        if patches > 1 {
-            status.push_str(&format!(
-                "; {patches} patches, load split by weight (reported patch {:.0} %)",
-                100.0 * share
-            ));
-        }
-        SideHertz {
-            a_curvature: a,
-            b_curvature: b,
-            normal_load_n: load,
-            contact,
-            status,
-        }
+    let (a, b) = relative_curvatures(
+        &PrincipalCurvatures {
+            wheel_rolling: c.gamma.cos() / c.r,
+            wheel_lateral: c.wheel_curvature,
+            rail_rolling: 0.0,
+            rail_lateral: c.rail_curvature,
+        },
+        0.0,
+    );
+    let vertical = wheel_load_n * c.share;
+    let load = match settings.normal_load {
+        NormalLoad::Projected => vertical / c.gamma.cos(),
+        NormalLoad::Vertical => vertical,
     };
-    let n = rigid.positions.len();
-    let inputs: Vec<[Input; 2]> = (0..n).map(|i| [0, 1].map(|k| input(i, k))).collect();
-    // From the middle on first, so that the positions before it can take their mirror
-    // images' results.
-    let mut sides: Vec<Option<[SideHertz; 2]>> = vec![None; n];
-    let mut taken = 0;
-    for i in (n / 2..n).chain(0..n / 2) {
-        let j = n - 1 - i;
-        sides[i] = Some([0, 1].map(|k| {
-            if reuse
-                && i < n / 2
-                && inputs[i][k] == inputs[j][1 - k]
-                && let Some(mirror) = &sides[j]
-            {
-                taken += 1;
-                return mirror[1 - k].clone();
-            }
-            solve(&inputs[i][k])
-        }));
+    let (contact, mut status) = match ellipse(a, b, load, e_star_mpa, settings.method) {
+        Ok(e @ Contact::Hertzian(ellipse)) => {
+            let status = match ellipse.stop {
+                super::Stop::Converged => "ok".to_string(),
+                other => format!("ellipse: {other}"),
+            };
+            (Some(e), status)
+        }
+        Ok(e @ Contact::NotHertzian(reason)) => (Some(e), reason.to_string()),
+        Err(e) => (None, format!("error: {e}")),
+    };
+    if c.patches > 1 {
+        status.push_str(&format!(
+            "; {} patches, load split by weight (reported patch {:.0} %)",
+            c.patches,
+            100.0 * c.share
+        ));
     }
-    let positions = rigid
-        .positions
-        .iter()
-        .zip(sides)
-        .map(|(p, sides)| Position {
-            y_ws: p.y_ws,
-            sides: sides.expect("every position solved"),
-        })
-        .collect();
-    (positions, taken)
+    SideHertz {
+        a_curvature: a,
+        b_curvature: b,
+        normal_load_n: load,
+        contact,
+        status,
+    }
 }
 
 fn missing(status: String) -> SideHertz {
@@ -257,25 +268,33 @@ mod tests {
     use super::*;
 
     /// On the paper scene (a mirror-symmetric wheelset, its sweep mirrored about the
-    /// middle), every wheel before the middle takes its mirror image's ellipse, and the
-    /// sweep is what computing every ellipse gives, for both contact sources.
+    /// middle) the ellipses before the middle are taken from their mirror images, and each
+    /// is what computing it from its own contact gives, for both contact sources.
     #[test]
     fn mirrored_wheels_take_their_images_ellipses() {
         let scene = crate::scene::Scene::from_toml("", "test", std::path::Path::new(".")).unwrap();
+        let e_star = super::super::effective_modulus(scene.wheel_material(), scene.rail_material());
         let placement = crate::pipeline::place(&scene).unwrap();
         let rigid = crate::rigid::search(&placement, scene.sweep(), Default::default());
         let qe = crate::quasi_elastic::search(&placement, &rigid, scene.quasi_elastic());
-        let e_star = super::super::effective_modulus(scene.wheel_material(), scene.rail_material());
+        assert!(rigid.mirror().is_some() && qe.mirror().is_some());
         for source in [ContactSource::QuasiElastic, ContactSource::Rigid] {
             let settings = Settings {
                 source,
                 ..Settings::default()
             };
-            let run = |reuse| sweep_reusing(&rigid, Some(&qe), 70e3, e_star, &settings, reuse);
-            let ((reusing, taken), (computing, none)) = (run(true), run(false));
-            // Both wheels of the 150 positions before the middle.
-            assert_eq!((taken, none), (300, 0), "{source:?}");
-            assert_eq!(format!("{reusing:?}"), format!("{computing:?}"));
+            let swept = sweep(&rigid, Some(&qe), 70e3, e_star, &settings);
+            for (i, p) in swept.iter().enumerate() {
+                for (k, side) in p.sides.iter().enumerate() {
+                    let input = contact_input(&rigid, Some(&qe), source, i, k);
+                    let computed = side_hertz(input, 70e3, e_star, &settings);
+                    assert_eq!(
+                        format!("{side:?}"),
+                        format!("{computed:?}"),
+                        "{source:?} {i}"
+                    );
+                }
+            }
         }
     }
 }

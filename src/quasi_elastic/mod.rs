@@ -27,6 +27,7 @@
 
 use crate::gap::{ContactPoint, SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
+use crate::sweep::{Mirror, Mirrored};
 use crate::track::{Placement, Side};
 
 mod settings;
@@ -74,7 +75,7 @@ impl Patch {
     /// The patch seen in the mirror `y -> -y` of the track: the other wheel's at the
     /// mirrored position (only the track-frame `y` changes sign, as for
     /// [`crate::rigid::SideContact`]).
-    fn mirrored(&self) -> Patch {
+    fn mirror_image(&self) -> Patch {
         Patch {
             y: -self.y,
             ..*self
@@ -143,6 +144,23 @@ pub struct Position {
     pub rigid_stop: Stop,
 }
 
+impl Mirrored for Position {
+    fn mirrored(&self, y_ws: f64) -> Position {
+        let side = |k: usize| SideResult {
+            patches: self.sides[k]
+                .patches
+                .iter()
+                .map(Patch::mirror_image)
+                .collect(),
+        };
+        Position {
+            y_ws,
+            sides: [side(1), side(0)],
+            rigid_stop: self.rigid_stop,
+        }
+    }
+}
+
 impl Position {
     /// The result of `side`.
     pub fn side(&self, side: Side) -> &SideResult {
@@ -160,6 +178,15 @@ pub struct QuasiElasticSweep {
     pub settings: Settings,
     /// One result per position of the rigid sweep.
     pub positions: Vec<Position>,
+    /// Whether the positions before the middle are the mirror images of those after it.
+    mirror: Option<Mirror>,
+}
+
+impl QuasiElasticSweep {
+    /// Whether the positions before the middle are the mirror images of those after it.
+    pub(crate) fn mirror(&self) -> Option<Mirror> {
+        self.mirror
+    }
 }
 
 /// Averages the contact of every position of a rigid sweep.
@@ -182,35 +209,25 @@ pub struct QuasiElasticSweep {
 /// ```
 pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) -> QuasiElasticSweep {
     let sides = SideGap::both(placement);
-    // A mirror-symmetric wheelset whose rigid positions are mirror images about the middle
-    // one (as `rigid::search` gives them): a wheel at a position is averaged exactly as the
-    // other wheel at the mirrored position, operation for operation (both in their side
-    // frames), so the positions before the middle are the mirror images of those after it.
-    // (A position with a NaN, such as one without contact, compares unequal to its image:
-    // then every position is averaged.)
+    // Where the rigid positions before the middle are the mirror images of those after it,
+    // a wheel at a position is averaged exactly as the other wheel at the mirrored
+    // position, operation for operation (both in their side frames): the images are what
+    // averaging gives.
+    let mirror = rigid.mirror().filter(|_| placement.mirrors());
     let all = &rigid.positions;
-    let n = all.len();
-    let mirror =
-        placement.mirrors() && (0..n / 2).all(|i| all[i] == all[n - 1 - i].mirrored(all[i].y_ws));
-    let first = if mirror { n / 2 } else { 0 };
+    let first = mirror.map_or(0, Mirror::middle);
     // Positions are independent: averaged in parallel (rayon), buffers per thread.
     use rayon::prelude::*;
-    let mut positions: Vec<Position> = all[first..]
+    let solved: Vec<Position> = all[first..]
         .par_iter()
         .map_init(Work::default, |work, p| {
             let mut result = [SideResult::default(), SideResult::default()];
             if p.stop == Stop::Converged {
                 for k in 0..2 {
                     if let Some(c) = p.contact[k] {
-                        result[k] = side_average(
-                            &sides[k],
-                            p.y_ws,
-                            p.roll,
-                            p.axle_height,
-                            c.s,
-                            settings,
-                            work,
-                        );
+                        let (y_ws, roll, height) = (p.y_ws, p.roll, p.axle_height);
+                        let side = &sides[k];
+                        result[k] = side_average(side, y_ws, roll, height, c.s, settings, work);
                     }
                 }
             }
@@ -221,23 +238,14 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
             }
         })
         .collect();
-    if mirror {
-        let mirrored = (0..first).map(|i| {
-            let p = &positions[n - 1 - i - first];
-            let side = |k: usize| SideResult {
-                patches: p.sides[k].patches.iter().map(Patch::mirrored).collect(),
-            };
-            Position {
-                y_ws: all[i].y_ws,
-                sides: [side(1), side(0)],
-                rigid_stop: p.rigid_stop,
-            }
-        });
-        positions.splice(0..0, mirrored.collect::<Vec<_>>());
-    }
+    let positions = match mirror {
+        Some(mirror) => mirror.complete(solved, |i| all[i].y_ws),
+        None => solved,
+    };
     QuasiElasticSweep {
         settings: *settings,
         positions,
+        mirror,
     }
 }
 

@@ -8,12 +8,25 @@ use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, sid
 use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap, SidePose};
 use crate::track::Side;
 
+/// What the refinement of a jump may ask of the solver.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Refinement {
+    /// Whether the wheels do not interact (the level wheelset): a position can be solved
+    /// for one wheel alone.
+    pub(super) separable: bool,
+    /// Whether the solver certifies its global minima (all but the paper's iteration): the
+    /// positions a refinement steers by may then skip the certificate.
+    pub(super) certifying: bool,
+}
+
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined to
 /// [`JUMP_REFINE_MM`]. `solve(y_ws, theta0, ask, scratch)` solves one position as `ask`
-/// says ([`Ask`]: cold at the first of a refinement, one wheel only), certified or
-/// provisionally as `scratch` is set for it here ([`Scratch::provisional`]);
-/// a `separable` solver (the level wheelset, whose wheels do not interact) answers
-/// `only = Some(k)` with that wheel's half of the position (see `level.rs`): the refinement
+/// says ([`Ask`]: one wheel only), cold (from no warm basins) at the first solve of a
+/// refinement and certified or provisionally as `scratch` is set for it here
+/// ([`Scratch::warm`], [`Scratch::provisional`]); a
+/// [`separable`](Refinement::separable) solver (the level wheelset, whose wheels do not
+/// interact) answers `only = Some(k)` with that wheel's half of the position (see
+/// `level.rs`): the refinement
 /// of a wheel's jump solves that wheel only, and the other wheel only at the two ends of a
 /// confirmed jump.
 ///
@@ -39,12 +52,15 @@ use crate::track::Side;
 /// but left both ends certified may have steered to another jump of the same window than a
 /// refinement certified throughout would find (on the paper scene and the EN 15302 pair
 /// the jumps are those of such a refinement, bit for bit: the tests below and in
-/// `level.rs`). A solver that certifies nothing (`certifying` false: the paper's
-/// iteration) steers by the positions it reports, as before.
+/// `level.rs`). A solver that certifies nothing (not [`certifying`](Refinement::certifying):
+/// the paper's iteration) steers by the positions it reports.
 pub(super) fn find_jumps(
     sides: &[SideGap; 2],
     positions: &[Position],
-    (separable, certifying): (bool, bool),
+    Refinement {
+        separable,
+        certifying,
+    }: Refinement,
     scratch: &mut Scratch,
     mut solve: impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
 ) -> Vec<Jump> {
@@ -127,7 +143,8 @@ pub(super) struct Ask {
 }
 
 impl Ask {
-    /// `solve(y_ws, theta0, self)`, provisional ([`Scratch::provisional`]) unless certified.
+    /// `solve(y_ws, theta0, self)`: from no warm basins when cold, provisional
+    /// ([`Scratch::provisional`]) unless certified.
     fn solve(
         self,
         solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
@@ -135,6 +152,7 @@ impl Ask {
         theta0: f64,
         scratch: &mut Scratch,
     ) -> Position {
+        scratch.warm &= !self.cold;
         scratch.provisional = !self.certified;
         solve(y_ws, theta0, self, scratch)
     }
@@ -360,6 +378,7 @@ mod tests {
     use super::super::{RollSettings, Solver, search};
     use super::*;
     use crate::scene::Scene;
+    use crate::sweep::Mirrored;
 
     /// With roll (the paper scene), the mirror images of the positions after the middle
     /// of a symmetric sweep are the positions solved before it, to the solver's accuracy:
@@ -459,11 +478,13 @@ mod tests {
         let jumps = find_jumps(
             &sides,
             window,
-            (false, true),
+            Refinement {
+                separable: false,
+                certifying: true,
+            },
             &mut scratch,
-            |y, theta0, ask, scratch| {
+            |y, theta0, _, scratch| {
                 solves += 1;
-                scratch.warm &= !ask.cold;
                 solve_default(&sides, &settings, y, theta0, scratch)
             },
         );
@@ -489,10 +510,12 @@ mod tests {
             let jumps = find_jumps(
                 &sides,
                 &sweep.positions,
-                (false, true),
+                Refinement {
+                    separable: false,
+                    certifying: true,
+                },
                 &mut scratch,
                 |y, theta0, ask, s| {
-                    s.warm &= !ask.cold;
                     s.provisional = provisional && !ask.certified;
                     certified += usize::from(!s.provisional);
                     solve_default(&sides, &settings, y, theta0, s)
@@ -506,8 +529,9 @@ mod tests {
     }
 
     /// A cold solve is a function of its shift and start roll alone, whatever was solved
-    /// before with the same scratch (what `search` relies on to solve the first midpoint
-    /// of a window once for both wheels): compared bit for bit through `Debug` at the
+    /// before with the same scratch (what the sweep driver relies on to refine the windows
+    /// of a sweep's two halves at once, each half with its own state): compared bit for
+    /// bit through `Debug` at the
     /// midpoints of a sweep of 1 mm steps, each solved after a nearby shift (whose pose
     /// boxes hold it) and after a far one.
     #[test]

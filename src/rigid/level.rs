@@ -8,7 +8,8 @@
 //! gives, bit for bit (the unit test `joined_halves_are_the_whole_position` checks it).
 
 use super::minima::{Scratch, certify_minimum, side_minimum};
-use super::{Position, RollSettings, Stop, finish, no_contact, side_contact};
+use super::solve::{finish, no_contact, side_contact};
+use super::{Position, RollSettings, Stop};
 use crate::gap::{GapPoint, SideGap, SidePose};
 
 /// Each wheel at roll 0 on its own rail: the global minimum of each side's gap over a fresh
@@ -91,10 +92,11 @@ pub(super) fn join_sides(a: &Position, b: &Position, k: usize) -> Position {
 
 #[cfg(test)]
 mod tests {
-    use super::super::jumps::{Ask, find_jumps};
+    use super::super::jumps::{Ask, Refinement, find_jumps};
     use super::super::{Jump, Solver, search};
     use super::*;
     use crate::scene::Scene;
+    use crate::sweep::Mirrored;
     use crate::track::Placement;
 
     /// The EN 15302 reference pair of the whole-process benchmark (R-UIC519A on S-UIC519A
@@ -119,7 +121,10 @@ mod tests {
         find_jumps(
             sides,
             positions,
-            (separable, true),
+            Refinement {
+                separable,
+                certifying: true,
+            },
             &mut scratch,
             |y, _, ask, s| {
                 s.provisional = provisional(ask);

@@ -27,23 +27,21 @@
 //! `NoContact`, `Stalled`); the outputs flag the others instead of plotting them.
 
 mod continuation;
+mod driver;
 mod jumps;
 mod level;
 mod minima;
 mod paper;
 mod roll;
 mod settings;
+mod solve;
 
-use continuation::Continuation;
-use jumps::find_jumps;
-use level::solve_no_roll;
 use minima::Scratch;
-use paper::solve_paper;
-use roll::solve_default;
 pub use settings::RollSettings;
+use solve::PositionSolver;
 
-use crate::gap::{ContactPoint, GapPoint, SideGap};
-use crate::sweep::Sweep;
+use crate::gap::ContactPoint;
+use crate::sweep::{Mirror, Mirrored, Sweep};
 use crate::track::{Placement, Side};
 
 /// Why the roll iteration at one position stopped (shared with [`crate::hertz`]).
@@ -177,10 +175,10 @@ pub struct Position {
     pub residual: f64,
 }
 
-impl Position {
+impl Mirrored for Position {
     /// The solution at the mirrored shift `y_ws` (`-self.y_ws`) of a mirror-symmetric
     /// wheelset: the wheels swap, the roll changes sign, the height stays.
-    pub(crate) fn mirrored(&self, y_ws: f64) -> Position {
+    fn mirrored(&self, y_ws: f64) -> Position {
         Position {
             y_ws,
             // 0 - roll: a level wheelset's roll of 0 stays 0, not -0.
@@ -192,7 +190,9 @@ impl Position {
             ..*self
         }
     }
+}
 
+impl Position {
     /// The contact of `side`.
     pub fn side(&self, side: Side) -> Option<&SideContact> {
         self.contact[side_index(side)].as_ref()
@@ -267,9 +267,16 @@ pub struct RigidSweep {
     pub centre: Position,
     /// Contact-point jumps, by side and `y_ws`.
     pub jumps: Vec<Jump>,
+    /// Whether the positions before the middle are the mirror images of those after it.
+    mirror: Option<Mirror>,
 }
 
 impl RigidSweep {
+    /// Whether the positions before the middle are the mirror images of those after it.
+    pub(crate) fn mirror(&self) -> Option<Mirror> {
+        self.mirror
+    }
+
     /// Half the lateral distance between the contact points of the centred wheelset (mm):
     /// Wickens' `l0`.
     pub fn l0_mm(&self) -> f64 {
@@ -420,206 +427,18 @@ fn side_index(side: Side) -> usize {
 /// assert!(sweep.positions[1].roll > 0.0);
 /// ```
 pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSweep {
-    let sweep_mm = sweep.shifts_mm();
-    let mut sides = SideGap::both(placement);
-    if solver == Solver::Paper {
-        sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
-    }
-    // The settings are read by reference from here: one copy per sweep.
+    let solve = PositionSolver::new(placement, solver);
+    // The centre's buffers serve the jumps' refinements after it.
     let mut scratch = Scratch::default();
-    // `only = Some(k)`: wheel k alone where the wheels do not interact (no roll).
-    let solve = |y: f64, theta0: f64, scratch: &mut Scratch, only: Option<usize>| match &solver {
-        Solver::Default(settings) => solve_default(&sides, settings, y, theta0, scratch),
-        Solver::Paper => solve_paper(&sides, y),
-        Solver::NoRoll => solve_no_roll(&sides, y, scratch, only),
-    };
-    let centre = solve(0.0, 0.0, &mut scratch, None);
-    // A mirror-symmetric wheelset on a sweep symmetric about the centre: the positions
-    // from the middle on are solved, those before it are their mirror images (see
-    // `Placement::is_mirror_symmetric`), and so are their jumps.
-    let n = sweep_mm.len();
-    let mirror = placement.mirrors() && sweep.is_symmetric();
-    let mut positions = Vec::with_capacity(n);
-    // Continue outwards from the position nearest the centre, so each start is close.
-    let start = if mirror {
-        n / 2
-    } else {
-        sweep_mm
-            .iter()
-            .enumerate()
-            .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
-            .map_or(0, |(i, _)| i)
-    };
-    // The two directions are independent continuations from the centre: they run in
-    // parallel (rayon; measured 1.5 times faster on 2 cores than one sequential sweep) and
-    // give the same results on any number of threads, or one after the other on the
-    // calling thread where starting the pool would cost more (see PARALLEL_MIN_HALF).
-    let half = |indices: &mut dyn Iterator<Item = usize>| -> Vec<Position> {
-        let mut scratch = Scratch::default();
-        let mut path = Continuation::new(centre.roll);
-        indices
-            .map(|i| {
-                let y = sweep_mm[i];
-                // The default solver follows warm basins: each contact's starts where the
-                // continuation predicts the contact point.
-                if let Solver::Default(settings) = &solver
-                    && scratch.warm
-                {
-                    scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
-                }
-                let p = solve(y, path.predict(y), &mut scratch, None);
-                path.push(&p);
-                p
-            })
-            .collect()
-    };
-    let forward = || half(&mut (start..n));
-    let backward = || half(&mut (0..start).rev());
-    let in_pool = rayon::current_thread_index().is_some();
-    if mirror {
-        let forward = forward();
-        positions.extend((0..start).map(|i| forward[n - 1 - i - start].mirrored(sweep_mm[i])));
-        positions.extend(forward);
-    } else {
-        let (forward, mut backward) = if in_pool || start.min(n - start) >= PARALLEL_MIN_HALF {
-            rayon::join(forward, backward)
-        } else {
-            (forward(), backward())
-        };
-        backward.reverse();
-        positions.extend(backward);
-        positions.extend(forward);
-    }
-    // Each bisection starts cold, then continues from its previous midpoint. Where both
-    // wheels' refinements of one window start at the same shift from the same roll (the
-    // midpoint, where no secant is found: most windows of a sweep of 1 mm steps), the cold
-    // solve is made once and the scratch it left restored for the second: a cold solve
-    // depends on its shift and start roll alone (the pose boxes it may inherit change the
-    // work, not the result; the test `a_cold_solve_does_not_depend_on_what_was_solved_before`),
-    // so the second refinement goes on exactly as after solving again.
-    // The level wheelset's wheels are solved one at a time; the paper's iteration certifies
-    // nothing, so its refinements have no certificates to skip.
-    let kind = (solver == Solver::NoRoll, solver != Solver::Paper);
-    let jumps_in = |part: &[Position], scratch: &mut Scratch| {
-        let mut first: Option<((u64, u64, bool), Position, Scratch)> = None;
-        find_jumps(&sides, part, kind, scratch, |y, theta0, ask, scratch| {
-            if !ask.cold || ask.only.is_some() {
-                return solve(y, theta0, scratch, ask.only);
-            }
-            let key = (y.to_bits(), theta0.to_bits(), ask.certified);
-            if let Some((k, p, after)) = &first
-                && *k == key
-            {
-                scratch.clone_from(after);
-                return *p;
-            }
-            scratch.warm = false;
-            let p = solve(y, theta0, scratch, ask.only);
-            first = Some((key, p, scratch.clone()));
-            p
-        })
-    };
-    // Each window's refinements start cold (as above: their results do not depend on what
-    // was solved before, only their work does), so in a pool the windows of the sweep's two
-    // halves are refined at once, each half with its own scratch, and their jumps joined in
-    // the windows' order: the jumps of one pass. (The first cold solve of a window is never
-    // another window's: it lies strictly inside its own window.)
-    let jumps_of = |part: &[Position], scratch: &mut Scratch| {
-        if in_pool && part.len() > 2 {
-            let middle = part.len() / 2;
-            let (mut low, high) = rayon::join(
-                || jumps_in(&part[..=middle], scratch),
-                || jumps_in(&part[middle..], &mut Scratch::default()),
-            );
-            low.extend(high);
-            low
-        } else {
-            jumps_in(part, scratch)
-        }
-    };
-    let jumps = if mirror {
-        // The windows from the middle position on, and their mirror images in the windows'
-        // order (the left wheel's jump first within a window, as `find_jumps` gives them);
-        // the middle window of an even sweep is its own mirror image and is refined as it is.
-        let right = jumps_of(&positions[start..], &mut scratch);
-        let mut jumps: Vec<Jump> = right.iter().rev().map(Jump::mirrored).collect();
-        if n.is_multiple_of(2) {
-            jumps.extend(jumps_in(&positions[start - 1..=start], &mut scratch));
-        }
-        jumps.extend(right);
-        jumps
-    } else {
-        jumps_of(&positions, &mut scratch)
-    };
+    let centre = solve.solve(0.0, 0.0, &mut scratch, None);
+    let mirror = Mirror::of(placement, sweep);
+    let positions = driver::positions(&solve, sweep, mirror, centre.roll);
+    let jumps = driver::jumps(&solve, &positions, mirror, &mut scratch);
     RigidSweep {
         solver,
         positions,
         centre,
         jumps,
-    }
-}
-
-/// Halves of a sweep shorter than this (positions) run one after the other on a calling
-/// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
-/// and the caller woken) costs about 0.15-0.2 ms (measured on the EN 15302 scene of
-/// `benches/data`, 141 positions: 5.45 ms with the pool against 5.31 ms without, medians
-/// of 200 interleaved runs on one thread), while a position costs 4-5 µs (34 k
-/// instructions for the level wheelset of that scene, 55 k for the default solver on the
-/// paper scene): a parallel half of 100 positions, 0.4-0.5 ms, saves about twice what the
-/// pool's start costs. Inside a pool (a fleet, several scenes, the quasi-elastic pass
-/// already run) joining costs microseconds and the halves always run in parallel.
-const PARALLEL_MIN_HALF: usize = 100;
-
-fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> Position {
-    Position {
-        y_ws,
-        roll: theta,
-        axle_height: f64::NAN,
-        contact: [None, None],
-        iterations,
-        stop: Stop::NoContact,
-        residual: f64::NAN,
-    }
-}
-
-fn finish(
-    sides: &[SideGap; 2],
-    y_ws: f64,
-    theta: f64,
-    mins: [(GapPoint, Option<GapPoint>); 2],
-    iterations: usize,
-    residual: f64,
-) -> Position {
-    // Both minimum gaps are (nearly) equal; the axle height closes the mean of them.
-    let axle_height = -0.5 * (mins[0].0.g + mins[1].0.g);
-    Position {
-        y_ws,
-        roll: theta,
-        axle_height,
-        contact: [0, 1].map(|k| Some(side_contact(&sides[k], theta, mins[k]))),
-        iterations,
-        stop: Stop::Converged,
-        residual: residual.abs(),
-    }
-}
-
-/// The contact of one wheel at its minimum gap `m` (with a second minimum) at roll `theta`.
-fn side_contact(
-    side: &SideGap,
-    theta: f64,
-    (m, second): (GapPoint, Option<GapPoint>),
-) -> SideContact {
-    let phi = side.sign * theta;
-    SideContact {
-        s: m.s,
-        y: side.sign * m.y,
-        z: m.rail.z,
-        r: side.wheel().nominal_radius_mm() + side.wheel().profile().eval(m.s)[0],
-        gamma: m.wheel.slope.atan() + phi,
-        rail_u: side.pair.rail.profile_coordinate(m.y).unwrap_or(f64::NAN),
-        rail_tan_gamma: m.rail.slope,
-        wheel_curvature: m.wheel.curvature(),
-        rail_curvature: m.rail.curvature(),
-        second: second.map(|q| (q.s, q.g - m.g)),
+        mirror,
     }
 }

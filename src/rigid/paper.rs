@@ -1,6 +1,7 @@
 //! The paper's roll iteration (its Eqs. 2-5) on the tabulated wheel profile.
 
-use super::{PAPER_MAX_ITER, PAPER_TOL_MM, Position, Stop, finish, no_contact};
+use super::solve::{finish, no_contact};
+use super::{PAPER_MAX_ITER, PAPER_TOL_MM, Position, Stop};
 use crate::gap::{SideGap, SidePose};
 
 pub(super) fn solve_paper(sides: &[SideGap; 2], y_ws: f64) -> Position {

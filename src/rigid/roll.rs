@@ -6,7 +6,8 @@
 //! [`Iteration::step`] moves the roll; the [`Bracket`] is their shared safeguard.
 
 use super::minima::{Scratch, certify_minimum, keep_lowest_known, side_minimum};
-use super::{Position, RollSettings, Stop, finish, no_contact};
+use super::solve::{finish, no_contact};
+use super::{Position, RollSettings, Stop};
 use crate::gap::{GapPoint, SideGap, SidePose};
 
 /// The envelope-theorem slope gives way to the secant of the last two iterates where the

@@ -1,0 +1,145 @@
+//! The sweep driver of the rigid search: which positions are solved, in which order and from
+//! which start (continuation outwards from the centre, the two directions in parallel), which
+//! are mirrored, and the contact-point jumps between them. Each position is solved by the
+//! [`PositionSolver`].
+
+use super::continuation::Continuation;
+use super::jumps::{Refinement, find_jumps};
+use super::minima::Scratch;
+use super::solve::PositionSolver;
+use super::{Jump, Position, Solver};
+use crate::sweep::{Mirror, Sweep};
+
+/// Halves of a sweep shorter than this (positions) run one after the other on a calling
+/// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
+/// and the caller woken) costs about 0.15-0.2 ms, while a position costs 4-5 µs (34 k
+/// instructions for the level wheelset of the EN 15302 scene of `benches/data`, 55 k for
+/// the default solver on the paper scene): a parallel half of 100 positions, 0.4-0.5 ms,
+/// saves about twice what the pool's start costs. Inside a pool (a fleet, several scenes,
+/// the quasi-elastic pass already run) joining costs microseconds and the halves always run
+/// in parallel.
+const PARALLEL_MIN_HALF: usize = 100;
+
+/// The positions of `sweep`, continued outwards from the position nearest the centre,
+/// each direction from the centre's roll `centre_roll`. With `mirror`, only the positions
+/// from the middle on are solved (one direction) and those before it are their mirror
+/// images. The two directions are independent continuations: they run in parallel
+/// (rayon) and give the same results on any number of threads, or one after the other on
+/// the calling thread where starting the pool would cost more ([`PARALLEL_MIN_HALF`]).
+pub(super) fn positions(
+    solve: &PositionSolver,
+    sweep: &Sweep,
+    mirror: Option<Mirror>,
+    centre_roll: f64,
+) -> Vec<Position> {
+    let shifts = sweep.shifts_mm();
+    let n = shifts.len();
+    let start = match mirror {
+        Some(mirror) => mirror.middle(),
+        None => shifts
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+            .map_or(0, |(i, _)| i),
+    };
+    let forward = || continuation(solve, shifts, start..n, centre_roll);
+    let backward = || continuation(solve, shifts, (0..start).rev(), centre_roll);
+    if let Some(mirror) = mirror {
+        return mirror.complete(forward(), |i| shifts[i]);
+    }
+    let in_pool = rayon::current_thread_index().is_some();
+    let (forward, mut backward) = if in_pool || start.min(n - start) >= PARALLEL_MIN_HALF {
+        rayon::join(forward, backward)
+    } else {
+        (forward(), backward())
+    };
+    backward.reverse();
+    backward.extend(forward);
+    backward
+}
+
+/// The positions at `indices` of `shifts`, in that order, each started from the roll the
+/// positions before it predict (and, for the default solver, its contacts' basins where
+/// the continuation predicts the contact points).
+fn continuation(
+    solve: &PositionSolver,
+    shifts: &[f64],
+    indices: impl Iterator<Item = usize>,
+    centre_roll: f64,
+) -> Vec<Position> {
+    let mut scratch = Scratch::default();
+    let mut path = Continuation::new(centre_roll);
+    indices
+        .map(|i| {
+            let y = shifts[i];
+            if let Solver::Default(settings) = solve.solver()
+                && scratch.warm
+            {
+                scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
+            }
+            let p = solve.solve(y, path.predict(y), &mut scratch, None);
+            path.push(&p);
+            p
+        })
+        .collect()
+}
+
+/// The contact-point jumps between neighbouring `positions`, in the windows' order (the
+/// left wheel's first within a window). With `mirror`, the windows from the middle
+/// position on are refined and those before it are their mirror images, in order; the
+/// middle window of an even sweep, its own mirror image, is refined as it is.
+pub(super) fn jumps(
+    solve: &PositionSolver,
+    positions: &[Position],
+    mirror: Option<Mirror>,
+    scratch: &mut Scratch,
+) -> Vec<Jump> {
+    let Some(mirror) = mirror else {
+        return jumps_of(solve, positions, scratch);
+    };
+    let (middle, n) = (mirror.middle(), positions.len());
+    let after = jumps_of(solve, &positions[middle..], scratch);
+    let mut jumps: Vec<Jump> = after.iter().rev().map(Jump::mirrored).collect();
+    if n.is_multiple_of(2) {
+        jumps.extend(jumps_in(solve, &positions[middle - 1..=middle], scratch));
+    }
+    jumps.extend(after);
+    jumps
+}
+
+/// The jumps of the windows of `part`, refined with `scratch`. Each window's refinements
+/// start cold (their results do not depend on what was solved before, only their work does:
+/// the test `a_cold_solve_does_not_depend_on_what_was_solved_before`), so in a pool the two
+/// halves of `part` are refined at once, the second with a state of its own, and their
+/// jumps joined in the windows' order: the jumps of one pass.
+fn jumps_of(solve: &PositionSolver, part: &[Position], scratch: &mut Scratch) -> Vec<Jump> {
+    let in_pool = rayon::current_thread_index().is_some();
+    if !(in_pool && part.len() > 2) {
+        return jumps_in(solve, part, scratch);
+    }
+    let middle = part.len() / 2;
+    let (mut low, high) = rayon::join(
+        || jumps_in(solve, &part[..=middle], scratch),
+        || jumps_in(solve, &part[middle..], &mut Scratch::default()),
+    );
+    low.extend(high);
+    low
+}
+
+/// The jumps of the windows of `part`, refined one after the other with `scratch`.
+fn jumps_in(solve: &PositionSolver, part: &[Position], scratch: &mut Scratch) -> Vec<Jump> {
+    let refinement = Refinement {
+        // The level wheelset's wheels are solved one at a time.
+        separable: *solve.solver() == Solver::NoRoll,
+        // The paper's iteration certifies nothing: its refinements have no certificates
+        // to skip.
+        certifying: *solve.solver() != Solver::Paper,
+    };
+    find_jumps(
+        solve.sides(),
+        part,
+        refinement,
+        scratch,
+        |y, theta0, ask, scratch| solve.solve(y, theta0, scratch, ask.only),
+    )
+}

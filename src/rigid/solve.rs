@@ -1,0 +1,113 @@
+//! The rigid contact at one position: [`PositionSolver`] runs the chosen [`Solver`] on the
+//! two sides' gaps, from a start roll and the state a previous position left (warm basins,
+//! scans, certificates' pose boxes), and returns the position with why it stopped.
+
+use super::level::solve_no_roll;
+use super::minima::Scratch;
+use super::paper::solve_paper;
+use super::roll::solve_default;
+use super::{PAPER_TABLE_STEP_MM, Position, SideContact, Solver, Stop};
+use crate::gap::{GapPoint, SideGap};
+use crate::track::Placement;
+
+/// The per-position solver of a sweep: state in ([`Scratch`]), position out, with its
+/// [`Stop`]. The sweep driver (`driver.rs`) decides the order, the start rolls and what
+/// is mirrored.
+pub(super) struct PositionSolver<'a> {
+    sides: [SideGap<'a>; 2],
+    solver: Solver,
+}
+
+impl<'a> PositionSolver<'a> {
+    /// `solver` on the two sides of `placement` (the paper's on its tabulated wheels).
+    pub(super) fn new(placement: &'a Placement, solver: Solver) -> PositionSolver<'a> {
+        let mut sides = SideGap::both(placement);
+        if solver == Solver::Paper {
+            sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
+        }
+        PositionSolver { sides, solver }
+    }
+
+    /// The two sides' gaps, left then right.
+    pub(super) fn sides(&self) -> &[SideGap<'a>; 2] {
+        &self.sides
+    }
+
+    /// The solver.
+    pub(super) fn solver(&self) -> &Solver {
+        &self.solver
+    }
+
+    /// The position at the shift `y_ws` from the start roll `theta0` (the roll solvers),
+    /// reading and leaving the state in `scratch`; `only = Some(k)`: wheel `k` alone, where
+    /// the wheels do not interact (the level wheelset, see `level.rs`).
+    pub(super) fn solve(
+        &self,
+        y_ws: f64,
+        theta0: f64,
+        scratch: &mut Scratch,
+        only: Option<usize>,
+    ) -> Position {
+        match &self.solver {
+            Solver::Default(settings) => {
+                solve_default(&self.sides, settings, y_ws, theta0, scratch)
+            }
+            Solver::Paper => solve_paper(&self.sides, y_ws),
+            Solver::NoRoll => solve_no_roll(&self.sides, y_ws, scratch, only),
+        }
+    }
+}
+
+pub(super) fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> Position {
+    Position {
+        y_ws,
+        roll: theta,
+        axle_height: f64::NAN,
+        contact: [None, None],
+        iterations,
+        stop: Stop::NoContact,
+        residual: f64::NAN,
+    }
+}
+
+pub(super) fn finish(
+    sides: &[SideGap; 2],
+    y_ws: f64,
+    theta: f64,
+    mins: [(GapPoint, Option<GapPoint>); 2],
+    iterations: usize,
+    residual: f64,
+) -> Position {
+    // Both minimum gaps are (nearly) equal; the axle height closes the mean of them.
+    let axle_height = -0.5 * (mins[0].0.g + mins[1].0.g);
+    Position {
+        y_ws,
+        roll: theta,
+        axle_height,
+        contact: [0, 1].map(|k| Some(side_contact(&sides[k], theta, mins[k]))),
+        iterations,
+        stop: Stop::Converged,
+        residual: residual.abs(),
+    }
+}
+
+/// The contact of one wheel at its minimum gap `m` (with a second minimum) at roll `theta`.
+pub(super) fn side_contact(
+    side: &SideGap,
+    theta: f64,
+    (m, second): (GapPoint, Option<GapPoint>),
+) -> SideContact {
+    let phi = side.sign * theta;
+    SideContact {
+        s: m.s,
+        y: side.sign * m.y,
+        z: m.rail.z,
+        r: side.wheel().nominal_radius_mm() + side.wheel().profile().eval(m.s)[0],
+        gamma: m.wheel.slope.atan() + phi,
+        rail_u: side.pair.rail.profile_coordinate(m.y).unwrap_or(f64::NAN),
+        rail_tan_gamma: m.rail.slope,
+        wheel_curvature: m.wheel.curvature(),
+        rail_curvature: m.rail.curvature(),
+        second: second.map(|q| (q.s, q.g - m.g)),
+    }
+}
