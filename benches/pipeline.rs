@@ -31,9 +31,17 @@ fn placement() -> &'static Placement {
     P.get_or_init(|| pipeline::place(scene()).unwrap())
 }
 
-fn rigid_sweep() -> &'static RigidSweep {
-    static R: OnceLock<RigidSweep> = OnceLock::new();
-    R.get_or_init(|| rigid::search(placement(), scene().sweep(), Solver::default()))
+/// The rigid sweep the quasi-elastic benchmarks average around, shared (as a pipeline
+/// shares it with its quasi-elastic results: no copy per run).
+fn rigid_sweep() -> &'static Arc<RigidSweep> {
+    static R: OnceLock<Arc<RigidSweep>> = OnceLock::new();
+    R.get_or_init(|| {
+        Arc::new(rigid::search(
+            placement(),
+            scene().sweep(),
+            Solver::default(),
+        ))
+    })
 }
 
 /// The paper placement with the mirror switched off: every position of a sweep is solved
@@ -45,7 +53,13 @@ fn placement_unmirrored() -> &'static Placement {
 
 fn quasi_elastic_sweep() -> &'static QuasiElasticSweep {
     static Q: OnceLock<QuasiElasticSweep> = OnceLock::new();
-    Q.get_or_init(|| quasi_elastic::search(placement(), rigid_sweep(), scene().quasi_elastic()))
+    Q.get_or_init(|| {
+        quasi_elastic::search(
+            placement(),
+            Arc::clone(rigid_sweep()),
+            scene().quasi_elastic(),
+        )
+    })
 }
 
 /// Step at which the sampled benchmarks sample the built-in profiles (mm), as the tradeoff
@@ -180,7 +194,7 @@ fn rigid_paper() -> RigidSweep {
 fn quasi_elastic() -> QuasiElasticSweep {
     quasi_elastic::search(
         black_box(placement()),
-        rigid_sweep(),
+        Arc::clone(rigid_sweep()),
         scene().quasi_elastic(),
     )
 }
@@ -191,23 +205,18 @@ fn quasi_elastic() -> QuasiElasticSweep {
 fn quasi_elastic_unmirrored() -> QuasiElasticSweep {
     quasi_elastic::search(
         black_box(placement_unmirrored()),
-        rigid_sweep(),
+        Arc::clone(rigid_sweep()),
         scene().quasi_elastic(),
     )
 }
 
 /// Hertz ellipses over the sweep, from the quasi-elastic contacts (the scene's default).
 #[divan::bench]
-fn hertz_sweep() -> Vec<hertz::sweep::Position> {
+fn hertz_sweep() -> hertz::sweep::HertzSweep {
     let s = scene();
     let e_star = hertz::effective_modulus(s.wheel_material(), s.rail_material());
-    hertz::sweep::sweep(
-        black_box(rigid_sweep()),
-        Some(quasi_elastic_sweep()),
-        s.wheel_load_n(),
-        e_star,
-        s.hertz(),
-    )
+    let contacts = hertz::sweep::Contacts::QuasiElastic(black_box(quasi_elastic_sweep()));
+    hertz::sweep::sweep(contacts, s.wheel_load_n(), e_star, s.hertz())
 }
 
 /// Positions from -15 to 15 mm, `n` of them: the sweep-length scaling of the rigid sweep
@@ -229,9 +238,11 @@ fn rigid_positions(bencher: divan::Bencher, n: usize) {
 /// The quasi-elastic pass over rigid sweeps of 31, 301 and 3001 positions.
 #[divan::bench(args = [31, 301, 3001])]
 fn quasi_elastic_positions(bencher: divan::Bencher, n: usize) {
-    let rigid = rigid::search(placement(), &sweep_of(n), Solver::default());
-    bencher
-        .bench(|| quasi_elastic::search(black_box(placement()), &rigid, scene().quasi_elastic()));
+    let rigid = Arc::new(rigid::search(placement(), &sweep_of(n), Solver::default()));
+    bencher.bench(|| {
+        let rigid = Arc::clone(&rigid);
+        quasi_elastic::search(black_box(placement()), rigid, scene().quasi_elastic())
+    });
 }
 
 /// The machine's clock during the run, to turn the other medians into cycles: a chain of

@@ -35,10 +35,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         // The quasi-elastic pass only where the scene's outputs need it, as a report runs.
         let needs_quasi = pipeline::needed_stages(scene).contains(&Stage::QuasiElastic);
         if needs_quasi {
-            quasi_elastic::search(&placement, &rigid, scene.quasi_elastic());
+            quasi_elastic::search(&placement, rigid.clone(), scene.quasi_elastic());
         }
         let averaged = counters::take();
-        let n = rigid.positions.len();
+        let n = rigid.positions().len();
         println!("{label}: {n} positions, both wheels");
         println!(
             "  {:<14} {:>10} {:>10} {:>8} {:>8} {:>8}   per position: coarse, exact",

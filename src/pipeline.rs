@@ -69,14 +69,14 @@ pub struct EpsilonSweeps {
 pub struct Results {
     /// Profiles placed on the track (always computed).
     pub placement: Placement,
-    /// Rigid contact over the sweep.
-    pub rigid: Option<RigidSweep>,
+    /// Rigid contact over the sweep (shared with the quasi-elastic results computed on it).
+    pub rigid: Option<Arc<RigidSweep>>,
     /// Quasi-elastic contact over the sweep.
     pub quasi_elastic: Option<QuasiElasticSweep>,
     /// Quasi-elastic contact for the sensitivity values of eps.
     pub epsilon: Option<EpsilonSweeps>,
     /// Hertz ellipses over the sweep.
-    pub hertz: Option<Vec<hertz::sweep::Position>>,
+    pub hertz: Option<hertz::sweep::HertzSweep>,
     /// Equivalent conicity and the pair's parameters.
     pub conicity: Option<conicity::PairConicity>,
     /// Accuracy of the paper's Hertz numerics.
@@ -102,7 +102,7 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
     while let Some(s) = wanted.pop() {
         if closed.insert(s) {
             wanted.extend_from_slice(s.requires());
-            if s == Stage::Hertz && scene.hertz.source == hertz::sweep::ContactSource::QuasiElastic
+            if s == Stage::Hertz && scene.hertz_contact == hertz::sweep::ContactSource::QuasiElastic
             {
                 wanted.push(Stage::QuasiElastic);
             }
@@ -130,7 +130,7 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
 /// .unwrap();
 /// let results = pipeline::run(&scene).unwrap();
 /// let hertz = results.hertz.unwrap(); // semi_axes draws the Hertz stage
-/// assert_eq!(hertz.len(), 3);
+/// assert_eq!(hertz.positions().len(), 3);
 /// assert!(results.conicity.is_none()); // not needed by the figures
 /// ```
 pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
@@ -193,7 +193,7 @@ fn run_placed(
 /// let scene = Scene::from_toml("[sweep]\nfrom_mm = 0.0\nto_mm = 2.0\nstep_mm = 1.0", "doc", ".".as_ref()).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
 /// let results = pipeline::run_on(&scene, placement, &[Stage::Rigid]);
-/// assert_eq!(results.rigid.unwrap().positions.len(), 3);
+/// assert_eq!(results.rigid.unwrap().positions().len(), 3);
 /// assert!(results.quasi_elastic.is_none());
 /// ```
 pub fn run_on(scene: &Scene, placement: Placement, stages: &[Stage]) -> Results {
@@ -230,7 +230,7 @@ fn run_recorded(
                 let r = record.time(stage, || {
                     rigid::search(&results.placement, &scene.sweep, scene.rigid_solver)
                 });
-                results.rigid = Some(r);
+                results.rigid = Some(Arc::new(r));
             }
             Stage::QuasiElastic => {
                 let rigid = results
@@ -238,6 +238,7 @@ fn run_recorded(
                     .as_ref()
                     .expect("rigid runs before quasi-elastic");
                 let q = record.time(stage, || {
+                    let rigid = Arc::clone(rigid);
                     quasi_elastic::search(&results.placement, rigid, &scene.quasi_elastic)
                 });
                 results.quasi_elastic = Some(q);
@@ -256,26 +257,29 @@ fn run_recorded(
                                 epsilon_mm: eps,
                                 ..scene.quasi_elastic
                             };
-                            (
-                                eps,
-                                quasi_elastic::search(&results.placement, rigid, &settings),
-                            )
+                            let rigid = Arc::clone(rigid);
+                            let q = quasi_elastic::search(&results.placement, rigid, &settings);
+                            (eps, q)
                         })
                         .collect(),
                 });
                 results.epsilon = Some(e);
             }
             Stage::Hertz => {
-                let rigid = results.rigid.as_ref().expect("rigid runs before Hertz");
+                let contacts = match scene.hertz_contact {
+                    hertz::sweep::ContactSource::Rigid => {
+                        let rigid = results.rigid.as_ref().expect("rigid runs before Hertz");
+                        hertz::sweep::Contacts::Rigid(rigid)
+                    }
+                    hertz::sweep::ContactSource::QuasiElastic => {
+                        let qe = results.quasi_elastic.as_ref();
+                        hertz::sweep::Contacts::QuasiElastic(qe.expect("its contacts run first"))
+                    }
+                };
                 let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
                 let h = record.time(stage, || {
-                    hertz::sweep::sweep(
-                        rigid,
-                        results.quasi_elastic.as_ref(),
-                        scene.wheel_load_n,
-                        e_star,
-                        &scene.hertz,
-                    )
+                    let load = scene.wheel_load_n;
+                    hertz::sweep::sweep(contacts, load, e_star, &scene.hertz)
                 });
                 results.hertz = Some(h);
             }

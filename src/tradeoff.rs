@@ -19,6 +19,7 @@ use crate::rigid::{RigidSweep, Solver, Stop};
 use crate::rng::SplitMix64;
 use crate::scene::{ProfileRef, Scene};
 use crate::track::{Placement, SidePair};
+use std::sync::Arc;
 use std::time::Instant;
 
 /// One combination of numerical settings.
@@ -174,9 +175,9 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
 
 /// What one run of a setting produces.
 struct Run {
-    rigid: RigidSweep,
+    rigid: Arc<RigidSweep>,
     quasi_elastic: QuasiElasticSweep,
-    hertz: Vec<hertz::sweep::Position>,
+    hertz: hertz::sweep::HertzSweep,
 }
 
 /// The scene with `setting`'s numerical choices in place of its own.
@@ -329,18 +330,23 @@ fn errors(reference: &Run, run: &Run) -> Errors {
     let mut e = Errors::default();
     let step = reference
         .rigid
-        .positions
+        .positions()
         .windows(2)
         .map(|w| w[1].y_ws - w[0].y_ws)
         .fold(0.0, f64::max);
     let near_jump = |y: f64| {
         reference
             .rigid
-            .jumps
+            .jumps()
             .iter()
             .any(|j| (y - j.y_from).abs() <= step + 1e-9)
     };
-    for (a, b) in reference.rigid.positions.iter().zip(&run.rigid.positions) {
+    for (a, b) in reference
+        .rigid
+        .positions()
+        .iter()
+        .zip(run.rigid.positions())
+    {
         if a.stop != Stop::Converged || b.stop != Stop::Converged {
             continue;
         }
@@ -359,9 +365,9 @@ fn errors(reference: &Run, run: &Run) -> Errors {
     };
     for (a, b) in reference
         .quasi_elastic
-        .positions
+        .positions()
         .iter()
-        .zip(&run.quasi_elastic.positions)
+        .zip(run.quasi_elastic.positions())
     {
         for k in 0..2 {
             if !a.sides[k].patches.is_empty() && !b.sides[k].patches.is_empty() {
@@ -371,7 +377,12 @@ fn errors(reference: &Run, run: &Run) -> Errors {
             }
         }
     }
-    for (a, b) in reference.hertz.iter().zip(&run.hertz) {
+    for (a, b) in reference
+        .hertz
+        .positions()
+        .iter()
+        .zip(run.hertz.positions())
+    {
         for k in 0..2 {
             let ea = a.sides[k].ellipse();
             let eb = b.sides[k].ellipse();

@@ -126,7 +126,7 @@ fn reference_profiles_reproduce_annex_e_and_f() {
         // tabulated point lies on).
         let near_jump = |y: f64| {
             rigid
-                .jumps
+                .jumps()
                 .iter()
                 .any(|j| (y - j.y_from).abs() <= 0.3 || (y - j.y_to).abs() <= 0.3)
         };
@@ -165,7 +165,7 @@ fn reference_profiles_reproduce_annex_e_and_f() {
         }
         println!(
             "{case} (profiles, roll none): Δr worst |d| = {worst:.3} mm at {worst_at} mm over {n} points with |y| <= 5 mm away from {} jumps; tan γe{line}",
-            rigid.jumps.len()
+            rigid.jumps().len()
         );
     }
 }

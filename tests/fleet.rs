@@ -676,7 +676,7 @@ fn two_minima_in_one_bracket_of_a_generated_wheel_converge() {
         scene.sweep(),
         wheelrail::rigid::Solver::default(),
     );
-    for p in &sweep.positions {
+    for p in sweep.positions() {
         assert_eq!(
             p.stop,
             wheelrail::stop::Stop::Converged,

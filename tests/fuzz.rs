@@ -460,7 +460,7 @@ fn run_scene(scene: &Scene) {
         &Sweep::from_slice(&ys).unwrap(),
         scene.rigid_solver(),
     );
-    for p in &sweep.positions {
+    for p in sweep.positions() {
         if p.stop == Stop::Converged {
             assert!(p.roll.is_finite() && p.axle_height.is_finite(), "{p:?}");
             assert!(

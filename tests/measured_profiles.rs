@@ -107,9 +107,9 @@ fn check(placement: &Placement, name: &str) -> usize {
         &Sweep::from_slice(&ys).unwrap(),
         Solver::default(),
     );
-    let qe = quasi_elastic::search(placement, &sweep, &Settings::default());
+    let qe = quasi_elastic::search(placement, sweep.clone(), &Settings::default());
     let mut converged = 0;
-    for (pos, q) in sweep.positions.iter().zip(&qe.positions) {
+    for (pos, q) in sweep.positions().iter().zip(qe.positions()) {
         if pos.stop != Stop::Converged {
             continue;
         }

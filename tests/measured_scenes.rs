@@ -95,14 +95,9 @@ fn quasi_elastic_on_measured_profiles_is_converged() {
     let rigid = wheelrail::rigid::search(&placement, scene.sweep(), Default::default());
     let e_star = hertz::effective_modulus(scene.wheel_material(), scene.rail_material());
     let run = |settings: &Settings| {
-        let qe = quasi_elastic::search(&placement, &rigid, settings);
-        let h = hertz::sweep::sweep(
-            &rigid,
-            Some(&qe),
-            scene.wheel_load_n(),
-            e_star,
-            scene.hertz(),
-        );
+        let qe = quasi_elastic::search(&placement, rigid.clone(), settings);
+        let contacts = hertz::sweep::Contacts::QuasiElastic(&qe);
+        let h = hertz::sweep::sweep(contacts, scene.wheel_load_n(), e_star, scene.hertz());
         (qe, h)
     };
     let (qe, default) = run(scene.quasi_elastic());
@@ -113,7 +108,7 @@ fn quasi_elastic_on_measured_profiles_is_converged() {
         .unwrap();
     let (qe_ref, reference) = run(&reference_settings);
     let mut compared = 0;
-    for (d, r) in default.iter().zip(&reference) {
+    for (d, r) in default.positions().iter().zip(reference.positions()) {
         for k in 0..2 {
             let (Some(x), Some(y)) = (d.sides[k].ellipse(), r.sides[k].ellipse()) else {
                 continue;
@@ -130,7 +125,7 @@ fn quasi_elastic_on_measured_profiles_is_converged() {
     }
     assert!(compared > 400, "{compared} ellipses compared");
     // The averaged quantities themselves (the rail curvature is the most sensitive).
-    for (d, r) in qe.positions.iter().zip(&qe_ref.positions) {
+    for (d, r) in qe.positions().iter().zip(qe_ref.positions()) {
         for k in 0..2 {
             let (Some(x), Some(y)) = (d.sides[k].main(), r.sides[k].main()) else {
                 continue;

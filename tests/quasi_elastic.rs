@@ -97,13 +97,13 @@ fn cutoff_changes_nothing_at_output_precision() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let a = quasi_elastic::search(placement(), &r, &Settings::default());
+    let a = quasi_elastic::search(placement(), r.clone(), &Settings::default());
     let b = quasi_elastic::search(
         placement(),
-        &r,
+        r.clone(),
         &Settings::default().with_cutoff(60.0).unwrap(),
     );
-    for (p, q) in a.positions.iter().zip(&b.positions) {
+    for (p, q) in a.positions().iter().zip(b.positions()) {
         for side in [Side::Left, Side::Right] {
             let (x, y) = (p.side(side).main().unwrap(), q.side(side).main().unwrap());
             assert!(
@@ -132,10 +132,10 @@ fn converges_to_rigid_as_eps_decreases() {
     let errs: Vec<f64> = [0.01, 0.001, 0.0001]
         .iter()
         .map(|&e| {
-            let q = quasi_elastic::search(placement(), &r, &eps(e));
-            r.positions
+            let q = quasi_elastic::search(placement(), r.clone(), &eps(e));
+            r.positions()
                 .iter()
-                .zip(&q.positions)
+                .zip(q.positions())
                 .flat_map(|(rp, qp)| {
                     [Side::Left, Side::Right].map(|side| {
                         (rp.side(side).unwrap().s - qp.side(side).main().unwrap().s).abs()
@@ -167,14 +167,14 @@ fn smooths_the_rigid_jumps() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let q = quasi_elastic::search(placement(), &r, &Settings::default());
+    let q = quasi_elastic::search(placement(), r.clone(), &Settings::default());
     let mut rigid_max: f64 = 0.0;
-    for (a, b) in r.positions.iter().zip(&r.positions[1..]) {
+    for (a, b) in r.positions().iter().zip(&r.positions()[1..]) {
         rigid_max =
             rigid_max.max((a.side(Side::Left).unwrap().s - b.side(Side::Left).unwrap().s).abs());
     }
     let mut qe_max: f64 = 0.0;
-    for (a, b) in q.positions.iter().zip(&q.positions[1..]) {
+    for (a, b) in q.positions().iter().zip(&q.positions()[1..]) {
         for (x, z) in [(a, b), (b, a)] {
             for p in x
                 .side(Side::Left)
@@ -206,8 +206,8 @@ proptest! {
         // Both shifts solved and averaged: a mirror-symmetric placement would mirror them.
         let unmirrored = placement().clone().without_mirroring();
         let r = rigid::search(&unmirrored, &Sweep::from_slice(&[-y, y]).unwrap(), Solver::default());
-        let q = quasi_elastic::search(&unmirrored, &r, &Settings::default());
-        let (m, p) = (&q.positions[0], &q.positions[1]);
+        let q = quasi_elastic::search(&unmirrored, r.clone(), &Settings::default());
+        let (m, p) = (&q.positions()[0], &q.positions()[1]);
         let pairs = [(m.side(Side::Left), p.side(Side::Right)), (m.side(Side::Right), p.side(Side::Left))];
         for (a, b) in pairs {
             prop_assert_eq!(a.patches.len(), b.patches.len());
@@ -236,10 +236,10 @@ fn weight_shares_match_an_independent_integration() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let q = quasi_elastic::search(placement(), &r, &Settings::default());
+    let q = quasi_elastic::search(placement(), r.clone(), &Settings::default());
     let side = SideGap::new(placement().left(), 1.0);
     let mut checked = 0;
-    for (rp, qp) in r.positions.iter().zip(&q.positions) {
+    for (rp, qp) in r.positions().iter().zip(q.positions()) {
         let patches = &qp.side(Side::Left).patches;
         if patches.len() != 2 {
             continue;

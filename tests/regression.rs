@@ -35,8 +35,8 @@ fn quasi_elastic_regions_share_the_rigid_minimum() {
     );
     for eps in [1e-3, 3e-3] {
         let settings = Settings::default().with_epsilon(eps).unwrap();
-        let qe = quasi_elastic::search(&placement, &rigid, &settings);
-        for (p, q) in rigid.positions.iter().zip(&qe.positions) {
+        let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
+        for (p, q) in rigid.positions().iter().zip(qe.positions()) {
             assert_eq!(p.stop, Stop::Converged);
             for side in [Side::Left, Side::Right] {
                 let patches = &q.side(side).patches;
@@ -92,8 +92,8 @@ fn s1002_end_of_definition_has_finite_derivatives() {
         Solver::default(),
     );
     let settings = Settings::default().with_epsilon(1.0).unwrap();
-    let qe = quasi_elastic::search(&placement, &rigid, &settings);
-    for q in &qe.positions {
+    let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
+    for q in qe.positions() {
         for side in [Side::Left, Side::Right] {
             for p in &q.side(side).patches {
                 assert!(
@@ -126,12 +126,12 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
     );
     for eps in [1e-5, 1e-4] {
         let settings = Settings::default().with_epsilon(eps).unwrap();
-        let qe = quasi_elastic::search(&placement, &rigid, &settings);
+        let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
         // The invariant guarded here: a converged rigid contact has a quasi-elastic patch.
         // (With these absurd radii, roll 0.19 rad, the rigid search may also flag a position
         // as NoContact; flagged positions are checked elsewhere.)
         let mut converged = 0;
-        for (p, q) in rigid.positions.iter().zip(&qe.positions) {
+        for (p, q) in rigid.positions().iter().zip(qe.positions()) {
             if p.stop != Stop::Converged {
                 continue;
             }
@@ -205,9 +205,9 @@ fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
         Solver::default(),
     );
     let settings = Settings::default().with_epsilon(1e-5).unwrap();
-    let qe = quasi_elastic::search(&placement, &rigid, &settings);
+    let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
     let mut checked = 0;
-    for (p, q) in rigid.positions.iter().zip(&qe.positions) {
+    for (p, q) in rigid.positions().iter().zip(qe.positions()) {
         if p.stop != Stop::Converged {
             continue;
         }
@@ -249,13 +249,13 @@ fn rigid_converges_at_a_contact_on_the_end_of_the_rail_surface() {
         Solver::default(),
     );
     let at = r
-        .positions
+        .positions()
         .iter()
         .find(|p| (p.y_ws + 8.4).abs() < 1e-12)
         .unwrap();
     assert_eq!(at.stop, Stop::Converged, "{at:?}");
     assert!(at.residual <= rigid::RollSettings::default().residual_tol_mm);
-    for p in &r.positions {
+    for p in r.positions() {
         assert_eq!(p.stop, Stop::Converged, "y_ws {}: {:?}", p.y_ws, p.stop);
     }
 }

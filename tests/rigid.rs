@@ -77,7 +77,7 @@ fn every_position_converges_touches_and_does_not_penetrate() {
     // sampled wheel lies within 0.005 mm of the contact point, where the gap grows at most
     // quadratically: 1/2 * 0.2 1/mm * 0.005^2 = 2.5e-6 mm; flank contact with a slope
     // mismatch makes it linear: 0.005 mm * 3 = 0.015 mm).
-    for pos in &paper_sweep(Solver::default()).positions {
+    for pos in paper_sweep(Solver::default()).positions() {
         assert_eq!(pos.stop, Stop::Converged, "y_ws = {}", pos.y_ws);
         assert!(
             pos.residual <= 1e-9,
@@ -108,7 +108,7 @@ fn paper_solver_touches_within_its_tolerance() {
     // Z'' = kappa (1 + tan^2 gamma)^1.5: 1e-4 mm on the crown, but 1/13 * 25 * 0.01 / 8 =
     // 2.4e-3 mm on the 70 degree flank. Over its own table points, evaluated exactly, the
     // gaps therefore lie within 3e-3 mm of zero: a measured property of the method.
-    for pos in &paper_sweep(Solver::Paper).positions {
+    for pos in paper_sweep(Solver::Paper).positions() {
         assert_eq!(pos.stop, Stop::Converged, "y_ws = {}", pos.y_ws);
         for side in [Side::Left, Side::Right] {
             let g = min_gap(side, pos, 0.1);
@@ -183,7 +183,7 @@ fn default_solver_agrees_with_brute_force() {
         &Sweep::from_slice(&shifts).unwrap(),
         Solver::default(),
     );
-    for pos in &solved.positions {
+    for pos in solved.positions() {
         let (roll, s) = brute_force(pos.y_ws);
         assert!(
             (pos.roll - roll).abs() < 1e-9,
@@ -208,7 +208,7 @@ fn default_solver_agrees_with_brute_force() {
 fn known_features_of_s1002_on_uic60_at_1_in_40() {
     let sweep = paper_sweep(Solver::default());
     let left_jumps: Vec<_> = sweep
-        .jumps
+        .jumps()
         .iter()
         .filter(|j| j.side == Side::Left)
         .collect();
@@ -225,12 +225,12 @@ fn known_features_of_s1002_on_uic60_at_1_in_40() {
         "{left_jumps:?}"
     );
     // Jumps are refined to 1e-4 mm.
-    for j in &sweep.jumps {
+    for j in sweep.jumps() {
         assert!(j.y_to - j.y_from <= 1.0001e-4, "{j:?}");
     }
     // Flange contact (left contact angle above 1.1 rad) starts between 6 and 7 mm ...
     let onset = sweep
-        .positions
+        .positions()
         .iter()
         .find(|p| p.side(Side::Left).unwrap().gamma > 1.1)
         .expect("flange contact within the sweep");
@@ -239,7 +239,7 @@ fn known_features_of_s1002_on_uic60_at_1_in_40() {
     let dr = |p: &rigid::Position| p.side(Side::Left).unwrap().r - p.side(Side::Right).unwrap().r;
     assert!(
         sweep
-            .positions
+            .positions()
             .iter()
             .any(|p| p.y_ws <= onset.y_ws + 0.5 && dr(p) > 10.0),
         "delta_r stays below 10 mm after onset"
@@ -247,7 +247,7 @@ fn known_features_of_s1002_on_uic60_at_1_in_40() {
     // Below the onset the roll is at most 1e-3 rad; beyond it, an order of magnitude more.
     let roll_at = |y: f64| {
         sweep
-            .positions
+            .positions()
             .iter()
             .find(|p| (p.y_ws - y).abs() < 1e-9)
             .unwrap()
@@ -263,10 +263,10 @@ fn paper_solver_error_against_default_is_bounded() {
     // plus the motion its 1e-4 mm residual allows; roll error below 1e-6 rad.
     let d = paper_sweep(Solver::default());
     let p = paper_sweep(Solver::Paper);
-    let near_jump = |y: f64| d.jumps.iter().any(|j| (y - j.y_from).abs() < 0.15);
+    let near_jump = |y: f64| d.jumps().iter().any(|j| (y - j.y_from).abs() < 0.15);
     let mut worst_s: f64 = 0.0;
     let mut worst_roll: f64 = 0.0;
-    for (a, b) in d.positions.iter().zip(&p.positions) {
+    for (a, b) in d.positions().iter().zip(p.positions()) {
         if near_jump(a.y_ws) {
             continue;
         }
@@ -307,7 +307,7 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
         &Sweep::from_slice(&[-y, y]).unwrap(),
         Solver::default(),
     );
-    let (m, p) = (&s.positions[0], &s.positions[1]);
+    let (m, p) = (&s.positions()[0], &s.positions()[1]);
     let d_roll = (m.roll + p.roll).abs();
     prop_assert!(d_roll < 1e-9);
     prop_assert!((m.axle_height - p.axle_height).abs() < 1e-9);
@@ -394,10 +394,10 @@ fn contact_positions_converge_with_profile_resolution() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let near_jump = |y: f64| exact.jumps.iter().any(|j| (y - j.y_from).abs() < 0.3);
+    let near_jump = |y: f64| exact.jumps().iter().any(|j| (y - j.y_from).abs() < 0.3);
     let mut worst_s: f64 = 0.0;
     let mut worst_roll: f64 = 0.0;
-    for (a, b) in exact.positions.iter().zip(&resampled.positions) {
+    for (a, b) in exact.positions().iter().zip(resampled.positions()) {
         assert_eq!(b.stop, Stop::Converged, "y_ws = {}", b.y_ws);
         if near_jump(a.y_ws) {
             continue;

@@ -64,9 +64,9 @@ fn trapezoid_search_with_the_largest_step_terminates() {
         max_step_mm: wheelrail::quasi_elastic::TRAPEZOID_STEP_RANGE_MM.1,
     };
     let settings = Settings::default().with_quadrature(largest).unwrap();
-    let q = quasi_elastic::search(&placement, &rigid, &settings);
-    assert_eq!(q.positions.len(), 5);
-    for p in &q.positions {
+    let q = quasi_elastic::search(&placement, rigid.clone(), &settings);
+    assert_eq!(q.positions().len(), 5);
+    for p in q.positions() {
         for side in &p.sides {
             let c = side.main().expect("a patch on the tread");
             assert!(c.is_finite(), "{c:?}");

@@ -390,7 +390,7 @@ fn gaps(placement: &Placement, side: Side, pos: &Position, step: f64) -> Vec<(f6
 /// Every position finite and plausible or flagged; returns the number converged.
 fn check_rigid(placement: &Placement, sweep: &RigidSweep, context: &str) -> usize {
     let mut converged = 0;
-    for pos in &sweep.positions {
+    for pos in sweep.positions() {
         let at = format!("{context}, y_ws = {}", pos.y_ws);
         if pos.stop != Stop::Converged {
             continue;
@@ -450,9 +450,9 @@ fn check_quasi_elastic(
     settings: &Settings,
     context: &str,
 ) {
-    let qe = quasi_elastic::search(placement, sweep, settings);
-    assert_eq!(qe.positions.len(), sweep.positions.len());
-    for (pos, q) in sweep.positions.iter().zip(&qe.positions) {
+    let qe = quasi_elastic::search(placement, sweep.clone(), settings);
+    assert_eq!(qe.positions().len(), sweep.positions().len());
+    for (pos, q) in sweep.positions().iter().zip(qe.positions()) {
         let at = format!(
             "{context}, eps = {} mm, y_ws = {}",
             settings.epsilon_mm(),
@@ -528,7 +528,7 @@ fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSw
         &Sweep::from_slice(ys).unwrap(),
         Solver::default(),
     );
-    assert_eq!(sweep.positions.len(), ys.len(), "{context}");
+    assert_eq!(sweep.positions().len(), ys.len(), "{context}");
     check_rigid(placement, &sweep, context);
     let settings = Settings::default()
         .with_epsilon(eps_mm)
@@ -542,7 +542,7 @@ fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSw
 const MUST_CONVERGE_MM: f64 = 5.0;
 
 fn assert_converges_near_centre(sweep: &RigidSweep, context: &str) {
-    for p in &sweep.positions {
+    for p in sweep.positions() {
         if p.y_ws.abs() <= MUST_CONVERGE_MM {
             assert_eq!(p.stop, Stop::Converged, "{context}, y_ws = {}", p.y_ws);
         }
@@ -553,9 +553,13 @@ fn assert_converges_near_centre(sweep: &RigidSweep, context: &str) {
 /// Positions with a second contact within the two-point tolerance, or next to a contact
 /// jump, are skipped: there the last digits decide which of two equal minima is reported.
 fn assert_mirror(a: &RigidSweep, b: &RigidSweep, context: &str) {
-    let near_jump = |s: &RigidSweep, y: f64| s.jumps.iter().any(|j| (j.y_from - y).abs() < 0.6);
-    for pa in &a.positions {
-        let Some(pb) = b.positions.iter().find(|p| (p.y_ws + pa.y_ws).abs() < 1e-9) else {
+    let near_jump = |s: &RigidSweep, y: f64| s.jumps().iter().any(|j| (j.y_from - y).abs() < 0.6);
+    for pa in a.positions() {
+        let Some(pb) = b
+            .positions()
+            .iter()
+            .find(|p| (p.y_ws + pa.y_ws).abs() < 1e-9)
+        else {
             continue;
         };
         let at = format!("{context}, y_ws = {}", pa.y_ws);
@@ -799,7 +803,7 @@ proptest! {
         // With very unequal radii the axle tilts by up to 0.2 rad and the wheels reach
         // further; real wheelsets differ by millimetres.
         let realistic = (left_r - right_r).abs() <= 20.0;
-        for p in lr.positions.iter().chain(&rl.positions) {
+        for p in lr.positions().iter().chain(rl.positions()) {
             if realistic && p.y_ws.abs() >= 95.0 {
                 prop_assert_eq!(p.stop, Stop::NoContact, "{}, y_ws = {}", context, p.y_ws);
             }
@@ -821,7 +825,7 @@ proptest! {
         let eps = 10f64.powf(eps_log);
         let ys = [-12.0, -6.5, -3.0, -0.4, 0.0, 0.4, 3.0, 6.5, 12.0];
         let sweep = run(&placement, &ys, eps, &format!("nominal, {incl}"));
-        assert!(sweep.positions.iter().all(|p| p.stop == Stop::Converged));
+        assert!(sweep.positions().iter().all(|p| p.stop == Stop::Converged));
     }
 }
 
@@ -861,7 +865,7 @@ fn rail_listed_backwards_shifted_or_mirrored_gives_the_same_solution() {
         ("mirrored", mirrored),
     ] {
         let got = solve(from_csv(ProfileKind::Rail, &copy, 0.0, "copy.csv"));
-        for (a, b) in want.positions.iter().zip(&got.positions) {
+        for (a, b) in want.positions().iter().zip(got.positions()) {
             assert_eq!(a.stop, b.stop, "{name}, y_ws = {}", a.y_ws);
             if a.stop != Stop::Converged {
                 continue;

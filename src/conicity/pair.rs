@@ -198,11 +198,11 @@ impl PairConicity {
 /// jump as a discontinuity in the middle of its refined interval (values from its ends).
 pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     let mut points: Vec<(f64, f64)> = sweep
-        .positions
+        .positions()
         .iter()
         .map(|p| (p.y_ws, p.delta_r()))
         .collect();
-    for j in &sweep.jumps {
+    for j in sweep.jumps() {
         let mid = 0.5 * (j.y_from + j.y_to);
         // Drop sweep positions inside the refined interval (none on a sweep coarser than
         // 1e-4 mm), then insert the discontinuity.
@@ -216,11 +216,12 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
         // Two jumps in one refined interval would repeat a y three times: keep the sweep
         // positions only (the jumps' effect is then that of linear interpolation).
         let (y, dr) = sweep
-            .positions
+            .positions()
             .iter()
             .map(|p| (p.y_ws, p.delta_r()))
             .unzip();
-        DeltaR::with_jumps(y, dr).expect("sweep positions increase")
+        // A rigid sweep's shifts are a `Sweep`'s: finite and strictly increasing.
+        DeltaR::with_jumps(y, dr).expect("a sweep's shifts increase strictly")
     })
 }
 
@@ -289,7 +290,7 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Para
         equilibrium_mm: at.equilibrium_mm,
         flange_contact_left_mm: sweep.flange_contact_mm(Side::Left),
         flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
-        contact_point_jumps: sweep.jumps.len(),
+        contact_point_jumps: sweep.jumps().len(),
         delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
         contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| {
             interpolate(sweep, y, |p| {
@@ -302,7 +303,7 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Para
 /// `f` at shift `y`, linear between the neighbouring positions (the position itself when
 /// the sweep holds `y`); NaN outside the sweep.
 fn interpolate(sweep: &RigidSweep, y: f64, f: impl Fn(&Position) -> f64) -> f64 {
-    let p = &sweep.positions;
+    let p = &sweep.positions();
     let i = p.partition_point(|q| q.y_ws < y);
     if let Some(q) = p.get(i)
         && (q.y_ws - y).abs() < 1e-9

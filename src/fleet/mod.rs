@@ -84,7 +84,7 @@ pub fn summarise(results: &Results, settings: &crate::conicity::Settings) -> Sum
         }
     };
     let mut max_p0: Option<MaxPressure> = None;
-    for p in results.hertz.iter().flatten() {
+    for p in results.hertz.iter().flat_map(|h| h.positions()) {
         for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
             if let Some(e) = p.sides[k].ellipse()
                 && e.p0_mpa.is_finite()

@@ -229,7 +229,7 @@ mod tests {
         let (placement, sweep) = paper_sweep(-15.0, 60);
         let side = SideGap::new(&placement.left, 1.0);
         let (mut groups, mut skipped) = (0, 0);
-        for p in &sweep.positions {
+        for p in sweep.positions() {
             let pose = SidePose::new(1.0, p.y_ws, p.roll);
             let rigid = side.at(p.contact[0].unwrap().s, &pose).unwrap().g;
             // The default threshold: 25 eps of 0.01 mm and the coarse margin.
@@ -260,7 +260,7 @@ mod tests {
         let (mut passed, mut blocks) = (0, 0);
         for (side, sign, k) in [(&placement.left, 1.0, 0), (&placement.right, -1.0, 1)] {
             let side = SideGap::new(side, sign);
-            for p in &sweep.positions {
+            for p in sweep.positions() {
                 let pose = SidePose::new(sign, p.y_ws, p.roll);
                 let g = side.at(p.contact[k].unwrap().s, &pose).unwrap().g;
                 for above in [1e-3, 0.01, 0.1, 0.3, 1.0, 10.0] {
@@ -294,7 +294,7 @@ mod tests {
         for (side, sign, k) in [(&placement.left, 1.0, 0), (&placement.right, -1.0, 1)] {
             let side = SideGap::new(side, sign);
             let (lo, hi) = side.domain;
-            for p in &sweep.positions {
+            for p in sweep.positions() {
                 let pose = SidePose::new(sign, p.y_ws, p.roll);
                 let rigid = p.contact[k].unwrap().s;
                 let g = side.at(rigid, &pose).unwrap().g;

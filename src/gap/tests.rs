@@ -34,7 +34,7 @@ fn poses() -> Vec<SidePose> {
     );
     poses.extend(
         sweep
-            .positions
+            .positions()
             .iter()
             .map(|p| SidePose::new(1.0, p.y_ws, p.roll)),
     );

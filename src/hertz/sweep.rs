@@ -17,7 +17,8 @@ use crate::quasi_elastic::QuasiElasticSweep;
 use crate::rigid::{RigidSweep, Stop};
 use crate::sweep::{Mirror, Mirrored};
 
-/// Which contact the ellipses are computed for.
+/// Which contact the ellipses are computed for (the scene's `[hertz] contact`): the stage
+/// graph runs the quasi-elastic search for Hertz only where it is asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ContactSource {
     /// The heaviest quasi-elastic patch (paper Fig. 6).
@@ -57,15 +58,81 @@ impl NormalLoad {
     }
 }
 
+/// The contacts a Hertz sweep is computed for: each rigid contact, or the heaviest patch of
+/// each quasi-elastic position (which carries the rigid sweep it was averaged around, so
+/// that the two always belong together).
+#[derive(Debug, Clone, Copy)]
+pub enum Contacts<'a> {
+    /// The rigid contact points.
+    Rigid(&'a RigidSweep),
+    /// The heaviest quasi-elastic patches (paper Fig. 6).
+    QuasiElastic(&'a QuasiElasticSweep),
+}
+
+impl<'a> Contacts<'a> {
+    /// The rigid sweep of the contacts.
+    fn rigid(self) -> &'a RigidSweep {
+        match self {
+            Contacts::Rigid(rigid) => rigid,
+            Contacts::QuasiElastic(qe) => qe.rigid(),
+        }
+    }
+
+    /// Which contacts these are.
+    pub fn source(self) -> ContactSource {
+        match self {
+            Contacts::Rigid(_) => ContactSource::Rigid,
+            Contacts::QuasiElastic(_) => ContactSource::QuasiElastic,
+        }
+    }
+}
+
 /// Settings of the sweep.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Settings {
     /// Ellipse method.
-    pub method: Method,
-    /// Contact the ellipses are computed for.
-    pub source: ContactSource,
+    pub(crate) method: Method,
     /// Normal-load rule.
-    pub normal_load: NormalLoad,
+    pub(crate) normal_load: NormalLoad,
+}
+
+impl Settings {
+    /// The ellipse `method` and the `normal_load` rule (any combination is valid).
+    pub fn new(method: Method, normal_load: NormalLoad) -> Settings {
+        Settings {
+            method,
+            normal_load,
+        }
+    }
+
+    /// The ellipse method.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// The normal-load rule.
+    pub fn normal_load(&self) -> NormalLoad {
+        self.normal_load
+    }
+}
+
+/// The Hertz results over a sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HertzSweep {
+    source: ContactSource,
+    positions: Vec<Position>,
+}
+
+impl HertzSweep {
+    /// The contacts the ellipses were computed for.
+    pub fn source(&self) -> ContactSource {
+        self.source
+    }
+
+    /// One result per position of the sweep, in its order.
+    pub fn positions(&self) -> &[Position] {
+        &self.positions
+    }
 }
 
 /// The Hertz result of one wheel at one position.
@@ -111,8 +178,7 @@ impl Mirrored for Position {
     }
 }
 
-/// Computes the ellipses of both wheels over a sweep. `quasi_elastic` must be given when
-/// `settings.source` is [`ContactSource::QuasiElastic`].
+/// Computes the ellipses of both wheels over a sweep, for `contacts`.
 ///
 /// Where the contacts before the middle of the sweep are the mirror images of those after it
 /// (a mirror-symmetric wheelset on a symmetric sweep), the ellipses from the middle on are
@@ -122,35 +188,36 @@ impl Mirrored for Position {
 /// # Units
 /// `wheel_load_n` in N, `e_star_mpa` in MPa.
 pub fn sweep(
-    rigid: &RigidSweep,
-    quasi_elastic: Option<&QuasiElasticSweep>,
+    contacts: Contacts,
     wheel_load_n: f64,
     e_star_mpa: f64,
     settings: &Settings,
-) -> Vec<Position> {
-    let mirror = match settings.source {
-        ContactSource::Rigid => rigid.mirror(),
-        ContactSource::QuasiElastic => quasi_elastic.and_then(QuasiElasticSweep::mirror),
+) -> HertzSweep {
+    let mirror = match contacts {
+        Contacts::Rigid(rigid) => rigid.mirror(),
+        Contacts::QuasiElastic(qe) => qe.mirror(),
     };
+    let rigid = contacts.rigid().positions();
     let first = mirror.map_or(0, Mirror::middle);
-    let solved: Vec<Position> = rigid.positions[first..]
-        .iter()
-        .enumerate()
-        .map(|(j, p)| {
-            let i = first + j;
+    let solved: Vec<Position> = (first..rigid.len())
+        .map(|i| {
             let side = |k: usize| {
-                let input = contact_input(rigid, quasi_elastic, settings.source, i, k);
+                let input = contact_input(contacts, i, k);
                 side_hertz(input, wheel_load_n, e_star_mpa, settings)
             };
             Position {
-                y_ws: p.y_ws,
+                y_ws: rigid[i].y_ws,
                 sides: [side(0), side(1)],
             }
         })
         .collect();
-    match mirror {
-        Some(mirror) => mirror.complete(solved, |i| rigid.positions[i].y_ws),
+    let positions = match mirror {
+        Some(mirror) => mirror.complete(solved, |i| rigid[i].y_ws),
         None => solved,
+    };
+    HertzSweep {
+        source: contacts.source(),
+        positions,
     }
 }
 
@@ -166,19 +233,13 @@ struct Input {
 }
 
 /// The input of wheel `k` at position `i`, or why there is no contact to compute.
-fn contact_input(
-    rigid: &RigidSweep,
-    quasi_elastic: Option<&QuasiElasticSweep>,
-    source: ContactSource,
-    i: usize,
-    k: usize,
-) -> Result<Input, String> {
-    let p = &rigid.positions[i];
+fn contact_input(contacts: Contacts, i: usize, k: usize) -> Result<Input, String> {
+    let p = &contacts.rigid().positions()[i];
     if p.stop != Stop::Converged {
         return Err(format!("rigid search: {}", p.stop.status_text()));
     }
-    let contact = match source {
-        ContactSource::Rigid => p.contact[k].map(|c| Input {
+    let contact = match contacts {
+        Contacts::Rigid(_) => p.contact[k].map(|c| Input {
             r: c.r,
             gamma: c.gamma,
             wheel_curvature: c.wheel_curvature,
@@ -186,8 +247,8 @@ fn contact_input(
             share: 1.0,
             patches: 1,
         }),
-        ContactSource::QuasiElastic => quasi_elastic.and_then(|q| {
-            let side = &q.positions[i].sides[k];
+        Contacts::QuasiElastic(qe) => {
+            let side = &qe.positions()[i].sides[k];
             side.main().map(|m| Input {
                 r: m.r,
                 gamma: m.gamma,
@@ -196,7 +257,7 @@ fn contact_input(
                 share: m.weight_share,
                 patches: side.patches.len(),
             })
-        }),
+        }
     };
     contact.ok_or_else(|| "no contact".into())
 }
@@ -276,18 +337,16 @@ mod tests {
         let e_star = super::super::effective_modulus(scene.wheel_material(), scene.rail_material());
         let placement = crate::pipeline::place(&scene).unwrap();
         let rigid = crate::rigid::search(&placement, scene.sweep(), Default::default());
-        let qe = crate::quasi_elastic::search(&placement, &rigid, scene.quasi_elastic());
+        let qe = crate::quasi_elastic::search(&placement, rigid.clone(), scene.quasi_elastic());
         assert!(rigid.mirror().is_some() && qe.mirror().is_some());
-        for source in [ContactSource::QuasiElastic, ContactSource::Rigid] {
-            let settings = Settings {
-                source,
-                ..Settings::default()
-            };
-            let swept = sweep(&rigid, Some(&qe), 70e3, e_star, &settings);
-            for (i, p) in swept.iter().enumerate() {
+        let settings = Settings::default();
+        for contacts in [Contacts::QuasiElastic(&qe), Contacts::Rigid(&rigid)] {
+            let swept = sweep(contacts, 70e3, e_star, &settings);
+            for (i, p) in swept.positions().iter().enumerate() {
                 for (k, side) in p.sides.iter().enumerate() {
-                    let input = contact_input(&rigid, Some(&qe), source, i, k);
+                    let input = contact_input(contacts, i, k);
                     let computed = side_hertz(input, 70e3, e_star, &settings);
+                    let source = contacts.source();
                     assert_eq!(
                         format!("{side:?}"),
                         format!("{computed:?}"),

@@ -78,7 +78,7 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
         lines.push(format!(
             "max_p0_MPa: the largest Hertz maximum pressure over the sweep and both wheels ({} method, {} contact, normal load {}, {} kN per wheel), at the wheelset shift max_p0_y_ws_mm on the wheel max_p0_side",
             t.hertz.method,
-            t.hertz.source.name(),
+            t.hertz_contact.name(),
             t.hertz.normal_load.name(),
             t.wheel_load_n / 1000.0
         ));

@@ -179,8 +179,12 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
         Figure::EpsilonSensitivity => {
             figures::epsilon_sensitivity(rigid()?, results.epsilon.as_ref().ok_or_else(missing)?)
         }
-        Figure::SemiAxes => figures::semi_axes(results.hertz.as_ref().ok_or_else(missing)?),
-        Figure::Pressure => figures::pressure(results.hertz.as_ref().ok_or_else(missing)?),
+        Figure::SemiAxes => {
+            figures::semi_axes(results.hertz.as_ref().ok_or_else(missing)?.positions())
+        }
+        Figure::Pressure => {
+            figures::pressure(results.hertz.as_ref().ok_or_else(missing)?.positions())
+        }
         Figure::HertzAccuracy => {
             figures::hertz_accuracy(results.hertz_accuracy.as_ref().ok_or_else(missing)?)
         }
@@ -210,7 +214,7 @@ pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
         Figure::EpsilonSensitivity => "Sensitivity of the quasi-elastic contact location to the regularisation parameter eps; as eps decreases it tends to the rigid solution.".into(),
         Figure::SemiAxes => format!(
             "Paper Fig. 6: semi-axes of the Hertz contact ellipses ({} method, {} contact, normal load {}, vertical wheel load {} kN).",
-            scene.hertz.method, scene.hertz.source.name(), scene.hertz.normal_load.name(), scene.wheel_load_n / 1000.0
+            scene.hertz.method, scene.hertz_contact.name(), scene.hertz.normal_load.name(), scene.wheel_load_n / 1000.0
         ),
         Figure::Pressure => "Maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
         Figure::EquivalentConicity => format!("Equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),

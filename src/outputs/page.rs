@@ -53,7 +53,7 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
     let mut notes = Vec::new();
     if let Some(r) = &results.rigid {
         let bad: Vec<String> = r
-            .positions
+            .positions()
             .iter()
             .filter(|p| p.stop != crate::rigid::Stop::Converged)
             .map(|p| format!("{} mm ({})", p.y_ws, p.stop.status_text()))
@@ -61,9 +61,9 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
         if bad.is_empty() {
             summary.push(format!(
                 "Rigid search ({} solver): all {} positions converged; {} contact-point jumps.",
-                r.solver.name(),
-                r.positions.len(),
-                r.jumps.len()
+                r.solver().name(),
+                r.positions().len(),
+                r.jumps().len()
             ));
         } else {
             notes.push(format!(
@@ -77,6 +77,7 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
     }
     if let Some(h) = &results.hertz {
         let flagged = h
+            .positions()
             .iter()
             .flat_map(|p| p.sides.iter())
             .filter(|s| s.status != "ok")
@@ -87,7 +88,7 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
         summary.push(format!(
             "Hertz: {} method, {} contact, normal load {}.",
             scene.hertz.method,
-            scene.hertz.source.name(),
+            scene.hertz_contact.name(),
             scene.hertz.normal_load.name()
         ));
     }

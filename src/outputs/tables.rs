@@ -140,20 +140,20 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
     let l0 = sweep.l0_mm();
     // Without a contact on both wheels of the centred wheelset (very unequal radii, say)
     // z_ws and l0 have no reference: their columns are NaN and the status says so.
-    let centred_reference = l0.is_finite() && sweep.centre.axle_height.is_finite();
+    let centred_reference = l0.is_finite() && sweep.centre().axle_height.is_finite();
     let mut t = Table::builder()
-        .comment(format!("rigid contact, solver {}", sweep.solver.name()))
+        .comment(format!("rigid contact, solver {}", sweep.solver().name()))
         .comment(TRACK_FRAME)
         .comment(PER_WHEEL)
         .comment("z_ws_mm relative to the centred wheelset; r_mm rolling radius; second_s_mm a second contact point within 0.01 mm of touching (NaN if none); jump_after 1 where the contact point jumps before the next position (see rigid_jumps.csv)")
         .comment(format!("Wickens: lambda = delta_r/(2 y_ws), epsilon = l0 (tan gamma_l - tan gamma_r)/(2 y_ws), sigma = l0 roll/y_ws, l0 = {l0:.6} mm; NaN at y_ws = 0"))
-        .numeric("y_ws_mm", sweep.positions.iter().map(|p| p.y_ws).collect::<Vec<_>>())
+        .numeric("y_ws_mm", sweep.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>())
         .numeric("roll_rad", converged(sweep, |p| p.roll))
         .numeric("z_ws_mm", converged(sweep, |p| sweep.z_ws(p)));
     for side in [Side::Left, Side::Right] {
         t = rigid_side_columns(t, sweep, side);
     }
-    let positions = &sweep.positions;
+    let positions = &sweep.positions();
     let wickens: Vec<_> = positions.iter().map(|p| sweep.wickens(p)).collect();
     let column = |f: &dyn Fn(&crate::rigid::Position) -> f64| -> Vec<f64> {
         positions.iter().map(f).collect()
@@ -186,15 +186,18 @@ fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableB
         _ => None,
     };
     let points: Vec<ContactPoint> = sweep
-        .positions
+        .positions()
         .iter()
         .map(|p| contact(p).map_or(ContactPoint::NAN, |c| c.point()))
         .collect();
-    let jump_after = (0..sweep.positions.len()).map(|i| {
-        let y0 = sweep.positions[i].y_ws;
-        let y1 = sweep.positions.get(i + 1).map_or(f64::INFINITY, |p| p.y_ws);
+    let jump_after = (0..sweep.positions().len()).map(|i| {
+        let y0 = sweep.positions()[i].y_ws;
+        let y1 = sweep
+            .positions()
+            .get(i + 1)
+            .map_or(f64::INFINITY, |p| p.y_ws);
         let jumps = sweep
-            .jumps
+            .jumps()
             .iter()
             .any(|j| j.side == side && j.y_from >= y0 && j.y_to <= y1);
         if jumps { 1.0 } else { 0.0 }
@@ -203,7 +206,7 @@ fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableB
         .numeric(
             format!("{name}_second_s_mm"),
             sweep
-                .positions
+                .positions()
                 .iter()
                 .map(|p| contact(p).and_then(|c| c.second).map_or(f64::NAN, |s| s.0))
                 .collect::<Vec<_>>(),
@@ -272,7 +275,7 @@ fn contact_columns(
 
 fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::Position) -> f64) -> Vec<f64> {
     sweep
-        .positions
+        .positions()
         .iter()
         .map(|p| {
             if p.stop == Stop::Converged {
@@ -289,7 +292,7 @@ fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::Position) -> f64) -> 
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn rigid_jumps(sweep: &RigidSweep) -> Result<Table, TableError> {
-    let j = &sweep.jumps;
+    let j = &sweep.jumps();
     Table::builder()
         .comment("intervals of y_ws across which a rigid contact point jumps, refined by bisection to 1e-4 mm")
         .comment(PER_WHEEL)
@@ -310,30 +313,30 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
     let mut t = Table::builder()
         .comment(format!(
             "quasi-elastic contact: weights exp(-(d - d_min)/eps), eps = {} mm, cut-off {} eps, quadrature {}",
-            q.settings.epsilon_mm,
-            q.settings.cutoff,
-            q.settings.quadrature.name()
+            q.settings().epsilon_mm,
+            q.settings().cutoff,
+            q.settings().quadrature.name()
         ))
         .comment(TRACK_FRAME)
         .comment(PER_WHEEL)
         .comment("the heaviest patch (local minimum of the gap) per wheel; second_* the next heaviest (NaN if none); weight_share its share of the wheel's total weight")
-        .numeric("y_ws_mm", q.positions.iter().map(|p| p.y_ws).collect::<Vec<_>>());
+        .numeric("y_ws_mm", q.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>());
     for side in [Side::Left, Side::Right] {
         let name = side.name();
         let main = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
-            q.positions
+            q.positions()
                 .iter()
                 .map(|p| p.side(side).main().map_or(f64::NAN, f))
                 .collect()
         };
         let second = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
-            q.positions
+            q.positions()
                 .iter()
                 .map(|p| p.side(side).second().map_or(f64::NAN, f))
                 .collect()
         };
         let points: Vec<ContactPoint> = q
-            .positions
+            .positions()
             .iter()
             .map(|p| p.side(side).main().map_or(ContactPoint::NAN, |c| c.point()))
             .collect();
@@ -341,7 +344,7 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
             .numeric(format!("{name}_weight_share"), main(&|c| c.weight_share))
             .numeric(
                 format!("{name}_patches"),
-                q.positions
+                q.positions()
                     .iter()
                     .map(|p| p.side(side).patches.len() as f64)
                     .collect::<Vec<_>>(),
@@ -356,14 +359,14 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
         |p: &crate::quasi_elastic::Position, k: usize| p.sides[k].main().map_or(f64::NAN, |c| c.r);
     t.numeric(
         "delta_r_mm",
-        q.positions
+        q.positions()
             .iter()
             .map(|p| r(p, 0) - r(p, 1))
             .collect::<Vec<_>>(),
     )
     .text(
         "status",
-        q.positions.iter().map(|p| {
+        q.positions().iter().map(|p| {
             let missing: Vec<&str> = [Side::Left, Side::Right]
                 .into_iter()
                 .filter(|&side| p.side(side).main().is_none_or(|c| !c.is_finite()))
@@ -396,7 +399,7 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
         .comment(PER_WHEEL)
         .numeric(
             "y_ws_mm",
-            rigid.positions.iter().map(|p| p.y_ws).collect::<Vec<_>>(),
+            rigid.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>(),
         );
     for (k, side) in [Side::Left, Side::Right].into_iter().enumerate() {
         t = t.numeric(
@@ -406,14 +409,14 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
         for (eps, q) in &e.runs {
             t = t.numeric(
                 format!("{}_s_mm_eps_{eps}_mm", side.name()),
-                q.positions
+                q.positions()
                     .iter()
                     .map(|p| p.sides[k].main().map_or(f64::NAN, |c| c.s))
                     .collect::<Vec<_>>(),
             );
         }
     }
-    let status = rigid.positions.iter().enumerate().map(|(i, p)| {
+    let status = rigid.positions().iter().enumerate().map(|(i, p)| {
         if p.stop != Stop::Converged {
             return format!("rigid search: {}", p.stop.status_text());
         }
@@ -425,7 +428,7 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
                     .into_iter()
                     .enumerate()
                     .filter(move |&(k, _)| {
-                        q.positions[i].sides[k]
+                        q.positions()[i].sides[k]
                             .main()
                             .is_none_or(|c| !c.s.is_finite())
                     })
@@ -446,13 +449,14 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn hertz(
-    h: &[crate::hertz::sweep::Position],
+    sweep: &crate::hertz::sweep::HertzSweep,
     settings: &crate::hertz::sweep::Settings,
 ) -> Result<Table, TableError> {
+    let h = sweep.positions();
     let mut t = Table::builder()
         .comment(format!(
             "Hertz contact ellipses, method {}, contact {}, normal load {}",
-            settings.method, settings.source.name(), settings.normal_load.name()
+            settings.method, sweep.source().name(), settings.normal_load.name()
         ))
         .comment("a_mm semi-axis along the rolling direction, b_mm lateral; p0_MPa maximum pressure; A, B relative curvatures (1/mm) in the rolling and lateral directions")
         .numeric("y_ws_mm", h.iter().map(|p| p.y_ws).collect::<Vec<_>>());

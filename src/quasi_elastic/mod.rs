@@ -29,6 +29,7 @@ use crate::gap::{ContactPoint, SideGap, SidePose};
 use crate::rigid::{RigidSweep, Stop};
 use crate::sweep::{Mirror, Mirrored};
 use crate::track::{Placement, Side};
+use std::sync::Arc;
 
 mod settings;
 
@@ -171,25 +172,42 @@ impl Position {
     }
 }
 
-/// The quasi-elastic solution over a sweep.
+/// The quasi-elastic solution over a sweep, with the rigid sweep it was computed on: one
+/// result per rigid position, so that a stage computed from both (Hertz) reads them
+/// together.
 #[derive(Debug, Clone)]
 pub struct QuasiElasticSweep {
-    /// The settings used.
-    pub settings: Settings,
-    /// One result per position of the rigid sweep.
-    pub positions: Vec<Position>,
+    settings: Settings,
+    rigid: Arc<RigidSweep>,
+    positions: Vec<Position>,
     /// Whether the positions before the middle are the mirror images of those after it.
     mirror: Option<Mirror>,
 }
 
 impl QuasiElasticSweep {
+    /// The settings used.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The rigid sweep the averages were taken around.
+    pub fn rigid(&self) -> &RigidSweep {
+        &self.rigid
+    }
+
+    /// One result per position of [the rigid sweep](Self::rigid), in its order.
+    pub fn positions(&self) -> &[Position] {
+        &self.positions
+    }
+
     /// Whether the positions before the middle are the mirror images of those after it.
     pub(crate) fn mirror(&self) -> Option<Mirror> {
         self.mirror
     }
 }
 
-/// Averages the contact of every position of a rigid sweep.
+/// Averages the contact of every position of a rigid sweep, which the result keeps
+/// (`rigid` moved in, or shared as an `Arc`: [`QuasiElasticSweep::rigid`]).
 ///
 /// On a [mirror-symmetric](crate::track::Placement::is_mirror_symmetric) wheelset whose
 /// rigid positions are mirror images about the middle one (as [`crate::rigid::search`] gives
@@ -202,19 +220,24 @@ impl QuasiElasticSweep {
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
 /// let rigid = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap(), rigid::Solver::default());
-/// let qe = quasi_elastic::search(&placement, &rigid, &quasi_elastic::Settings::default());
-/// let patch = qe.positions[0].sides[0].main().unwrap();
+/// let qe = quasi_elastic::search(&placement, rigid, &quasi_elastic::Settings::default());
+/// let patch = qe.positions()[0].sides[0].main().unwrap();
 /// // Averaging moves the contact point, but stays on the tread near the rigid point.
-/// assert!((patch.s - rigid.positions[0].contact[0].unwrap().s).abs() < 3.0);
+/// assert!((patch.s - qe.rigid().positions()[0].contact[0].unwrap().s).abs() < 3.0);
 /// ```
-pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) -> QuasiElasticSweep {
+pub fn search(
+    placement: &Placement,
+    rigid: impl Into<Arc<RigidSweep>>,
+    settings: &Settings,
+) -> QuasiElasticSweep {
+    let rigid: Arc<RigidSweep> = rigid.into();
     let sides = SideGap::both(placement);
     // Where the rigid positions before the middle are the mirror images of those after it,
     // a wheel at a position is averaged exactly as the other wheel at the mirrored
     // position, operation for operation (both in their side frames): the images are what
     // averaging gives.
     let mirror = rigid.mirror().filter(|_| placement.mirrors());
-    let all = &rigid.positions;
+    let all = rigid.positions();
     let first = mirror.map_or(0, Mirror::middle);
     // Positions are independent: averaged in parallel (rayon), buffers per thread.
     use rayon::prelude::*;
@@ -244,6 +267,7 @@ pub fn search(placement: &Placement, rigid: &RigidSweep, settings: &Settings) ->
     };
     QuasiElasticSweep {
         settings: *settings,
+        rigid,
         positions,
         mirror,
     }
@@ -641,7 +665,7 @@ mod tests {
         let placement = crate::pipeline::place(&scene).unwrap();
         let rigid = crate::rigid::search(&placement, scene.sweep(), Default::default());
         // The mirror is taken: the rigid positions are mirror images.
-        let p = &rigid.positions;
+        let p = rigid.positions();
         let n = p.len();
         assert!(placement.is_mirror_symmetric() && n == 301);
         assert!((0..n).all(|i| p[i] == p[n - 1 - i].mirrored(p[i].y_ws)));
@@ -651,8 +675,8 @@ mod tests {
             Quadrature::Trapezoid { max_step_mm: 0.05 },
         ] {
             let settings = Settings::default().with_quadrature(quadrature).unwrap();
-            let mirrored = search(&placement, &rigid, &settings);
-            let averaged = search(&unmirrored, &rigid, &settings);
+            let mirrored = search(&placement, rigid.clone(), &settings);
+            let averaged = search(&unmirrored, rigid.clone(), &settings);
             assert_eq!(
                 format!("{:?}", mirrored.positions),
                 format!("{:?}", averaged.positions)

@@ -256,22 +256,39 @@ pub const JUMP_REFINE_MM: f64 = 1e-4;
 /// that only moves fast shrinks its motion with the interval.
 pub const JUMP_CONFIRM_MM: f64 = 0.1;
 
-/// The rigid solution over a sweep.
+/// The rigid solution over a sweep, as [`search`] computed it (read through its accessors:
+/// the stages computed from it rely on its positions being those of its sweep).
 #[derive(Debug, Clone)]
 pub struct RigidSweep {
-    /// The solver used.
-    pub solver: Solver,
-    /// One solution per lateral position, in sweep order.
-    pub positions: Vec<Position>,
-    /// The centred solution (`y_ws = 0`), the reference of `z_ws` and `l0`.
-    pub centre: Position,
-    /// Contact-point jumps, by side and `y_ws`.
-    pub jumps: Vec<Jump>,
+    solver: Solver,
+    positions: Vec<Position>,
+    centre: Position,
+    jumps: Vec<Jump>,
     /// Whether the positions before the middle are the mirror images of those after it.
     mirror: Option<Mirror>,
 }
 
 impl RigidSweep {
+    /// The solver used.
+    pub fn solver(&self) -> Solver {
+        self.solver
+    }
+
+    /// One solution per lateral position, in sweep order.
+    pub fn positions(&self) -> &[Position] {
+        &self.positions
+    }
+
+    /// The centred solution (`y_ws = 0`), the reference of `z_ws` and `l0`.
+    pub fn centre(&self) -> &Position {
+        &self.centre
+    }
+
+    /// Contact-point jumps, by side and `y_ws`.
+    pub fn jumps(&self) -> &[Jump] {
+        &self.jumps
+    }
+
     /// Whether the positions before the middle are the mirror images of those after it.
     pub(crate) fn mirror(&self) -> Option<Mirror> {
         self.mirror
@@ -347,7 +364,7 @@ impl RigidSweep {
     /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
     /// let shifts = wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap();
     /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), &shifts, rigid::Solver::default());
-    /// let w = sweep.wickens(&sweep.positions[0]);
+    /// let w = sweep.wickens(&sweep.positions()[0]);
     /// // S1002 on UIC60 1:40 at 2 mm: a conicity of about 0.2.
     /// assert!(w.lambda > 0.1 && w.lambda < 0.3);
     /// ```
@@ -422,9 +439,9 @@ fn side_index(side: Side) -> usize {
 /// let placement = pipeline::place(&scene).unwrap();
 /// let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[0.0, 3.0]).unwrap(), rigid::Solver::default());
 /// // A symmetric wheelset at y_ws = 0 does not roll.
-/// assert!(sweep.positions[0].roll.abs() < 1e-12);
+/// assert!(sweep.positions()[0].roll.abs() < 1e-12);
 /// // Shifted to the left it rolls to lift the left wheel (positive roll, crate docs).
-/// assert!(sweep.positions[1].roll > 0.0);
+/// assert!(sweep.positions()[1].roll > 0.0);
 /// ```
 pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSweep {
     let solve = PositionSolver::new(placement, solver);

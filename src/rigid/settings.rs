@@ -17,8 +17,8 @@ use super::Solver;
 /// // A looser residual than the default's 1e-11 mm.
 /// let loose = rigid::RollSettings { residual_tol_mm: 1e-6, ..Default::default() };
 /// let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[3.0]).unwrap(), rigid::Solver::Default(loose));
-/// assert_eq!(sweep.positions[0].stop, rigid::Stop::Converged);
-/// assert!(sweep.positions[0].residual <= 1e-6);
+/// assert_eq!(sweep.positions()[0].stop, rigid::Stop::Converged);
+/// assert!(sweep.positions()[0].residual <= 1e-6);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RollSettings {

@@ -11,7 +11,7 @@ use super::{
     MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
 };
 use crate::hertz::Material;
-use crate::hertz::sweep::Settings as HertzSettings;
+use crate::hertz::sweep::{ContactSource, Settings as HertzSettings};
 use crate::message::Number;
 use crate::profile::Profile;
 use crate::quasi_elastic::{EPSILON_RANGE_MM, Quadrature, Settings as QeSettings, SettingsError};
@@ -68,7 +68,7 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let (figures, formats) = outputs(raw)?;
     let rigid_solver = rigid_solver(raw)?;
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
-    let hertz = hertz(raw)?;
+    let (hertz, hertz_contact) = hertz(raw)?;
     let conicity = conicity_settings(&raw.conicity)?;
     let fleet = fleet_settings(&raw.fleet)?;
     Ok(Scene {
@@ -97,6 +97,7 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         quasi_elastic,
         epsilon_sensitivity_mm,
         hertz,
+        hertz_contact,
         conicity,
         fleet,
     })
@@ -432,42 +433,40 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
     Ok((quasi_elastic, epsilon_sensitivity_mm))
 }
 
-/// The Hertz settings.
-fn hertz(raw: &RawScene) -> Result<HertzSettings, Invalid> {
+/// The Hertz settings, and the contacts the ellipses are computed for.
+fn hertz(raw: &RawScene) -> Result<(HertzSettings, ContactSource), Invalid> {
     let h = &raw.hertz;
-    let hertz = crate::hertz::sweep::Settings {
-        method: match h.method.as_deref() {
-            None | Some("exact") => crate::hertz::Method::Exact,
-            Some("paper") => crate::hertz::Method::Paper,
-            Some(other) => {
-                return Err(invalid(
-                    "hertz.method",
-                    format!("unknown method {other:?}; expected \"exact\" or \"paper\""),
-                ));
-            }
-        },
-        source: match h.contact.as_deref() {
-            None | Some("quasi_elastic") => crate::hertz::sweep::ContactSource::QuasiElastic,
-            Some("rigid") => crate::hertz::sweep::ContactSource::Rigid,
-            Some(other) => {
-                return Err(invalid(
-                    "hertz.contact",
-                    format!("unknown contact {other:?}; expected \"quasi_elastic\" or \"rigid\""),
-                ));
-            }
-        },
-        normal_load: match h.normal_load.as_deref() {
-            None | Some("projected") => crate::hertz::sweep::NormalLoad::Projected,
-            Some("vertical") => crate::hertz::sweep::NormalLoad::Vertical,
-            Some(other) => {
-                return Err(invalid(
-                    "hertz.normal_load",
-                    format!("unknown rule {other:?}; expected \"projected\" or \"vertical\""),
-                ));
-            }
-        },
+    let method = match h.method.as_deref() {
+        None | Some("exact") => crate::hertz::Method::Exact,
+        Some("paper") => crate::hertz::Method::Paper,
+        Some(other) => {
+            return Err(invalid(
+                "hertz.method",
+                format!("unknown method {other:?}; expected \"exact\" or \"paper\""),
+            ));
+        }
     };
-    Ok(hertz)
+    let contact = match h.contact.as_deref() {
+        None | Some("quasi_elastic") => ContactSource::QuasiElastic,
+        Some("rigid") => ContactSource::Rigid,
+        Some(other) => {
+            return Err(invalid(
+                "hertz.contact",
+                format!("unknown contact {other:?}; expected \"quasi_elastic\" or \"rigid\""),
+            ));
+        }
+    };
+    let normal_load = match h.normal_load.as_deref() {
+        None | Some("projected") => crate::hertz::sweep::NormalLoad::Projected,
+        Some("vertical") => crate::hertz::sweep::NormalLoad::Vertical,
+        Some(other) => {
+            return Err(invalid(
+                "hertz.normal_load",
+                format!("unknown rule {other:?}; expected \"projected\" or \"vertical\""),
+            ));
+        }
+    };
+    Ok((HertzSettings::new(method, normal_load), contact))
 }
 
 /// The quadrature of `[quasi_elastic]`: its kind and the one step key that kind takes, or

@@ -202,6 +202,8 @@ pub struct Scene {
     pub(crate) epsilon_sensitivity_mm: Vec<f64>,
     /// Hertz settings over the sweep.
     pub(crate) hertz: crate::hertz::sweep::Settings,
+    /// The contacts the Hertz ellipses are computed for.
+    pub(crate) hertz_contact: crate::hertz::sweep::ContactSource,
     /// Equivalent conicity settings.
     pub(crate) conicity: crate::conicity::Settings,
     /// Settings of `wheelrail fleet` with this scene as its template.
@@ -322,6 +324,11 @@ impl Scene {
     /// Hertz settings over the sweep.
     pub fn hertz(&self) -> &crate::hertz::sweep::Settings {
         &self.hertz
+    }
+
+    /// The contacts the Hertz ellipses are computed for (`[hertz] contact`).
+    pub fn hertz_contact(&self) -> crate::hertz::sweep::ContactSource {
+        self.hertz_contact
     }
 
     /// Equivalent conicity settings.

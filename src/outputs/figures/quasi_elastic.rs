@@ -17,8 +17,8 @@ const PATCH_SWITCH_MM: f64 = 1.5;
 /// `(y_ws, s)` of the heaviest quasi-elastic patch of wheel `k`, broken where another patch
 /// takes over.
 fn heaviest_patch_series(q: &QuasiElasticSweep, k: usize) -> Vec<(f64, f64)> {
-    let mut out: Vec<(f64, f64)> = Vec::with_capacity(q.positions.len());
-    for p in &q.positions {
+    let mut out: Vec<(f64, f64)> = Vec::with_capacity(q.positions().len());
+    for p in q.positions() {
         let s = p.sides[k].main().map_or(f64::NAN, |c| c.s);
         if out
             .last()
@@ -36,7 +36,7 @@ pub(crate) fn quasi_elastic_points(sweep: &RigidSweep, q: &QuasiElasticSweep) ->
     let panel = |side: Side, k: usize| {
         let main = heaviest_patch_series(q, k);
         let second: Vec<(f64, f64)> = q
-            .positions
+            .positions()
             .iter()
             .filter_map(|p| p.sides[k].second().map(|c| (p.y_ws, c.s)))
             .collect();
@@ -55,7 +55,7 @@ pub(crate) fn quasi_elastic_points(sweep: &RigidSweep, q: &QuasiElasticSweep) ->
     Figure::grid(
         format!(
             "Rigid and quasi-elastic contact points (eps = {} mm)",
-            q.settings.epsilon_mm
+            q.settings().epsilon_mm
         ),
         vec![panel(Side::Left, 0), panel(Side::Right, 1)],
         2,
@@ -70,7 +70,7 @@ pub(crate) fn quasi_elastic_map(
 ) -> Figure {
     let rigid = left_contacts(sweep);
     let qe: Vec<(f64, f64, f64)> = q
-        .positions
+        .positions()
         .iter()
         .filter_map(|p| p.sides[0].main().map(|c| (c.s, c.y, c.z)))
         .collect();
@@ -79,7 +79,7 @@ pub(crate) fn quasi_elastic_map(
             placement,
             &format!(
                 "Contact map: rigid and quasi-elastic (eps = {} mm), left wheel",
-                q.settings.epsilon_mm
+                q.settings().epsilon_mm
             ),
         )
         .series(

@@ -17,15 +17,15 @@ pub(super) fn rigid_series(
     side: Side,
     f: impl Fn(&Position, &SideContact) -> f64,
 ) -> Vec<(f64, f64)> {
-    let mut out = Vec::with_capacity(sweep.positions.len());
-    for (i, p) in sweep.positions.iter().enumerate() {
+    let mut out = Vec::with_capacity(sweep.positions().len());
+    for (i, p) in sweep.positions().iter().enumerate() {
         match p.side(side) {
             Some(c) if p.stop == Stop::Converged => out.push((p.y_ws, f(p, c))),
             _ => out.push((p.y_ws, f64::NAN)),
         }
-        if let Some(next) = sweep.positions.get(i + 1)
+        if let Some(next) = sweep.positions().get(i + 1)
             && sweep
-                .jumps
+                .jumps()
                 .iter()
                 .any(|j| j.side == side && j.y_from >= p.y_ws && j.y_to <= next.y_ws)
         {
@@ -37,8 +37,8 @@ pub(super) fn rigid_series(
 
 /// A wheelset quantity over a rigid sweep, broken where either contact point jumps.
 fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&Position) -> f64) -> Vec<(f64, f64)> {
-    let mut out = Vec::with_capacity(sweep.positions.len());
-    for (i, p) in sweep.positions.iter().enumerate() {
+    let mut out = Vec::with_capacity(sweep.positions().len());
+    for (i, p) in sweep.positions().iter().enumerate() {
         out.push((
             p.y_ws,
             if p.stop == Stop::Converged {
@@ -47,9 +47,9 @@ fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&Position) -> f64) -> Ve
                 f64::NAN
             },
         ));
-        if let Some(next) = sweep.positions.get(i + 1)
+        if let Some(next) = sweep.positions().get(i + 1)
             && sweep
-                .jumps
+                .jumps()
                 .iter()
                 .any(|j| j.y_from >= p.y_ws && j.y_to <= next.y_ws)
         {
@@ -206,7 +206,7 @@ pub(super) fn map_chart(placement: &Placement, title: &str) -> Chart {
 /// `(s, y, z)` of the left wheel's rigid contact at every converged position.
 pub(super) fn left_contacts(sweep: &RigidSweep) -> Vec<(f64, f64, f64)> {
     sweep
-        .positions
+        .positions()
         .iter()
         .filter(|p| p.stop == Stop::Converged)
         .filter_map(|p| p.side(Side::Left).map(|c| (c.s, c.y, c.z)))
