@@ -22,9 +22,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     });
     // Measured flanges fold back at their vertical faces: drop those points (the reader
     // lists them), then smooth the measurement with a 4 mm filter.
-    let options = ReadOptions {
-        step_back: StepBack::Drop,
-    };
+    let options = ReadOptions::new(StepBack::Drop);
     let points = read::read_profile_with(path.as_ref(), ProfileKind::Wheel, &options)?;
     println!(
         "{}: {} points ({} dropped), sha256 {}",

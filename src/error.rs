@@ -1,47 +1,162 @@
 //! The crate's top-level error: every failure a run can meet, each naming the file, line or
-//! scene key it comes from.
+//! scene key it comes from. It sits above the numerics in the module graph: it wraps each
+//! public error type (a `From` for every one, so that `?` mixes them), and no module below
+//! it returns it.
 
 use std::fmt;
+use std::path::PathBuf;
 
-/// Any error of a wheelrail run. The CLI prints it and exits with code 2.
+/// Any error of wheelrail. The CLI prints it and exits with code 2.
 #[derive(Debug)]
 pub enum Error {
     /// A profile file could not be read or is not a valid profile.
     Profile(crate::profile::read::ReadError),
+    /// A spline could not be fitted to a profile's points.
+    Spline(crate::profile::spline::SplineError),
     /// A scene file could not be read or is invalid.
     Scene(crate::scene::SceneError),
-    /// Writing an output failed.
+    /// A track layout or an inclination out of its range.
+    Layout(crate::track::LayoutError),
+    /// A wheel or rail could not be placed.
+    Placement(crate::track::PlacementError),
+    /// Shifts that are no sweep.
+    Sweep(crate::sweep::SweepError),
+    /// Settings of the roll solver out of their range.
+    RollSettings(crate::rigid::RollSettingsError),
+    /// Settings of the quasi-elastic search out of their range.
+    QuasiElasticSettings(crate::quasi_elastic::SettingsError),
+    /// A Hertz input out of its range (a material, curvatures, a load).
+    Hertz(crate::hertz::HertzError),
+    /// Equivalent-conicity amplitudes that are not accepted.
+    ConicitySettings(crate::conicity::SettingsError),
+    /// A Δr function that cannot be used.
+    DeltaR(crate::conicity::DeltaRError),
+    /// A Δr table whose text cannot be read.
+    DeltaRCsv(crate::conicity::DeltaRCsvError),
+    /// Fleet inputs that cannot be used (a pairs file, a shard, no items).
+    Fleet(crate::fleet::FleetError),
+    /// Why a fleet's item failed (its row's status).
+    Row(crate::fleet::RowError),
+    /// A file or folder could not be read or written.
     Io {
-        /// The file or folder being written.
-        path: std::path::PathBuf,
+        /// The file or folder.
+        path: PathBuf,
         /// The underlying error.
         source: std::io::Error,
     },
-    /// Any other failure, described in words.
-    Other(String),
+    /// An output that cannot be written where it is asked for (a file in the way of a
+    /// folder, a name that is no file name, a folder another run is writing).
+    Output {
+        /// The file or folder.
+        path: PathBuf,
+        /// What is in the way.
+        problem: String,
+    },
+    /// A scene whose estimated work exceeds the budget, refused (see `wheelrail report
+    /// --allow-long`).
+    WorkBudget {
+        /// The scene (or a fleet's template) and what the estimate is about.
+        scene: String,
+        /// The estimate and the keys that drive it.
+        estimate: String,
+    },
+    /// A figure asked for a stage result the pipeline did not compute (the results of
+    /// another scene).
+    MissingStage {
+        /// The figure.
+        figure: &'static str,
+        /// The stage it draws.
+        stage: &'static str,
+    },
+    /// A thread pool could not be started.
+    ThreadPool(rayon::ThreadPoolBuildError),
+    /// Command-line arguments that cannot run: what was given and what was expected.
+    #[cfg(feature = "cli")]
+    Usage(String),
+    /// A table whose columns do not fit together.
+    #[cfg(feature = "cli")]
+    Table(crate::report::TableError),
+    /// A chart that cannot be rendered (its name and why).
+    #[cfg(feature = "cli")]
+    Chart(String, crate::report::ChartError),
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::Profile(e) => write!(f, "{e}"),
+            Error::Spline(e) => write!(f, "{e}"),
             Error::Scene(e) => write!(f, "{e}"),
+            Error::Layout(e) => write!(f, "{e}"),
+            Error::Placement(e) => write!(f, "{e}"),
+            Error::Sweep(e) => write!(f, "{e}"),
+            Error::RollSettings(e) => write!(f, "{e}"),
+            Error::QuasiElasticSettings(e) => write!(f, "{e}"),
+            Error::Hertz(e) => write!(f, "{e}"),
+            Error::ConicitySettings(e) => write!(f, "{e}"),
+            Error::DeltaR(e) => write!(f, "{e}"),
+            Error::DeltaRCsv(e) => write!(f, "{e}"),
+            Error::Fleet(e) => write!(f, "{e}"),
+            Error::Row(e) => write!(f, "{e}"),
             Error::Io { path, source } => write!(f, "{}: {source}", path.display()),
-            Error::Other(msg) => f.write_str(msg),
+            Error::Output { path, problem } => write!(f, "{}: {problem}", path.display()),
+            Error::WorkBudget { scene, estimate } => write!(
+                f,
+                "{scene}: {estimate}: refused; coarsen those keys, or run with --allow-long"
+            ),
+            Error::MissingStage { figure, stage } => {
+                write!(f, "figure {figure} needs stage {stage} which did not run")
+            }
+            Error::ThreadPool(e) => write!(f, "cannot start the threads: {e}"),
+            #[cfg(feature = "cli")]
+            Error::Usage(message) => f.write_str(message),
+            #[cfg(feature = "cli")]
+            Error::Table(e) => write!(f, "internal error building a table: {e}"),
+            #[cfg(feature = "cli")]
+            Error::Chart(name, e) => write!(f, "figure {name}: {e}"),
         }
     }
 }
 
-impl std::error::Error for Error {}
-
-impl From<crate::profile::read::ReadError> for Error {
-    fn from(e: crate::profile::read::ReadError) -> Self {
-        Error::Profile(e)
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Io { source, .. } => Some(source),
+            _ => None,
+        }
     }
 }
 
-impl From<crate::scene::SceneError> for Error {
-    fn from(e: crate::scene::SceneError) -> Self {
-        Error::Scene(e)
-    }
+/// `From` for each wrapped error type, so that `?` converts it.
+macro_rules! from {
+    ($($variant:ident($type:ty)),* $(,)?) => {
+        $(impl From<$type> for Error {
+            fn from(e: $type) -> Self {
+                Error::$variant(e)
+            }
+        })*
+    };
+}
+
+from! {
+    Profile(crate::profile::read::ReadError),
+    Spline(crate::profile::spline::SplineError),
+    Scene(crate::scene::SceneError),
+    Layout(crate::track::LayoutError),
+    Placement(crate::track::PlacementError),
+    Sweep(crate::sweep::SweepError),
+    RollSettings(crate::rigid::RollSettingsError),
+    QuasiElasticSettings(crate::quasi_elastic::SettingsError),
+    Hertz(crate::hertz::HertzError),
+    ConicitySettings(crate::conicity::SettingsError),
+    DeltaR(crate::conicity::DeltaRError),
+    DeltaRCsv(crate::conicity::DeltaRCsvError),
+    Fleet(crate::fleet::FleetError),
+    Row(crate::fleet::RowError),
+    ThreadPool(rayon::ThreadPoolBuildError),
+}
+
+#[cfg(feature = "cli")]
+from! {
+    Table(crate::report::TableError),
 }

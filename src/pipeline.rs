@@ -18,7 +18,7 @@ use crate::hertz;
 use crate::profile::{Profile, ProfileKind};
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep};
-use crate::scene::{ProfileRef, Scene};
+use crate::scene::{ProfileRef, Scene, SceneError};
 use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, SidePair};
 use std::sync::Arc;
 use std::time::Instant;
@@ -31,10 +31,11 @@ pub use crate::stage::{Figure, Stage};
 pub struct RunRecord {
     /// The stages run, in order, with their duration in seconds.
     pub stages: Vec<(Stage, f64)>,
-    /// Whether each stage's start and end are printed to stderr as it runs (a long run's
-    /// progress, `wheelrail report --allow-long`).
-    pub progress: bool,
 }
+
+/// A stage starting (`None`) or done after so many seconds, as a run reports it to its
+/// caller's progress callback.
+pub(crate) type Progress<'a> = &'a mut dyn FnMut(Stage, Option<f64>);
 
 impl RunRecord {
     /// Whether `stage` ran.
@@ -42,16 +43,13 @@ impl RunRecord {
         self.stages.iter().any(|(s, _)| *s == stage)
     }
 
-    fn time<T>(&mut self, stage: Stage, f: impl FnOnce() -> T) -> T {
-        if self.progress {
-            eprintln!("{}: running", stage.name());
-        }
+    /// Runs `f` as `stage`, timed, telling `progress` when it starts and ends.
+    fn time<T>(&mut self, stage: Stage, progress: Progress, f: impl FnOnce() -> T) -> T {
+        progress(stage, None);
         let start = Instant::now();
         let out = f();
         let seconds = start.elapsed().as_secs_f64();
-        if self.progress {
-            eprintln!("{}: done in {seconds:.1} s", stage.name());
-        }
+        progress(stage, Some(seconds));
         self.stages.push((stage, seconds));
         out
     }
@@ -114,10 +112,11 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
         .collect()
 }
 
-/// Runs the stages `scene`'s outputs need (and only those: see [`needed_stages`]).
+/// Places the scene's profiles and runs the stages its outputs need (and only those: see
+/// [`needed_stages`]).
 ///
 /// # Errors
-/// [`crate::Error`] when a profile cannot be read or placed.
+/// [`SceneError`] when a profile cannot be read or placed (naming its key).
 ///
 /// # Example
 /// ```
@@ -133,50 +132,38 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
 /// assert_eq!(hertz.positions().len(), 3);
 /// assert!(results.conicity.is_none()); // not needed by the figures
 /// ```
-pub fn run(scene: &Scene) -> Result<Results, crate::Error> {
-    run_gated(scene, |_| Ok(false))
+pub fn run(scene: &Scene) -> Result<Results, SceneError> {
+    run_gated(scene, None, |_| Ok::<_, SceneError>(false), &mut |_, _| {})
 }
 
-/// [`run`], with `gate` called on the placement (the first stage, which every run does)
-/// before any other stage: it may refuse the run (a work budget that needs the profiles),
-/// or return whether to print each stage's start and end to stderr.
-///
-/// # Errors
-/// As [`run`], and `gate`'s error.
-pub fn run_gated(
+/// [`run`], placing the profiles through `cache` when given (the scenes of one run that
+/// share profiles), with `gate` called on the placement (the first stage, which every run
+/// does) before any other stage: it may refuse the run (a work budget that needs the
+/// profiles), or return whether to tell `progress` of each stage's start and end (a long
+/// run's progress).
+pub(crate) fn run_gated<E: From<SceneError>>(
     scene: &Scene,
-    gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
-) -> Result<Results, crate::Error> {
-    run_placed(scene, place, gate)
-}
-
-/// [`run_gated`], placing the profiles through `cache` ([`place_cached`]): for the scenes
-/// of one run that share profiles (`wheelrail report a.toml b.toml`).
-///
-/// # Errors
-/// As [`run_gated`].
-pub fn run_gated_cached(
-    scene: &Scene,
-    cache: &PlacementCache,
-    gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
-) -> Result<Results, crate::Error> {
-    run_placed(scene, |scene| place_cached(scene, cache), gate)
-}
-
-/// [`run_gated`] with the placement made by `place`.
-fn run_placed(
-    scene: &Scene,
-    place: impl FnOnce(&Scene) -> Result<Placement, crate::Error>,
-    gate: impl FnOnce(&Placement) -> Result<bool, crate::Error>,
-) -> Result<Results, crate::Error> {
+    cache: Option<&PlacementCache>,
+    gate: impl FnOnce(&Placement) -> Result<bool, E>,
+    progress: Progress,
+) -> Result<Results, E> {
     let mut record = RunRecord::default();
-    let placement = record.time(Stage::Profiles, || place(scene))?;
-    record.progress = gate(&placement)?;
+    let placement = record.time(Stage::Profiles, &mut |_, _| {}, || match cache {
+        Some(cache) => place_cached(scene, cache),
+        None => place(scene),
+    })?;
+    let mut quiet = |_, _| {};
+    let progress: Progress = if gate(&placement)? {
+        progress
+    } else {
+        &mut quiet
+    };
     Ok(run_recorded(
         scene,
         placement,
         &needed_stages(scene),
         record,
+        progress,
     ))
 }
 
@@ -197,11 +184,13 @@ fn run_placed(
 /// assert!(results.quasi_elastic.is_none());
 /// ```
 pub fn run_on(scene: &Scene, placement: Placement, stages: &[Stage]) -> Results {
+    let stages = closed_stages(scene, stages);
     run_recorded(
         scene,
         placement,
-        &closed_stages(scene, stages),
+        &stages,
         RunRecord::default(),
+        &mut |_, _| {},
     )
 }
 
@@ -211,6 +200,7 @@ fn run_recorded(
     placement: Placement,
     stages: &[Stage],
     record: RunRecord,
+    progress: Progress,
 ) -> Results {
     let mut results = Results {
         placement,
@@ -227,7 +217,7 @@ fn run_recorded(
         match stage {
             Stage::Profiles => {}
             Stage::Rigid => {
-                let r = record.time(stage, || {
+                let r = record.time(stage, progress, || {
                     rigid::search(&results.placement, &scene.sweep, scene.rigid_solver)
                 });
                 results.rigid = Some(Arc::new(r));
@@ -237,7 +227,7 @@ fn run_recorded(
                     .rigid
                     .as_ref()
                     .expect("rigid runs before quasi-elastic");
-                let q = record.time(stage, || {
+                let q = record.time(stage, progress, || {
                     let rigid = Arc::clone(rigid);
                     quasi_elastic::search(&results.placement, rigid, &scene.quasi_elastic)
                 });
@@ -248,7 +238,7 @@ fn run_recorded(
                     .rigid
                     .as_ref()
                     .expect("rigid runs before the sensitivity");
-                let e = record.time(stage, || EpsilonSweeps {
+                let e = record.time(stage, progress, || EpsilonSweeps {
                     runs: scene
                         .epsilon_sensitivity_mm
                         .iter()
@@ -277,7 +267,7 @@ fn run_recorded(
                     }
                 };
                 let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
-                let h = record.time(stage, || {
+                let h = record.time(stage, progress, || {
                     let load = scene.wheel_load_n;
                     hertz::sweep::sweep(contacts, load, e_star, &scene.hertz)
                 });
@@ -288,11 +278,11 @@ fn run_recorded(
                     .rigid
                     .as_ref()
                     .expect("rigid runs before the equivalent conicity");
-                let c = record.time(stage, || conicity::assess(rigid, &scene.conicity));
+                let c = record.time(stage, progress, || conicity::assess(rigid, &scene.conicity));
                 results.conicity = Some(c);
             }
             Stage::HertzAccuracy => {
-                let a = record.time(stage, hertz::accuracy::study);
+                let a = record.time(stage, progress, hertz::accuracy::study);
                 results.hertz_accuracy = Some(a);
             }
         }
@@ -304,8 +294,8 @@ fn run_recorded(
 /// [`assemble`].
 ///
 /// # Errors
-/// [`crate::Error::Scene`] naming the profile key.
-pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
+/// [`SceneError`] naming the profile key.
+pub fn place(scene: &Scene) -> Result<Placement, SceneError> {
     let (wheels, rails) = join_in_pool(|| place_wheels(scene), || place_rails(scene));
     assemble(scene, wheels?, rails?)
 }
@@ -316,7 +306,7 @@ pub fn place(scene: &Scene) -> Result<Placement, crate::Error> {
 ///
 /// # Errors
 /// As [`place`].
-pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, crate::Error> {
+pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, SceneError> {
     let (wheels, rails) = join_in_pool(
         || place_wheels_in(scene, Some(cache)),
         || place_rails_in(scene, Some(cache)),
@@ -344,13 +334,12 @@ where
 }
 
 /// The error of placing the profile of `key`.
-fn placement_error(scene: &Scene, key: &'static str, e: PlacementError) -> crate::Error {
-    crate::scene::SceneError::Profile {
+fn placement_error(scene: &Scene, key: &'static str, e: PlacementError) -> SceneError {
+    SceneError::Profile {
         path: scene.path.clone(),
         key,
         message: e.to_string(),
     }
-    .into()
 }
 
 /// Loads `scene`'s profile `r` of `kind` (the scene key `key`), through `cache` if given.
@@ -360,8 +349,8 @@ fn load_profile(
     r: &ProfileRef,
     kind: ProfileKind,
     key: &'static str,
-) -> Result<Profile, crate::Error> {
-    let load = || scene.load_profile(r, kind, key).map_err(crate::Error::from);
+) -> Result<Profile, SceneError> {
+    let load = || scene.load_profile(r, kind, key);
     match cache {
         Some(cache) => cache.profile(ProfileKey::of(scene, r, kind), load),
         None => load(),
@@ -373,8 +362,8 @@ fn load_profile(
 /// placed once.
 ///
 /// # Errors
-/// [`crate::Error::Scene`] naming the profile key.
-pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], crate::Error> {
+/// [`SceneError`] naming the profile key.
+pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], SceneError> {
     place_wheels_in(scene, None)
 }
 
@@ -382,7 +371,7 @@ pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], crate::Error> {
 fn place_wheels_in(
     scene: &Scene,
     cache: Option<&PlacementCache>,
-) -> Result<[PlacedWheel; 2], crate::Error> {
+) -> Result<[PlacedWheel; 2], SceneError> {
     let keys = scene.wheel_profile_keys;
     let place = |i: usize, profile| {
         PlacedWheel::place(profile, scene.nominal_radius_mm[i], &scene.layout)
@@ -416,8 +405,8 @@ fn place_wheels_in(
 /// left one, shared, when the scene names the same profile.
 ///
 /// # Errors
-/// [`crate::Error::Scene`] naming the profile key.
-pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], crate::Error> {
+/// [`SceneError`] naming the profile key.
+pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     place_rails_in(scene, None)
 }
 
@@ -428,7 +417,7 @@ pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], crate::Error> 
 pub fn place_rails_cached(
     scene: &Scene,
     cache: &PlacementCache,
-) -> Result<[Arc<PlacedRail>; 2], crate::Error> {
+) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     place_rails_in(scene, Some(cache))
 }
 
@@ -436,9 +425,9 @@ pub fn place_rails_cached(
 fn place_rails_in(
     scene: &Scene,
     cache: Option<&PlacementCache>,
-) -> Result<[Arc<PlacedRail>; 2], crate::Error> {
+) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     let keys = scene.rail_profile_keys;
-    let place = |i: usize| -> Result<Arc<PlacedRail>, crate::Error> {
+    let place = |i: usize| -> Result<Arc<PlacedRail>, SceneError> {
         let r = &scene.rail_profiles[i];
         let profile_key = cache.and_then(|_| ProfileKey::of(scene, r, ProfileKind::Rail));
         let place = || {
@@ -476,12 +465,12 @@ fn place_rails_in(
 /// assembles each pair from them.
 ///
 /// # Errors
-/// [`crate::Error::Scene`] naming the wheel's profile key.
+/// [`SceneError`] naming the wheel's profile key.
 pub fn assemble(
     scene: &Scene,
     wheels: [PlacedWheel; 2],
     rails: [Arc<PlacedRail>; 2],
-) -> Result<Placement, crate::Error> {
+) -> Result<Placement, SceneError> {
     let wheel_keys = scene.wheel_profile_keys;
     let [left_wheel, right_wheel] = wheels;
     let [left_rail, right_rail] = rails;

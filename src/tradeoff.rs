@@ -191,7 +191,7 @@ fn with_setting(scene: &Scene, setting: &Setting) -> Scene {
 
 fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::Error> {
     let Some(step) = setting.profile_step_mm else {
-        return pipeline::place(scene);
+        return Ok(pipeline::place(scene)?);
     };
     // The scene's profiles sampled every `step` mm (section joints included) and fitted
     // again by an interpolating spline, as a measured file would be.
@@ -199,7 +199,7 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
         let profile = scene.load_profile(r, kind, "tradeoff")?;
         let points = profile.sample(step).iter().map(|r| [r[0], r[1]]).collect();
         let points = PointProfile::from_points(kind, "sampled", points)?;
-        Profile::from_points(points, 0.0).map_err(|e| crate::Error::Other(e.to_string()))
+        Ok(Profile::from_points(points, 0.0)?)
     };
     let side = |i: usize| -> Result<SidePair, crate::Error> {
         SidePair::place(
@@ -209,7 +209,7 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
             scene.rail_profile_inclination,
             &scene.layout,
         )
-        .map_err(|e| crate::Error::Other(e.to_string()))
+        .map_err(crate::Error::from)
     };
     // One profile and radius for both wheels and one rail profile: one side placed and
     // cloned for the other, as `pipeline::place` places a scene's measured files (the
@@ -220,8 +220,7 @@ fn placement_for(scene: &Scene, setting: &Setting) -> Result<Placement, crate::E
     } else {
         side(1)?
     };
-    Placement::new(scene.layout.clone(), left, right)
-        .map_err(|e| crate::Error::Other(e.to_string()))
+    Placement::new(scene.layout.clone(), left, right).map_err(crate::Error::from)
 }
 
 /// One run of the pipeline's stages (placement included, as a report runs them) under
@@ -258,10 +257,7 @@ pub fn study(
 ) -> Result<Vec<Measurement>, crate::Error> {
     // Timed single-threaded: the stages' own parallelism (rayon) is confined to one thread,
     // so that settings compare by their work, not by how well they parallelise.
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .build()
-        .map_err(|e| crate::Error::Other(format!("cannot start the timing thread: {e}")))?;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
     pool.install(|| study_on_this_thread(scene, settings, repeats, progress))
 }
 

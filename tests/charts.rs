@@ -182,7 +182,7 @@ fn no_legend_of_the_fleet_charts_covers_data_or_labels() {
         files.push(root.join("tests/data/profiles").join(name));
     }
     let template = Scene::load(&root.join("reports/fleet/scene.toml")).unwrap();
-    let limit = template.fleet().conicity_limit;
+    let limit = template.fleet().conicity_limit();
     assert!(limit.is_some(), "the default fleet scene sets a limit");
     let items = fleet::items_of_files(&files, false);
     let fleet = Fleet::new(template, Inputs::Wheels, &items, false).unwrap();

@@ -63,7 +63,7 @@ const OPTIONS: [StepBack; 2] = [StepBack::Refuse, StepBack::Drop];
 /// The readers' contract on one text, for one format, kind and option.
 fn check_parse(text: &str, format: ProfileFormat, kind: ProfileKind, step_back: StepBack) {
     let lines = text.lines().count();
-    match parse_str_with(text, format, kind, "fuzz", &ReadOptions { step_back }) {
+    match parse_str_with(text, format, kind, "fuzz", &ReadOptions::new(step_back)) {
         Ok(p) => {
             assert!(p.points.len() >= MIN_POINTS);
             assert!(p.points.windows(2).all(|w| w[1][0] > w[0][0]));
@@ -588,9 +588,7 @@ fn the_unmutated_inputs_are_accepted() {
                 *format,
                 *kind,
                 "real",
-                &ReadOptions {
-                    step_back: StepBack::Drop,
-                },
+                &ReadOptions::new(StepBack::Drop),
             )
             .is_ok()
         })

@@ -23,9 +23,7 @@ fn data(name: &str) -> PathBuf {
         .join(name)
 }
 
-const DROP: ReadOptions = ReadOptions {
-    step_back: StepBack::Drop,
-};
+const DROP: ReadOptions = ReadOptions::new(StepBack::Drop);
 
 /// The MiniProf files, their kind, and the lines the strict reader names (None: it accepts
 /// the file).

@@ -254,7 +254,7 @@ fn rigid_converges_at_a_contact_on_the_end_of_the_rail_surface() {
         .find(|p| (p.y_ws + 8.4).abs() < 1e-12)
         .unwrap();
     assert_eq!(at.stop, Stop::Converged, "{at:?}");
-    assert!(at.residual <= rigid::RollSettings::default().residual_tol_mm);
+    assert!(at.residual <= rigid::RollSettings::default().residual_tol_mm());
     for p in r.positions() {
         assert_eq!(p.stop, Stop::Converged, "y_ws {}: {:?}", p.y_ws, p.stop);
     }

@@ -28,7 +28,7 @@ fuzz_target!(|data: &[u8]| {
         StepBack::Drop
     };
     let text = String::from_utf8_lossy(rest);
-    let Ok(profile) = parse_str_with(&text, format, kind, "fuzz", &ReadOptions { step_back })
+    let Ok(profile) = parse_str_with(&text, format, kind, "fuzz", &ReadOptions::new(step_back))
     else {
         return;
     };

@@ -51,7 +51,7 @@ fuzz_target!(|data: &[u8]| {
     assert!(
         scene
             .fleet()
-            .conicity_limit
+            .conicity_limit()
             .is_none_or(|l| l > 0.0 && l <= 2.0)
     );
 });

@@ -6,7 +6,7 @@
 
 use super::write::{Group, write_folder};
 use crate::Error;
-use crate::fleet::{self, Fleet, Inputs, Item, Row, Shard};
+use crate::fleet::{self, Fleet, Inputs, Item, Row, RowError, Shard};
 use crate::outputs::{self, OutputFile};
 use crate::scene::Scene;
 use std::io::{IsTerminal, Write};
@@ -64,7 +64,7 @@ fn items(args: &FleetArgs) -> Result<(Vec<Item>, Inputs), Error> {
                 source,
             })?;
             let dir = path.parent().unwrap_or(Path::new(""));
-            fleet::parse_pairs(&text, &path.display().to_string(), dir).map_err(Error::Other)?
+            fleet::parse_pairs(&text, &path.display().to_string(), dir)?
         }
         None => {
             let inputs = if args.rail {
@@ -76,11 +76,11 @@ fn items(args: &FleetArgs) -> Result<(Vec<Item>, Inputs), Error> {
         }
     };
     if items.is_empty() {
-        return Err(Error::Other("no profiles to assess".into()));
+        return Err(fleet::FleetError::NoItems.into());
     }
     let items: Vec<Item> = match &args.shard {
         Some(text) => {
-            let shard = Shard::parse(text).map_err(Error::Other)?;
+            let shard = Shard::parse(text)?;
             items[shard.range(items.len())].to_vec()
         }
         None => items,
@@ -88,7 +88,7 @@ fn items(args: &FleetArgs) -> Result<(Vec<Item>, Inputs), Error> {
     if args.reports
         && let Some(item) = items.iter().find(|i| is_fleet_output(&i.id))
     {
-        return Err(Error::Other(format!(
+        return Err(Error::Usage(format!(
             "id {:?}: --reports would write its report folder where the fleet writes a file of that name; rename the profile file or the pair",
             item.id
         )));
@@ -102,10 +102,10 @@ fn within_budget(fleet: &Fleet, template_path: &str, allow_long: bool) -> Result
     if let Ok(placement) = crate::pipeline::place(fleet.template()) {
         let estimate = crate::cost::estimate(fleet.template(), &placement);
         if !estimate.within_budget() && !allow_long {
-            return Err(Error::Other(format!(
-                "{template_path}: each pair: {}: refused; coarsen those keys, or run with --allow-long",
-                estimate.describe()
-            )));
+            return Err(Error::WorkBudget {
+                scene: format!("{template_path}: each pair"),
+                estimate: estimate.describe(),
+            });
         }
     }
     Ok(())
@@ -114,10 +114,10 @@ fn within_budget(fleet: &Fleet, template_path: &str, allow_long: bool) -> Result
 /// Creates the output folder `dir` (a file in its place is an error).
 fn output_folder(dir: &Path) -> Result<(), Error> {
     if dir.exists() && !dir.is_dir() {
-        return Err(Error::Other(format!(
-            "{}: is a file, not a folder (choose another --out)",
-            dir.display()
-        )));
+        return Err(Error::Output {
+            path: dir.to_path_buf(),
+            problem: "is a file, not a folder (choose another --out)".into(),
+        });
     }
     std::fs::create_dir_all(dir).map_err(|source| Error::Io {
         path: dir.to_path_buf(),
@@ -157,9 +157,11 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
         |item| assess(&fleet, item, args.reports.then_some(dir.as_path())),
         |panic| {
             // Only a bug panics; the row says so and the others run.
-            Err(format!("internal error (please report): {panic}"))
+            Err(RowError::new(format!(
+                "internal error (please report): {panic}"
+            )))
         },
-        |i, row: Result<Row, String>| {
+        |i, row: Result<Row, RowError>| {
             let row = row.unwrap_or_else(|message| Row {
                 id: items[i].id.clone(),
                 files: Vec::new(),
@@ -237,17 +239,17 @@ fn pad_files(fleet: &Fleet, item: &Item, mut row: Row) -> Row {
 }
 
 /// One item's row; with `reports`, its full report written into `reports/<id>/` too.
-fn assess(fleet: &Fleet, item: &Item, reports: Option<&Path>) -> Result<Row, String> {
+fn assess(fleet: &Fleet, item: &Item, reports: Option<&Path>) -> Result<Row, RowError> {
     let Some(dir) = reports else {
         return Ok(fleet.assess(item));
     };
     let run = fleet.run(item);
-    let mut row = fleet.row(item, run.as_ref().map(|(_, r)| r).map_err(String::as_str));
+    let mut row = fleet.row(item, run.as_ref().map(|(_, r)| r));
     if let Ok((scene, results)) = &run {
         let written = outputs::render(scene, results, &[])
             .and_then(|files| write_folder(&dir.join(&item.id), Group::Report, &files));
         if let Err(e) = written {
-            row.outcome = Err(format!("report not written: {e}"));
+            row.outcome = Err(RowError::new(format!("report not written: {e}")));
         }
     }
     Ok(row)

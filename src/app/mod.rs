@@ -138,7 +138,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
         None => {
             let scene = Path::new(PAPER_SCENE);
             if !scene.exists() {
-                return Err(Error::Other(format!(
+                return Err(Error::Usage(format!(
                     "{PAPER_SCENE} not found: run `wheelrail` from the root of the wheelrail checkout, or `wheelrail report SCENE`"
                 )));
             }
@@ -154,7 +154,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
                 return report(&scenes[0], out.as_deref(), timings, allow_long);
             }
             if out.is_some() {
-                return Err(Error::Other(
+                return Err(Error::Usage(
                     "--out takes one scene; several scenes write into their own folders".into(),
                 ));
             }
@@ -181,7 +181,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
         }) => conicity(&delta_r, &method, amplitudes_mm.as_deref()),
         Some(Command::Fleet(args)) => fleet::run(&args),
         Some(Command::Hertz(args)) => {
-            let solved = crate::hertz::cli::run(&args).map_err(|e| Error::Other(e.to_string()))?;
+            let solved = crate::hertz::cli::run(&args)?;
             print!("{}", solved.csv);
             if let Some(note) = solved.note {
                 eprintln!("note: {note}");
@@ -202,7 +202,7 @@ fn report_batch(scenes: &[PathBuf], timings: bool, allow_long: bool) -> Result<E
     let folder = |s: &PathBuf| s.parent().map(Path::to_path_buf).unwrap_or_default();
     for (i, a) in scenes.iter().enumerate() {
         if let Some(b) = scenes[..i].iter().find(|b| folder(b) == folder(a)) {
-            return Err(Error::Other(format!(
+            return Err(Error::Usage(format!(
                 "{} and {} are in the same folder: a report folder holds one scene's report; run them one at a time with --out",
                 b.display(),
                 a.display()
@@ -266,10 +266,7 @@ fn report_in(
 ) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
     let gate = |placement: &_| within_budget(&scene, placement, allow_long);
-    let results = match cache {
-        Some(cache) => pipeline::run_gated_cached(&scene, cache, gate)?,
-        None => pipeline::run_gated(&scene, gate)?,
-    };
+    let results = pipeline::run_gated(&scene, cache, gate, &mut print_progress)?;
     if timings {
         for (stage, seconds) in &results.record.stages {
             eprintln!("{:<20} {:>10.3} ms", stage.name(), 1e3 * seconds);
@@ -358,7 +355,7 @@ pub fn golden_policy() -> TolerancePolicy {
 
 fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<ExitCode, Error> {
     if !(1..=1000).contains(&repeats) {
-        return Err(Error::Other(format!(
+        return Err(Error::Usage(format!(
             "--repeats {repeats}: expected 1 to 1000"
         )));
     }
@@ -401,6 +398,14 @@ fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<Exi
     Ok(ExitCode::SUCCESS)
 }
 
+/// A long run's progress on standard error: each stage as it starts and ends.
+fn print_progress(stage: pipeline::Stage, seconds: Option<f64>) {
+    match seconds {
+        None => eprintln!("{}: running", stage.name()),
+        Some(seconds) => eprintln!("{}: done in {seconds:.1} s", stage.name()),
+    }
+}
+
 /// Refuses a scene whose estimated work exceeds [`crate::cost::WORK_BUDGET`] unless
 /// `allow_long`; returns whether to show progress (a long run that was allowed).
 fn within_budget(
@@ -413,11 +418,10 @@ fn within_budget(
         return Ok(false);
     }
     if !allow_long {
-        return Err(Error::Other(format!(
-            "{}: {}: refused; coarsen those keys, or run with --allow-long",
-            scene.path,
-            estimate.describe()
-        )));
+        return Err(Error::WorkBudget {
+            scene: scene.path.clone(),
+            estimate: estimate.describe(),
+        });
     }
     eprintln!(
         "{}: {}: running (--allow-long)",
@@ -429,7 +433,8 @@ fn within_budget(
 
 fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
-    let results = pipeline::run_gated(&scene, |placement| within_budget(&scene, placement, false))?;
+    let gate = |placement: &_| within_budget(&scene, placement, false);
+    let results = pipeline::run_gated(&scene, None, gate, &mut print_progress)?;
     let produced: Vec<(String, String)> = outputs::tables(&scene, &results)?
         .into_iter()
         .map(|t| (t.file, t.table.to_csv_with(CSV_FORMAT)))
@@ -460,7 +465,11 @@ fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Erro
         })
         .collect();
     // Golden files the run no longer produces are differences too.
-    if let Ok(entries) = std::fs::read_dir(golden) {
+    let entries = std::fs::read_dir(golden).map_err(|source| Error::Io {
+        path: golden.to_path_buf(),
+        source,
+    });
+    if let Ok(entries) = entries {
         for e in entries.flatten() {
             let name = e.file_name().to_string_lossy().into_owned();
             if name.ends_with(".csv") && !produced.iter().any(|(p, _)| *p == name) {
@@ -468,10 +477,7 @@ fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Erro
             }
         }
     } else {
-        return Err(Error::Other(format!(
-            "golden folder {} cannot be read",
-            golden.display()
-        )));
+        entries?;
     }
     let rows: Vec<(&str, Option<&str>, Option<&str>)> = expected
         .iter()
@@ -501,7 +507,7 @@ fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Erro
 fn conicity(path: &Path, method: &str, amplitudes: Option<&str>) -> Result<ExitCode, Error> {
     use crate::conicity::{self, DeltaR, Method};
     let method = Method::from_name(method).ok_or_else(|| {
-        Error::Other(format!(
+        Error::Usage(format!(
             "--method {method:?}: expected \"klingel\" or \"regression\""
         ))
     })?;
@@ -510,13 +516,12 @@ fn conicity(path: &Path, method: &str, amplitudes: Option<&str>) -> Result<ExitC
         path: path.to_path_buf(),
         source,
     })?;
-    let delta_r = DeltaR::parse_csv(&text, &path.display().to_string()).map_err(Error::Other)?;
+    let delta_r = DeltaR::parse_csv(&text, &path.display().to_string())?;
     let result = match amplitudes {
         Some(a) => conicity::equivalent_conicity(&delta_r, &a, method),
         None => conicity::equivalent_conicity_clipped(&delta_r, method),
     };
-    let table = outputs::tables::conicity_points(&result, &path.display().to_string())
-        .map_err(|e| Error::Other(format!("internal error building the table: {e}")))?;
+    let table = outputs::tables::conicity_points(&result, &path.display().to_string())?;
     print!("{}", table.to_csv_with(CSV_FORMAT));
     Ok(ExitCode::SUCCESS)
 }
@@ -524,7 +529,7 @@ fn conicity(path: &Path, method: &str, amplitudes: Option<&str>) -> Result<ExitC
 /// Parses `FROM:TO:STEP` (mm) into the values from FROM to TO (included when the step
 /// divides the range to 1e-9 of a step), at most 100001 of them.
 fn parse_range(text: &str) -> Result<Vec<f64>, Error> {
-    let bad = |why: &str| Error::Other(format!("--amplitudes-mm {text:?}: {why}"));
+    let bad = |why: &str| Error::Usage(format!("--amplitudes-mm {text:?}: {why}"));
     let parts: Vec<&str> = text.split(':').collect();
     let [from, to, step] = parts[..] else {
         return Err(bad("expected FROM:TO:STEP in mm, e.g. 0.5:10:0.1"));
@@ -553,18 +558,17 @@ fn parse_range(text: &str) -> Result<Vec<f64>, Error> {
 
 fn export_profile(name: &str, out: &Path, step_mm: f64) -> Result<ExitCode, Error> {
     let profile = Profile::built_in(name).ok_or_else(|| {
-        Error::Other(format!(
+        Error::Usage(format!(
             "unknown profile {name:?}; built-in profiles: {}",
             crate::profile::BUILT_IN.join(", ")
         ))
     })?;
     if !(0.001..=5.0).contains(&step_mm) {
-        return Err(Error::Other(format!(
+        return Err(Error::Usage(format!(
             "--step-mm {step_mm}: expected 0.001 to 5 mm"
         )));
     }
-    let table = outputs::tables::profile_points(&profile, step_mm)
-        .map_err(|e| Error::Other(format!("internal error building the profile table: {e}")))?;
+    let table = outputs::tables::profile_points(&profile, step_mm)?;
     write_file(
         out,
         table

@@ -51,7 +51,10 @@ impl Group {
 
 /// An error about the folder `dir` (not about the staging folder inside it).
 fn folder_error(dir: &Path, what: &str, source: &std::io::Error) -> Error {
-    Error::Other(format!("{}: cannot {what}: {source}", dir.display()))
+    Error::Output {
+        path: dir.to_path_buf(),
+        problem: format!("cannot {what}: {source}"),
+    }
 }
 
 /// A file name the manifest may name: one plain component, not hidden (so never the
@@ -99,10 +102,12 @@ fn manifest_text(entries: &BTreeSet<(String, String)>) -> String {
 /// changed; a failure during the swap puts the replaced files back.
 pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<(), Error> {
     if dir.exists() && !dir.is_dir() {
-        return Err(Error::Other(format!(
-            "{}: is a file, not a folder (the output goes into a folder; choose another --out)",
-            dir.display()
-        )));
+        return Err(Error::Output {
+            path: dir.to_path_buf(),
+            problem:
+                "is a file, not a folder (the output goes into a folder; choose another --out)"
+                    .into(),
+        });
     }
     std::fs::create_dir_all(dir).map_err(|e| folder_error(dir, "create the folder", &e))?;
     recover_leftovers(dir);
@@ -114,10 +119,10 @@ pub fn write_folder(dir: &Path, group: Group, files: &[OutputFile]) -> Result<()
         if let Ok(meta) = std::fs::symlink_metadata(&path)
             && meta.is_dir()
         {
-            return Err(Error::Other(format!(
-                "{}: is a folder, not a file; wheelrail writes a file of that name: move the folder away or choose another output folder",
-                path.display()
-            )));
+            return Err(Error::Output {
+                path,
+                problem: "is a folder, not a file; wheelrail writes a file of that name: move the folder away or choose another output folder".into(),
+            });
         }
     }
     // The group's earlier files that this run does not write again (only plain files).
@@ -265,18 +270,19 @@ fn swap<'a>(
 /// An [`Error`] naming `path` or its folder.
 pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), Error> {
     if path.is_dir() {
-        return Err(Error::Other(format!(
-            "{}: is a folder, not a file (give a file name)",
-            path.display()
-        )));
+        return Err(Error::Output {
+            path: path.to_path_buf(),
+            problem: "is a folder, not a file (give a file name)".into(),
+        });
     }
     let dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
         .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .ok_or_else(|| Error::Other(format!("{}: not a file name", path.display())))?;
+    let name = path.file_name().ok_or_else(|| Error::Output {
+        path: path.to_path_buf(),
+        problem: "not a file name".into(),
+    })?;
     std::fs::create_dir_all(dir).map_err(|e| folder_error(dir, "create the folder", &e))?;
     let tmp = dir.join(format!(
         ".{}.wheelrail-{}",

@@ -48,6 +48,84 @@ impl fmt::Display for DeltaRError {
 
 impl std::error::Error for DeltaRError {}
 
+/// Why a CSV text is not a Δr table ([`DeltaR::parse_csv`]): the file, the line where known,
+/// and the problem.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeltaRCsvError {
+    /// The file (or the name the text was given).
+    pub origin: String,
+    /// The 1-based line, where the problem has one.
+    pub line: Option<usize>,
+    /// What is wrong.
+    pub problem: CsvProblem,
+}
+
+/// What is wrong with a Δr table's text.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CsvProblem {
+    /// The first row is no header with the columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`.
+    NoHeader(String),
+    /// A row has no value in a column (the column, the row).
+    NoValue(&'static str, String),
+    /// A value is not a number (the column, the text).
+    NotANumber(&'static str, String),
+    /// A value is not finite (the column, the text).
+    NotFinite(&'static str, String),
+    /// No header at all.
+    Empty,
+    /// `y` does not increase from the row before.
+    NotIncreasing {
+        /// The row's `y` (mm).
+        y: f64,
+        /// The line of the row before.
+        previous_line: usize,
+        /// Its `y` (mm).
+        previous_y: f64,
+    },
+    /// A value is not finite.
+    NonFinite,
+    /// The table as a whole is no Δr function.
+    Table(DeltaRError),
+}
+
+impl fmt::Display for DeltaRCsvError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "{}:{line}: ", self.origin)?,
+            None => write!(f, "{}: ", self.origin)?,
+        }
+        match &self.problem {
+            CsvProblem::NoHeader(line) => write!(
+                f,
+                "expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, found {line:?}"
+            ),
+            CsvProblem::NoValue(column, line) => {
+                write!(f, "no value in column {column} in {line:?}")
+            }
+            CsvProblem::NotANumber(column, text) => write!(f, "{column} {text:?} is not a number"),
+            CsvProblem::NotFinite(column, text) => write!(
+                f,
+                "{column} {text} is not finite (leave out rows the rigid search did not converge at)"
+            ),
+            CsvProblem::Empty => {
+                f.write_str("empty: expected a header `y_mm,delta_r_mm` and at least 3 rows")
+            }
+            CsvProblem::NotIncreasing {
+                y,
+                previous_line,
+                previous_y,
+            } => write!(
+                f,
+                "y {y} does not increase (previous row, line {previous_line}: {previous_y})"
+            ),
+            CsvProblem::NonFinite => f.write_str("value not finite"),
+            CsvProblem::Table(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for DeltaRCsvError {}
+
 /// A rolling radius difference function: Δr (mm) linear between points `(y, Δr)`, `y`
 /// increasing. Two consecutive points at the same `y` are a jump of Δr there (a contact-point
 /// jump): the first holds the value from the left, the second the value from the right.
@@ -114,12 +192,17 @@ impl DeltaR {
     /// other columns ignored.
     ///
     /// # Errors
-    /// A message naming `origin` and the line.
-    pub fn parse_csv(text: &str, origin: &str) -> Result<DeltaR, String> {
+    /// [`DeltaRCsvError`], naming `origin` and the line.
+    pub fn parse_csv(text: &str, origin: &str) -> Result<DeltaR, DeltaRCsvError> {
         let mut y = Vec::new();
         let mut dr = Vec::new();
         let mut lines = Vec::new();
         let mut columns: Option<(usize, usize)> = None;
+        let error = |line, problem| DeltaRCsvError {
+            origin: origin.to_string(),
+            line,
+            problem,
+        };
         for (k, raw) in text.lines().enumerate() {
             let line_no = k + 1;
             let line = raw.trim();
@@ -131,27 +214,22 @@ impl DeltaR {
                 let find = |names: &[&str]| cells.iter().position(|c| names.contains(c));
                 match (find(&["y_mm", "y_ws_mm"]), find(&["delta_r_mm"])) {
                     (Some(cy), Some(cd)) => columns = Some((cy, cd)),
-                    _ => {
-                        return Err(format!(
-                            "{origin}:{line_no}: expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, found {line:?}"
-                        ));
-                    }
+                    _ => return Err(error(Some(line_no), CsvProblem::NoHeader(line.into()))),
                 }
                 continue;
             };
-            let cell = |i: usize, column: &str| -> Result<f64, String> {
-                let text = cells.get(i).ok_or_else(|| {
-                    format!("{origin}:{line_no}: no value in column {column} in {line:?}")
-                })?;
-                let v: f64 = text.parse().map_err(|_| {
-                    format!("{origin}:{line_no}: {column} {text:?} is not a number")
-                })?;
+            let cell = |i: usize, column: &'static str| -> Result<f64, DeltaRCsvError> {
+                let at = |problem| error(Some(line_no), problem);
+                let text = cells
+                    .get(i)
+                    .ok_or_else(|| at(CsvProblem::NoValue(column, line.into())))?;
+                let v: f64 = text
+                    .parse()
+                    .map_err(|_| at(CsvProblem::NotANumber(column, text.to_string())))?;
                 if v.is_finite() {
                     Ok(v)
                 } else {
-                    Err(format!(
-                        "{origin}:{line_no}: {column} {text} is not finite (leave out rows the rigid search did not converge at)"
-                    ))
+                    Err(at(CsvProblem::NotFinite(column, text.to_string())))
                 }
             };
             y.push(cell(cy, "y")?);
@@ -159,22 +237,19 @@ impl DeltaR {
             lines.push(line_no);
         }
         if columns.is_none() {
-            return Err(format!(
-                "{origin}: empty: expected a header `y_mm,delta_r_mm` and at least 3 rows"
-            ));
+            return Err(error(None, CsvProblem::Empty));
         }
         DeltaR::new(y.clone(), dr).map_err(|e| match e {
-            DeltaRError::NotIncreasing { index } => format!(
-                "{origin}:{}: y {} does not increase (previous row, line {}: {})",
-                lines[index],
-                y[index],
-                lines[index - 1],
-                y[index - 1]
+            DeltaRError::NotIncreasing { index } => error(
+                Some(lines[index]),
+                CsvProblem::NotIncreasing {
+                    y: y[index],
+                    previous_line: lines[index - 1],
+                    previous_y: y[index - 1],
+                },
             ),
-            DeltaRError::NonFinite { index } => {
-                format!("{origin}:{}: value not finite", lines[index])
-            }
-            other => format!("{origin}: {other}"),
+            DeltaRError::NonFinite { index } => error(Some(lines[index]), CsvProblem::NonFinite),
+            other => error(None, CsvProblem::Table(other)),
         })
     }
 

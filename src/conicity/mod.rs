@@ -59,10 +59,10 @@ mod delta_r;
 pub mod pair;
 mod well;
 
-pub use delta_r::{DeltaR, DeltaRError};
+pub use delta_r::{CsvProblem, DeltaR, DeltaRCsvError, DeltaRError};
 use well::Well;
 
-pub use pair::{PairConicity, Parameters, Settings, assess};
+pub use pair::{PairConicity, Parameters, Settings, SettingsError, assess};
 
 /// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
 pub const REFERENCE_AMPLITUDE_MM: f64 = 3.0;

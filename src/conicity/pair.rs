@@ -17,14 +17,20 @@ pub const REPORT_SHIFT_MM: f64 = 3.0;
 /// The amplitudes bounding Polach's nonlinearity parameter (mm).
 pub const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
 
-/// Settings of the `equivalent_conicity` stage (`[conicity]` in a scene).
+/// The largest amplitude of the equivalent conicity accepted (mm): the motion must stay on
+/// the rail heads, and a scene's `[sweep]` is limited to ±100 mm.
+pub(crate) const MAX_AMPLITUDE_MM: f64 = 100.0;
+
+/// The largest number of amplitudes accepted: as many as a sweep has positions at most.
+const MAX_AMPLITUDES: usize = crate::sweep::MAX_POSITIONS;
+
+/// Settings of the `equivalent_conicity` stage (`[conicity]` in a scene), checked by
+/// [`Settings::with_amplitudes_mm`]. The default: Klingel's method at 0.5 to 10 mm in
+/// 0.1 mm steps, clipped to what the sweep supports.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Settings {
-    /// The method of the pair's parameters (both methods are always tabulated).
-    pub method: Method,
-    /// Amplitudes (mm, increasing); `None`: 0.5 to 10 mm in 0.1 mm steps, clipped to what
-    /// the sweep supports.
-    pub amplitudes_mm: Option<Vec<f64>>,
+    pub(crate) method: Method,
+    pub(crate) amplitudes_mm: Option<Vec<f64>>,
 }
 
 impl Default for Settings {
@@ -33,6 +39,111 @@ impl Default for Settings {
             method: Method::Klingel,
             amplitudes_mm: None,
         }
+    }
+}
+
+/// Why equivalent-conicity amplitudes are not accepted.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SettingsError {
+    /// No amplitudes, or more than 100001.
+    Count {
+        /// How many were given.
+        count: usize,
+    },
+    /// An amplitude that is not a number above 0 and at most 100 mm.
+    OutOfRange {
+        /// Its index (from 0).
+        index: usize,
+        /// The amplitude, mm.
+        amplitude_mm: f64,
+    },
+    /// An amplitude not above the one before it.
+    NotIncreasing {
+        /// The amplitude, mm.
+        amplitude_mm: f64,
+        /// The one before it, mm.
+        previous_mm: f64,
+    },
+}
+
+impl std::fmt::Display for SettingsError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match *self {
+            SettingsError::Count { count } => {
+                write!(
+                    f,
+                    "expected 1 to {MAX_AMPLITUDES} amplitudes, found {count}"
+                )
+            }
+            SettingsError::OutOfRange {
+                index,
+                amplitude_mm,
+            } => write!(
+                f,
+                "amplitude {amplitude_mm} (item {}) must be a number above 0 and at most {MAX_AMPLITUDE_MM} mm",
+                index + 1
+            ),
+            SettingsError::NotIncreasing {
+                amplitude_mm,
+                previous_mm,
+            } => write!(
+                f,
+                "amplitudes must increase: {amplitude_mm} follows {previous_mm}"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SettingsError {}
+
+impl Settings {
+    /// The pair's parameters by `method` (both methods are always tabulated), at the
+    /// default amplitudes.
+    pub fn new(method: Method) -> Settings {
+        Settings {
+            method,
+            amplitudes_mm: None,
+        }
+    }
+
+    /// These settings at the amplitudes `amplitudes_mm` (mm): 1 to 100001 of them,
+    /// increasing, each above 0 and at most 100 mm.
+    ///
+    /// # Errors
+    /// [`SettingsError`] naming the first amplitude that is not accepted.
+    pub fn with_amplitudes_mm(self, amplitudes_mm: Vec<f64>) -> Result<Settings, SettingsError> {
+        let a = &amplitudes_mm;
+        if a.is_empty() || a.len() > MAX_AMPLITUDES {
+            return Err(SettingsError::Count { count: a.len() });
+        }
+        for (index, &v) in a.iter().enumerate() {
+            if !(v.is_finite() && v > 0.0 && v <= MAX_AMPLITUDE_MM) {
+                return Err(SettingsError::OutOfRange {
+                    index,
+                    amplitude_mm: v,
+                });
+            }
+            if index > 0 && v <= a[index - 1] {
+                return Err(SettingsError::NotIncreasing {
+                    amplitude_mm: v,
+                    previous_mm: a[index - 1],
+                });
+            }
+        }
+        Ok(Settings {
+            amplitudes_mm: Some(amplitudes_mm),
+            ..self
+        })
+    }
+
+    /// The method of the pair's parameters.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// The amplitudes (mm, increasing); `None`: the default ones, clipped to the sweep.
+    pub fn amplitudes_mm(&self) -> Option<&[f64]> {
+        self.amplitudes_mm.as_deref()
     }
 }
 

@@ -3,6 +3,7 @@
 //! across machines.
 
 use std::collections::HashSet;
+use std::fmt;
 use std::path::{Path, PathBuf};
 /// One wheelset of the fleet: its id and the files that replace the template's profiles.
 #[derive(Debug, Clone, PartialEq)]
@@ -148,14 +149,106 @@ fn valid_id(id: &str) -> bool {
 /// The columns of a pairs file.
 const PAIR_COLUMNS: [&str; 5] = ["id", "left_wheel", "right_wheel", "left_rail", "right_rail"];
 
+/// Why the inputs of a fleet cannot be used.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FleetError {
+    /// A pairs file that is not one: the file, the line where known, what is wrong.
+    Pairs {
+        /// The pairs file (as named by the caller).
+        origin: String,
+        /// The 1-based line, where the problem has one.
+        line: Option<u64>,
+        /// What is wrong.
+        problem: PairsProblem,
+    },
+    /// A shard that is not `K/N` with `1 <= K <= N` (the text given).
+    Shard(String),
+    /// No profiles or pairs to assess.
+    NoItems,
+}
+
+/// What is wrong with a pairs file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PairsProblem {
+    /// Not CSV (the parser's message).
+    Csv(String),
+    /// A column that is not one of the pairs file's.
+    UnknownColumn(String),
+    /// A column given twice.
+    RepeatedColumn(String),
+    /// One of `id`, `left_wheel`, `right_wheel` is missing.
+    MissingColumn(&'static str),
+    /// Only one of the two rail columns.
+    OneRailColumn,
+    /// An id that cannot name a folder.
+    BadId(String),
+    /// An id given twice.
+    RepeatedId(String),
+    /// An empty cell (the pair's id, the column).
+    EmptyCell(String, &'static str),
+    /// A header and no pairs.
+    NoPairs,
+}
+
+impl fmt::Display for FleetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (origin, line, problem) = match self {
+            FleetError::Pairs {
+                origin,
+                line,
+                problem,
+            } => (origin, line, problem),
+            FleetError::Shard(text) => {
+                return write!(
+                    f,
+                    "--shard {text:?}: expected K/N with 1 <= K <= N, e.g. 3/8"
+                );
+            }
+            FleetError::NoItems => return f.write_str("no profiles to assess"),
+        };
+        match line {
+            Some(line) => write!(f, "{origin}:{line}: ")?,
+            None => write!(f, "{origin}: ")?,
+        }
+        match problem {
+            PairsProblem::Csv(message) => f.write_str(message),
+            PairsProblem::UnknownColumn(name) => {
+                write!(
+                    f,
+                    "unknown column {name:?}; expected {}",
+                    PAIR_COLUMNS.join(",")
+                )
+            }
+            PairsProblem::RepeatedColumn(name) => write!(f, "column {name:?} appears twice"),
+            PairsProblem::MissingColumn(name) => write!(
+                f,
+                "missing column {name:?}; expected id,left_wheel,right_wheel and optionally left_rail,right_rail"
+            ),
+            PairsProblem::OneRailColumn => {
+                f.write_str("give both left_rail and right_rail, or neither")
+            }
+            PairsProblem::BadId(id) => write!(
+                f,
+                "id {id:?}: expected letters, digits, '.', '-' and '_', not starting with '.' (it names the pair's report folder)"
+            ),
+            PairsProblem::RepeatedId(id) => write!(f, "id {id:?} appears twice"),
+            PairsProblem::EmptyCell(id, column) => write!(f, "pair {id:?}: empty {column} cell"),
+            PairsProblem::NoPairs => f.write_str("no pairs (only a header)"),
+        }
+    }
+}
+
+impl std::error::Error for FleetError {}
+
 /// Reads a pairs file: CSV with the columns `id,left_wheel,right_wheel` and optionally
 /// `left_rail,right_rail` (both or neither), `#` comment lines allowed; paths relative to
 /// `dir` (the file's folder). A row with both rail cells empty keeps the template's rails.
 /// `origin` names the file in messages.
 ///
 /// # Errors
-/// A message naming `origin` and the line: malformed CSV, a missing or unknown column, an
-/// empty cell, an id that is repeated or not a folder name, one rail cell of two, no rows.
+/// [`FleetError::Pairs`] naming `origin` and the line: malformed CSV, a missing or unknown
+/// column, an empty cell, an id that is repeated or not a folder name, one rail cell of
+/// two, no rows.
 ///
 /// ```
 /// use std::path::Path;
@@ -164,83 +257,70 @@ const PAIR_COLUMNS: [&str; 5] = ["id", "left_wheel", "right_wheel", "left_rail",
 /// assert_eq!(inputs, Inputs::Pairs { rails: false });
 /// assert_eq!(items[0].wheels.as_ref().unwrap()[1], Path::new("m/b.whl"));
 /// let e = parse_pairs("id,left_wheel,right_wheel\nws1,a.whl,b.whl\nws1,c.whl,d.whl\n", "pairs.csv", Path::new(".")).unwrap_err();
-/// assert!(e.contains("pairs.csv:3") && e.contains("ws1"), "{e}");
+/// assert!(e.to_string().contains("pairs.csv:3") && e.to_string().contains("ws1"), "{e}");
 /// ```
-pub fn parse_pairs(text: &str, origin: &str, dir: &Path) -> Result<(Vec<Item>, Inputs), String> {
+pub fn parse_pairs(
+    text: &str,
+    origin: &str,
+    dir: &Path,
+) -> Result<(Vec<Item>, Inputs), FleetError> {
     let mut reader = csv::ReaderBuilder::new()
         .comment(Some(b'#'))
         .trim(csv::Trim::All)
         .flexible(false)
         .from_reader(text.as_bytes());
-    let at = |line: u64, message: String| format!("{origin}:{line}: {message}");
-    let csv_error = |e: csv::Error| match e.position() {
-        Some(p) => at(p.line(), e.to_string()),
-        None => format!("{origin}: {e}"),
+    let at = |line: Option<u64>, problem| FleetError::Pairs {
+        origin: origin.to_string(),
+        line,
+        problem,
+    };
+    let csv_error = |e: csv::Error| {
+        at(
+            e.position().map(csv::Position::line),
+            PairsProblem::Csv(e.to_string()),
+        )
     };
     let header = reader.headers().map_err(csv_error)?.clone();
-    let header_line = header.position().map_or(1, csv::Position::line);
+    let header_line = Some(header.position().map_or(1, csv::Position::line));
     let mut column = [None; 5];
     for (i, name) in header.iter().enumerate() {
         let Some(k) = PAIR_COLUMNS.iter().position(|c| *c == name) else {
-            return Err(at(
-                header_line,
-                format!(
-                    "unknown column {name:?}; expected {}",
-                    PAIR_COLUMNS.join(",")
-                ),
-            ));
+            return Err(at(header_line, PairsProblem::UnknownColumn(name.into())));
         };
         if column[k].replace(i).is_some() {
-            return Err(at(header_line, format!("column {name:?} appears twice")));
+            return Err(at(header_line, PairsProblem::RepeatedColumn(name.into())));
         }
     }
-    for k in 0..3 {
-        if column[k].is_none() {
-            return Err(at(
-                header_line,
-                format!(
-                    "missing column {:?}; expected id,left_wheel,right_wheel and optionally left_rail,right_rail",
-                    PAIR_COLUMNS[k]
-                ),
-            ));
-        }
+    if let Some(k) = (0..3).find(|&k| column[k].is_none()) {
+        return Err(at(
+            header_line,
+            PairsProblem::MissingColumn(PAIR_COLUMNS[k]),
+        ));
     }
     let rails = match (column[3], column[4]) {
         (None, None) => false,
         (Some(_), Some(_)) => true,
-        _ => {
-            return Err(at(
-                header_line,
-                "give both left_rail and right_rail, or neither".into(),
-            ));
-        }
+        _ => return Err(at(header_line, PairsProblem::OneRailColumn)),
     };
     let mut items = Vec::new();
     let mut ids = HashSet::new();
     for record in reader.records() {
         let record = record.map_err(csv_error)?;
-        let line = record.position().map_or(0, csv::Position::line);
+        let line = Some(record.position().map_or(0, csv::Position::line));
         let cell = |k: usize| column[k].and_then(|i| record.get(i)).unwrap_or("");
         let id = cell(0).to_string();
         if !valid_id(&id) {
-            return Err(at(
-                line,
-                format!(
-                    "id {id:?}: expected letters, digits, '.', '-' and '_', not starting with '.' (it names the pair's report folder)"
-                ),
-            ));
+            return Err(at(line, PairsProblem::BadId(id)));
         }
         if !ids.insert(id.clone()) {
-            return Err(at(line, format!("id {id:?} appears twice")));
+            return Err(at(line, PairsProblem::RepeatedId(id)));
         }
-        let path = |k: usize| -> Result<PathBuf, String> {
-            match cell(k) {
-                "" => Err(at(
-                    line,
-                    format!("pair {id:?}: empty {} cell", PAIR_COLUMNS[k]),
-                )),
-                p => Ok(dir.join(p)),
-            }
+        let path = |k: usize| match cell(k) {
+            "" => Err(at(
+                line,
+                PairsProblem::EmptyCell(id.clone(), PAIR_COLUMNS[k]),
+            )),
+            p => Ok(dir.join(p)),
         };
         let wheels = Some([path(1)?, path(2)?]);
         let rails = match (rails, cell(3), cell(4)) {
@@ -250,7 +330,7 @@ pub fn parse_pairs(text: &str, origin: &str, dir: &Path) -> Result<(Vec<Item>, I
         items.push(Item { id, wheels, rails });
     }
     if items.is_empty() {
-        return Err(format!("{origin}: no pairs (only a header)"));
+        return Err(at(None, PairsProblem::NoPairs));
     }
     Ok((items, Inputs::Pairs { rails }))
 }
@@ -268,15 +348,15 @@ impl Shard {
     /// Parses `K/N` (1 ≤ K ≤ N).
     ///
     /// # Errors
-    /// A message saying what was expected.
+    /// [`FleetError::Shard`].
     ///
     /// ```
     /// use wheelrail::fleet::Shard;
     /// assert_eq!(Shard::parse("2/3"), Ok(Shard { k: 2, n: 3 }));
     /// assert!(Shard::parse("0/3").is_err() && Shard::parse("4/3").is_err());
     /// ```
-    pub fn parse(text: &str) -> Result<Shard, String> {
-        let bad = || format!("--shard {text:?}: expected K/N with 1 <= K <= N, e.g. 3/8");
+    pub fn parse(text: &str) -> Result<Shard, FleetError> {
+        let bad = || FleetError::Shard(text.to_string());
         let (k, n) = text.split_once('/').ok_or_else(bad)?;
         let k: usize = k.trim().parse().map_err(|_| bad())?;
         let n: usize = n.trim().parse().map_err(|_| bad())?;
@@ -336,7 +416,7 @@ mod tests {
         ];
         for (text, expected) in cases {
             let e = parse_pairs(text, "p.csv", Path::new(".")).unwrap_err();
-            assert!(e.contains(expected), "{text:?}: {e}");
+            assert!(e.to_string().contains(expected), "{text:?}: {e}");
         }
         let (items, inputs) = parse_pairs(
             "\u{feff}# measured 2026-11-23\nid,left_wheel,right_wheel,left_rail,right_rail\nws1,a.whl,b.whl,,\nws2,a.whl,b.whl,r.ban,s.ban\n",

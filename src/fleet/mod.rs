@@ -21,7 +21,9 @@
 mod inputs;
 pub mod synthetic;
 
-pub use inputs::{Inputs, Item, Shard, items_of_files, parse_pairs, unique_ids};
+pub use inputs::{
+    FleetError, Inputs, Item, PairsProblem, Shard, items_of_files, parse_pairs, unique_ids,
+};
 
 use crate::cache::PlacementCache;
 use crate::conicity::Parameters;
@@ -124,9 +126,39 @@ pub struct Row {
     pub id: String,
     /// The item's files, in the order of [`Inputs::roles`].
     pub files: Vec<InputFile>,
-    /// The summary, or the error message (the reader's, naming the file and line).
-    pub outcome: Result<Summary, String>,
+    /// The summary, or why the item failed.
+    pub outcome: Result<Summary, RowError>,
 }
+
+/// Why an item's row failed: the message of its first file that could not be read or
+/// placed (the reader's own, naming the file and line, without the template scene's key),
+/// or of a failure while assessing it (a report that could not be written).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowError(String);
+
+impl RowError {
+    /// A failure described by `message` (the row's `status`).
+    pub fn new(message: String) -> RowError {
+        RowError(message)
+    }
+}
+
+impl From<SceneError> for RowError {
+    fn from(e: SceneError) -> RowError {
+        match e {
+            SceneError::Profile { message, .. } => RowError(message),
+            e => RowError(e.to_string()),
+        }
+    }
+}
+
+impl std::fmt::Display for RowError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for RowError {}
 
 /// A template scene with its fixed profiles placed once, ready to assess items.
 #[derive(Debug)]
@@ -155,7 +187,7 @@ impl Fleet {
         inputs: Inputs,
         items: &[Item],
         full: bool,
-    ) -> Result<Fleet, crate::Error> {
+    ) -> Result<Fleet, SceneError> {
         let wheels = if items.iter().any(|i| i.wheels.is_none()) {
             Some(pipeline::place_wheels(&template)?)
         } else {
@@ -239,32 +271,30 @@ impl Fleet {
     /// for all the pairs that list it) and runs the fleet's stages on them.
     ///
     /// # Errors
-    /// The message of the first file that cannot be read or placed (naming the file and
-    /// line), or of a wheel that does not overlap its rail.
-    pub fn run(&self, item: &Item) -> Result<(Scene, Results), String> {
+    /// [`RowError`]: the first file that cannot be read or placed (naming the file and
+    /// line), or a wheel that does not overlap its rail.
+    pub fn run(&self, item: &Item) -> Result<(Scene, Results), RowError> {
         let scene = self.scene_for(item);
         let wheels = match (&item.wheels, &self.wheels) {
-            (Some(_), _) | (None, None) => pipeline::place_wheels(&scene),
-            (None, Some(shared)) => Ok(shared.clone()),
-        }
-        .map_err(message)?;
+            (Some(_), _) | (None, None) => pipeline::place_wheels(&scene)?,
+            (None, Some(shared)) => shared.clone(),
+        };
         let rails = match (&item.rails, &self.rails, &self.rail_cache) {
-            (Some(_), _, Some(cache)) => pipeline::place_rails_cached(&scene, cache),
-            (Some(_), _, None) | (None, None, _) => pipeline::place_rails(&scene),
-            (None, Some(shared), _) => Ok(shared.clone()),
-        }
-        .map_err(message)?;
-        let placement = pipeline::assemble(&scene, wheels, rails).map_err(message)?;
+            (Some(_), _, Some(cache)) => pipeline::place_rails_cached(&scene, cache)?,
+            (Some(_), _, None) | (None, None, _) => pipeline::place_rails(&scene)?,
+            (None, Some(shared), _) => shared.clone(),
+        };
+        let placement = pipeline::assemble(&scene, wheels, rails)?;
         let results = pipeline::run_on(&scene, placement, &self.stages);
         Ok((scene, results))
     }
 
     /// The row of `item`, from [`Fleet::run`] (or from `run`'s results when the caller ran
     /// it, e.g. to write a full report too).
-    pub fn row(&self, item: &Item, run: Result<&Results, &str>) -> Row {
+    pub fn row(&self, item: &Item, run: Result<&Results, &RowError>) -> Row {
         let outcome = run
             .map(|r| summarise(r, &self.template.conicity))
-            .map_err(str::to_string);
+            .map_err(RowError::clone);
         let files = self
             .inputs
             .roles()
@@ -290,7 +320,7 @@ impl Fleet {
     /// Runs and summarises `item`.
     pub fn assess(&self, item: &Item) -> Row {
         let run = self.run(item);
-        self.row(item, run.as_ref().map(|(_, r)| r).map_err(String::as_str))
+        self.row(item, run.as_ref().map(|(_, r)| r))
     }
 }
 
@@ -307,15 +337,6 @@ fn placed_sha256(results: &Results, role: &str) -> Option<String> {
     match profile.source() {
         Source::File { sha256, .. } => Some(sha256.clone()),
         Source::Definition(_) => None,
-    }
-}
-
-/// The message of an item's error: the reader's or placement's own message (it names the
-/// file and line), without the template scene's name and key.
-fn message(e: crate::Error) -> String {
-    match e {
-        crate::Error::Scene(SceneError::Profile { message, .. }) => message,
-        e => e.to_string(),
     }
 }
 

@@ -88,10 +88,8 @@ pub use crate::stop::Stop;
 /// `young_mpa` in MPa (N/mm²); `poisson` dimensionless.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Material {
-    /// Young's modulus (MPa), positive and finite.
-    pub young_mpa: f64,
-    /// Poisson's ratio, in `(-1, 0.5)`.
-    pub poisson: f64,
+    pub(crate) young_mpa: f64,
+    pub(crate) poisson: f64,
 }
 
 impl Material {
@@ -129,6 +127,16 @@ impl Material {
             return Err(HertzError::PoissonOutOfRange { poisson });
         }
         Ok(Material { young_mpa, poisson })
+    }
+
+    /// Young's modulus (MPa), positive and finite.
+    pub fn young_mpa(&self) -> f64 {
+        self.young_mpa
+    }
+
+    /// Poisson's ratio, in `(-1, 0.5)`.
+    pub fn poisson(&self) -> f64 {
+        self.poisson
     }
 }
 

@@ -128,7 +128,7 @@ pub fn csv_line(fleet: &Fleet, row: &Row) -> String {
     let summary = row.outcome.as_ref().ok();
     cells.push(match &row.outcome {
         Ok(_) => "ok".into(),
-        Err(e) => e.clone(),
+        Err(e) => e.to_string(),
     });
     let rows = parameter_rows(summary);
     let mut notes = Vec::new();
@@ -351,7 +351,7 @@ const FIGURES: [(&str, &str); 3] = [
 /// The fleet's figures in the template's formats and `index.html`.
 ///
 /// # Errors
-/// [`Error::Other`] when a figure cannot be rendered.
+/// [`Error::Chart`] when a figure cannot be rendered.
 pub fn render(
     fleet: &Fleet,
     rows: &[Row],
@@ -375,7 +375,7 @@ pub fn render(
             png: String::new(),
         };
         for format in &t.formats {
-            let fail = |e: report::chart::ChartError| Error::Other(format!("figure {name}: {e}"));
+            let fail = |e: report::chart::ChartError| Error::Chart(name.to_string(), e);
             let file = match format {
                 ImageFormat::Svg => {
                     entry.svg = format!("{name}.svg");
@@ -532,7 +532,10 @@ fn failed_notes(failed: &[&Row]) -> Vec<String> {
             format!(
                 "{}: {}",
                 r.id,
-                r.outcome.as_ref().err().map_or("", String::as_str)
+                r.outcome
+                    .as_ref()
+                    .err()
+                    .map_or(String::new(), ToString::to_string)
             )
         })
         .collect();

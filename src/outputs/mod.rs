@@ -41,13 +41,13 @@ pub struct NamedTable {
 pub const CSV_FORMAT: report::NumberFormat = report::NumberFormat::Significant(10);
 
 fn table_error(e: report::TableError) -> Error {
-    Error::Other(format!("internal error building a table: {e}"))
+    Error::Table(e)
 }
 
 /// The tables of every stage that ran.
 ///
 /// # Errors
-/// Only internal inconsistencies (a bug), as [`Error::Other`].
+/// Only internal inconsistencies (a bug), as [`Error::Table`].
 pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error> {
     let mut out = Vec::new();
     let mut push = |file: &str, description: &str, table: Table| {
@@ -146,14 +146,12 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
 /// The chart of `fig`, from the stage result it draws (which the run computed).
 ///
 /// # Errors
-/// [`Error::Other`] if the stage result is missing (the pipeline was run for another scene).
+/// [`Error::MissingStage`] if the stage result is missing (the pipeline was run for another
+/// scene).
 pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
-    let missing = || {
-        Error::Other(format!(
-            "figure {} needs stage {} which did not run",
-            fig.name(),
-            fig.stage().name()
-        ))
+    let missing = || Error::MissingStage {
+        figure: fig.name(),
+        stage: fig.stage().name(),
     };
     let p = &results.placement;
     let rigid = || results.rigid.as_ref().ok_or_else(missing);
@@ -228,7 +226,7 @@ pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
 /// listed in the page after the scene's own.
 ///
 /// # Errors
-/// [`Error::Other`] when a figure cannot be rendered.
+/// [`Error::Chart`] when a figure cannot be rendered.
 pub fn render(
     scene: &Scene,
     results: &Results,
@@ -283,13 +281,12 @@ fn figure_files(
                 ImageFormat::Svg => (
                     format!("{}.svg", fig.name()),
                     report::render_svg(&chart)
-                        .map_err(|e| Error::Other(format!("figure {}: {e}", fig.name())))?
+                        .map_err(|e| Error::Chart(fig.name().into(), e))?
                         .into_bytes(),
                 ),
                 ImageFormat::Png => (
                     format!("{}.png", fig.name()),
-                    report::render_png(&chart)
-                        .map_err(|e| Error::Other(format!("figure {}: {e}", fig.name())))?,
+                    report::render_png(&chart).map_err(|e| Error::Chart(fig.name().into(), e))?,
                 ),
             };
             match format {
@@ -307,7 +304,7 @@ fn figure_files(
 /// that lists the chart in a report.
 ///
 /// # Errors
-/// [`Error::Other`] when the chart cannot be rendered.
+/// [`Error::Chart`] when the chart cannot be rendered.
 pub fn tradeoff_files(
     m: &[crate::tradeoff::Measurement],
     formats: &[ImageFormat],
@@ -325,12 +322,13 @@ pub fn tradeoff_files(
             ImageFormat::Svg => OutputFile {
                 name: "tradeoff.svg".into(),
                 bytes: report::render_svg(&chart)
-                    .map_err(|e| Error::Other(e.to_string()))?
+                    .map_err(|e| Error::Chart("tradeoff".into(), e))?
                     .into_bytes(),
             },
             ImageFormat::Png => OutputFile {
                 name: "tradeoff.png".into(),
-                bytes: report::render_png(&chart).map_err(|e| Error::Other(e.to_string()))?,
+                bytes: report::render_png(&chart)
+                    .map_err(|e| Error::Chart("tradeoff".into(), e))?,
             },
         });
     }

@@ -37,7 +37,7 @@ mod settings;
 mod solve;
 
 use minima::Scratch;
-pub use settings::RollSettings;
+pub use settings::{RollSettings, RollSettingsError};
 use solve::PositionSolver;
 
 use crate::gap::ContactPoint;

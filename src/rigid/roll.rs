@@ -352,10 +352,7 @@ mod tests {
         assert!(default.residual <= RollSettings::default().residual_tol_mm);
         // At 5 mm the start roll (the centre's, 0) is off: the first evaluation is no root.
         assert!(default.iterations > 1, "{default:?}");
-        let capped = RollSettings {
-            max_iter: 1,
-            ..RollSettings::default()
-        };
+        let capped = RollSettings::default().with_max_iter(1).unwrap();
         let p = search(
             &placement,
             &crate::sweep::Sweep::from_slice(&[5.0]).unwrap(),

@@ -512,10 +512,6 @@ fn fleet_settings(raw: &RawFleet) -> Result<FleetSettings, Invalid> {
     Ok(FleetSettings { conicity_limit })
 }
 
-/// The largest amplitude of the equivalent conicity accepted (mm): the motion must stay on
-/// the rail heads, and `[sweep]` is limited to ±100 mm.
-pub const MAX_CONICITY_AMPLITUDE_MM: f64 = 100.0;
-
 /// The settings of `[conicity]`, or the offending key and a message.
 fn conicity_settings(
     raw: &RawConicity,
@@ -530,40 +526,13 @@ fn conicity_settings(
             )
         })?,
     };
-    if let Some(a) = &raw.amplitudes_mm {
-        let key = "conicity.amplitudes_mm";
-        if a.is_empty() || a.len() > crate::sweep::MAX_POSITIONS {
-            return Err((
-                key,
-                format!(
-                    "expected 1 to {} amplitudes, found {}",
-                    crate::sweep::MAX_POSITIONS,
-                    a.len()
-                ),
-            ));
-        }
-        for (i, v) in a.iter().enumerate() {
-            if !(v.is_finite() && *v > 0.0 && *v <= MAX_CONICITY_AMPLITUDE_MM) {
-                return Err((
-                    key,
-                    format!(
-                        "amplitude {v} (item {}) must be a number above 0 and at most {MAX_CONICITY_AMPLITUDE_MM} mm",
-                        i + 1
-                    ),
-                ));
-            }
-            if i > 0 && *v <= a[i - 1] {
-                return Err((
-                    key,
-                    format!("amplitudes must increase: {v} follows {}", a[i - 1]),
-                ));
-            }
-        }
+    let settings = crate::conicity::Settings::new(method);
+    match &raw.amplitudes_mm {
+        None => Ok(settings),
+        Some(a) => settings
+            .with_amplitudes_mm(a.clone())
+            .map_err(|e| ("conicity.amplitudes_mm", e.to_string())),
     }
-    Ok(crate::conicity::Settings {
-        method,
-        amplitudes_mm: raw.amplitudes_mm.clone(),
-    })
 }
 
 /// The key a value was written under: `own` (a per-side or per-body key) when given, else

@@ -12,7 +12,6 @@ use std::path::{Path, PathBuf};
 mod check;
 mod raw;
 
-pub use check::MAX_CONICITY_AMPLITUDE_MM;
 use raw::RawScene;
 
 // The defaults of the scene keys: the paper's case (S1002 on UIC60 1:40, standard gauge and
@@ -213,9 +212,15 @@ pub struct Scene {
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct FleetSettings {
+    pub(crate) conicity_limit: Option<f64>,
+}
+
+impl FleetSettings {
     /// The limit of tan γe(3 mm) marked in the fleet's charts and listed pairs above it
-    /// (dimensionless); `None`: no limit.
-    pub conicity_limit: Option<f64>,
+    /// (dimensionless, above 0 and at most 2, checked with the scene); `None`: no limit.
+    pub fn conicity_limit(&self) -> Option<f64> {
+        self.conicity_limit
+    }
 }
 
 impl Scene {

@@ -212,8 +212,19 @@ pub enum StepBack {
 /// [`read_profile`] and [`parse_str`] do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct ReadOptions {
-    /// What to do with points that step back.
-    pub step_back: StepBack,
+    pub(crate) step_back: StepBack,
+}
+
+impl ReadOptions {
+    /// Reading with `step_back` done to points that step back (any choice is valid).
+    pub const fn new(step_back: StepBack) -> ReadOptions {
+        ReadOptions { step_back }
+    }
+
+    /// What is done with points that step back.
+    pub fn step_back(&self) -> StepBack {
+        self.step_back
+    }
 }
 
 /// Where a profile came from: enough to tell two runs apart that read different files.
@@ -358,7 +369,7 @@ pub fn read_profile(path: &Path, kind: ProfileKind) -> Result<PointProfile, Read
 /// let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/profiles/Car7216_0001r.whl");
 /// // This measured wheel steps back by 0.6 mm at its flange tip (line 223).
 /// assert!(read_profile(&path, ProfileKind::Wheel).is_err());
-/// let options = ReadOptions { step_back: StepBack::Drop };
+/// let options = ReadOptions::new(StepBack::Drop);
 /// let wheel = read_profile_with(&path, ProfileKind::Wheel, &options)?;
 /// assert!(wheel.dropped_step_backs.contains(&223));
 /// assert!(wheel.points.windows(2).all(|w| w[1][0] > w[0][0]));
