@@ -6,7 +6,7 @@
 use divan::black_box;
 use std::path::Path;
 use std::sync::OnceLock;
-use wheelrail::conicity::{self, DeltaR, Method};
+use wheelrail::conicity::{self, ConicityMethod, DeltaR};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::{pipeline, scene::Scene};
 
@@ -25,7 +25,7 @@ fn paper_sweep() -> &'static RigidSweep {
 
 fn paper_delta_r() -> &'static DeltaR {
     static D: OnceLock<DeltaR> = OnceLock::new();
-    D.get_or_init(|| conicity::pair::delta_r_of(paper_sweep()))
+    D.get_or_init(|| conicity::delta_r_of(paper_sweep()))
 }
 
 fn annex_e1() -> &'static DeltaR {
@@ -40,24 +40,27 @@ fn annex_e1() -> &'static DeltaR {
 #[divan::bench]
 fn klingel_96_amplitudes() -> conicity::EquivalentConicity {
     let a = conicity::default_amplitudes_mm();
-    conicity::equivalent_conicity(black_box(paper_delta_r()), &a, Method::Klingel)
+    conicity::equivalent_conicity(black_box(paper_delta_r()), &a, ConicityMethod::Klingel)
 }
 
 /// Regression (Annex C) at the same 96 amplitudes.
 #[divan::bench]
 fn regression_96_amplitudes() -> conicity::EquivalentConicity {
     let a = conicity::default_amplitudes_mm();
-    conicity::equivalent_conicity(black_box(paper_delta_r()), &a, Method::Regression)
+    conicity::equivalent_conicity(black_box(paper_delta_r()), &a, ConicityMethod::Regression)
 }
 
 /// Klingel on the Annex E table of E1, at the default amplitudes it supports (0.5-6.8 mm).
 #[divan::bench]
 fn klingel_annex_e1() -> conicity::EquivalentConicity {
-    conicity::equivalent_conicity_clipped(black_box(annex_e1()), Method::Klingel)
+    conicity::equivalent_conicity_clipped(black_box(annex_e1()), ConicityMethod::Klingel)
 }
 
 /// The whole stage from a rigid sweep: Δr with jumps, both methods, the pair's parameters.
 #[divan::bench]
 fn equivalent_conicity_stage() -> conicity::PairConicity {
-    conicity::assess(black_box(paper_sweep()), &conicity::Settings::default())
+    conicity::assess(
+        black_box(paper_sweep()),
+        &conicity::ConicitySettings::default(),
+    )
 }

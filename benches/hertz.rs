@@ -2,7 +2,7 @@
 //! from elongated to circular. Run with `cargo bench --bench hertz`.
 
 use divan::black_box;
-use wheelrail::hertz::{Contact, HertzError, Method, ellipse};
+use wheelrail::hertz::{Contact, EllipseMethod, HertzError, ellipse};
 
 fn main() {
     divan::main();
@@ -17,7 +17,7 @@ const LOAD: f64 = 70_000.0;
 /// Curvature ratios A/B.
 const RATIOS: [f64; 4] = [1e-3, 0.1, 0.5, 1.0];
 
-fn solve(ratio: f64, method: Method) -> Result<Contact, HertzError> {
+fn solve(ratio: f64, method: EllipseMethod) -> Result<Contact, HertzError> {
     ellipse(
         black_box(ratio * B),
         black_box(B),
@@ -29,10 +29,10 @@ fn solve(ratio: f64, method: Method) -> Result<Contact, HertzError> {
 
 #[divan::bench(args = RATIOS)]
 fn exact(ratio: f64) -> Result<Contact, HertzError> {
-    solve(ratio, Method::Exact)
+    solve(ratio, EllipseMethod::Exact)
 }
 
 #[divan::bench(args = RATIOS)]
 fn paper(ratio: f64) -> Result<Contact, HertzError> {
-    solve(ratio, Method::Paper)
+    solve(ratio, EllipseMethod::Paper)
 }

@@ -212,11 +212,11 @@ fn quasi_elastic_unmirrored() -> QuasiElasticSweep {
 
 /// Hertz ellipses over the sweep, from the quasi-elastic contacts (the scene's default).
 #[divan::bench]
-fn hertz_sweep() -> hertz::sweep::HertzSweep {
+fn hertz_sweep() -> hertz::HertzSweep {
     let s = scene();
     let e_star = hertz::effective_modulus(s.wheel_material(), s.rail_material());
-    let contacts = hertz::sweep::Contacts::QuasiElastic(black_box(quasi_elastic_sweep()));
-    hertz::sweep::sweep(contacts, s.wheel_load_n(), e_star, s.hertz())
+    let contacts = hertz::Contacts::QuasiElastic(black_box(quasi_elastic_sweep()));
+    hertz::sweep(contacts, s.wheel_load_n(), e_star, s.hertz())
 }
 
 /// Positions from -15 to 15 mm, `n` of them: the sweep-length scaling of the rigid sweep

@@ -2,7 +2,7 @@
 //!
 //! Run with `cargo run --release --example hertz_ellipse`.
 
-use wheelrail::hertz::{self, Contact, Material, Method, PrincipalCurvatures};
+use wheelrail::hertz::{self, Contact, EllipseMethod, Material, PrincipalCurvatures};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     // A 460 mm wheel with a straight (conical) tread on a rail head of 300 mm crown radius:
@@ -16,7 +16,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (a, b) = hertz::relative_curvatures(&k, 0.0);
     let steel = Material::new(210e3, 0.3)?; // Young's modulus in MPa
     let e_star = hertz::effective_modulus(&steel, &steel);
-    match hertz::ellipse(a, b, 70e3, e_star, Method::Exact)? {
+    match hertz::ellipse(a, b, 70e3, e_star, EllipseMethod::Exact)? {
         Contact::Hertzian(e) => println!(
             "A = {a:.6} 1/mm, B = {b:.6} 1/mm, 70 kN: a = {:.3} mm (rolling), b = {:.3} mm, p0 = {:.0} MPa",
             e.a_mm, e.b_mm, e.p0_mpa

@@ -47,18 +47,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &Sweep::from_slice(&shifts).unwrap(),
         Solver::default(),
     );
-    let qe = quasi_elastic::search(&placement, rigid, &quasi_elastic::Settings::default());
+    let qe = quasi_elastic::search(
+        &placement,
+        rigid,
+        &quasi_elastic::QuasiElasticSettings::default(),
+    );
 
     // Hertz on the heaviest quasi-elastic patch, 70 kN per wheel, steel on steel.
     let steel = Material::new(210e3, 0.3)?;
     let e_star = hertz::effective_modulus(&steel, &steel);
-    let settings = hertz::sweep::Settings::default();
-    let ellipses = hertz::sweep::sweep(
-        hertz::sweep::Contacts::QuasiElastic(&qe),
-        70e3,
-        e_star,
-        &settings,
-    );
+    let settings = hertz::HertzSettings::default();
+    let ellipses = hertz::sweep(hertz::Contacts::QuasiElastic(&qe), 70e3, e_star, &settings);
 
     println!("y_ws_mm  delta_r_mm  left: a_mm  b_mm  p0_MPa");
     for (position, hertz) in qe.rigid().positions().iter().zip(ellipses.positions()) {

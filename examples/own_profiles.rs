@@ -32,7 +32,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &Sweep::from_slice(&shifts).unwrap(),
         Solver::default(),
     );
-    let pair = conicity::assess(&sweep, &conicity::Settings::default());
+    let pair = conicity::assess(&sweep, &conicity::ConicitySettings::default());
 
     println!("y_ws_mm, delta_r_mm (every 2 mm)");
     for (y, dr) in pair

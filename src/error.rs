@@ -12,7 +12,7 @@ pub enum Error {
     /// A profile file could not be read or is not a valid profile.
     Profile(crate::profile::read::ReadError),
     /// A spline could not be fitted to a profile's points.
-    Spline(crate::profile::spline::SplineError),
+    Spline(crate::profile::SplineError),
     /// A scene file could not be read or is invalid.
     Scene(crate::scene::SceneError),
     /// A track layout or an inclination out of its range.
@@ -24,11 +24,11 @@ pub enum Error {
     /// Settings of the roll solver out of their range.
     RollSettings(crate::rigid::RollSettingsError),
     /// Settings of the quasi-elastic search out of their range.
-    QuasiElasticSettings(crate::quasi_elastic::SettingsError),
+    QuasiElasticSettings(crate::quasi_elastic::QuasiElasticSettingsError),
     /// A Hertz input out of its range (a material, curvatures, a load).
     Hertz(crate::hertz::HertzError),
     /// Equivalent-conicity amplitudes that are not accepted.
-    ConicitySettings(crate::conicity::SettingsError),
+    ConicitySettings(crate::conicity::ConicitySettingsError),
     /// A Δr function that cannot be used.
     DeltaR(crate::conicity::DeltaRError),
     /// A Δr table whose text cannot be read.
@@ -140,15 +140,15 @@ macro_rules! from {
 
 from! {
     Profile(crate::profile::read::ReadError),
-    Spline(crate::profile::spline::SplineError),
+    Spline(crate::profile::SplineError),
     Scene(crate::scene::SceneError),
     Layout(crate::track::LayoutError),
     Placement(crate::track::PlacementError),
     Sweep(crate::sweep::SweepError),
     RollSettings(crate::rigid::RollSettingsError),
-    QuasiElasticSettings(crate::quasi_elastic::SettingsError),
+    QuasiElasticSettings(crate::quasi_elastic::QuasiElasticSettingsError),
     Hertz(crate::hertz::HertzError),
-    ConicitySettings(crate::conicity::SettingsError),
+    ConicitySettings(crate::conicity::ConicitySettingsError),
     DeltaR(crate::conicity::DeltaRError),
     DeltaRCsv(crate::conicity::DeltaRCsvError),
     Fleet(crate::fleet::FleetError),

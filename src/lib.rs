@@ -15,7 +15,7 @@
 //!    parameters of a wheel/rail pair;
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
-//! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
+//! need, `report` (feature `cli`) turns results into bytes (CSV, SVG, PNG, HTML).
 //!
 //! # Quick start
 //!
@@ -38,7 +38,7 @@
 //! let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
 //! let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect(); // mm
 //! let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&shifts).unwrap(), rigid::Solver::default());
-//! let pair = conicity::assess(&sweep, &conicity::Settings::default());
+//! let pair = conicity::assess(&sweep, &conicity::ConicitySettings::default());
 //! let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
 //! assert!((0.1..0.3).contains(&tan_gamma_e_3mm));
 //! # Ok(())
@@ -84,30 +84,40 @@ macro_rules! count {
 
 #[cfg(feature = "cli")]
 pub mod app;
+// The placement cache: public for the benchmark of a cached placement, not part of the API.
+#[doc(hidden)]
 pub mod cache;
 pub mod conicity;
+// The work budget of a run: public for the adversarial scenes' test, not part of the API.
+#[doc(hidden)]
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
-pub mod error;
+mod error;
 pub mod fleet;
+// The gap of a wheel over its rail: public for the reference tests' brute-force searches
+// (`tests/rigid.rs`, `tests/stress.rs`, ...), not part of the API.
+#[doc(hidden)]
 pub mod gap;
 pub mod hertz;
 mod message;
 #[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
+pub mod prelude;
 pub mod profile;
 pub mod quasi_elastic;
+#[cfg(feature = "cli")]
 pub mod report;
 pub mod rigid;
 mod rng;
 pub mod scene;
-pub mod stage;
-pub mod stop;
+mod stage;
+mod stop;
 pub mod sweep;
 pub mod track;
 #[cfg(feature = "cli")]
 pub mod tradeoff;
 
 pub use error::Error;
+pub use stop::Stop;

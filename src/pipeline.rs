@@ -74,7 +74,7 @@ pub struct Results {
     /// Quasi-elastic contact for the sensitivity values of eps.
     pub epsilon: Option<EpsilonSweeps>,
     /// Hertz ellipses over the sweep.
-    pub hertz: Option<hertz::sweep::HertzSweep>,
+    pub hertz: Option<hertz::HertzSweep>,
     /// Equivalent conicity and the pair's parameters.
     pub conicity: Option<conicity::PairConicity>,
     /// Accuracy of the paper's Hertz numerics.
@@ -93,15 +93,14 @@ pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
 /// `wanted` and the stages they depend on ([`Stage::requires`]; Hertz also needs the
 /// quasi-elastic stage when the scene's Hertz contact is quasi-elastic), with
 /// [`Stage::Profiles`], in run order.
-pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
+pub(crate) fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
     let mut wanted: Vec<Stage> = wanted.to_vec();
     wanted.push(Stage::Profiles);
     let mut closed = std::collections::BTreeSet::new();
     while let Some(s) = wanted.pop() {
         if closed.insert(s) {
             wanted.extend_from_slice(s.requires());
-            if s == Stage::Hertz && scene.hertz_contact == hertz::sweep::ContactSource::QuasiElastic
-            {
+            if s == Stage::Hertz && scene.hertz_contact == hertz::ContactSource::QuasiElastic {
                 wanted.push(Stage::QuasiElastic);
             }
         }
@@ -167,7 +166,7 @@ pub(crate) fn run_gated<E: From<SceneError>>(
     ))
 }
 
-/// Runs `stages` (and the stages they depend on, see [`closed_stages`]) of `scene` on a
+/// Runs `stages` (and the stages they depend on, see `closed_stages`) of `scene` on a
 /// placement made by the caller: a study that samples the scene's profiles, or a fleet that
 /// places its shared rail once. Every other input (sweep, solver, quasi-elastic and Hertz
 /// settings, load, materials) is the scene's, so a caller overrides a setting by changing
@@ -243,7 +242,7 @@ fn run_recorded(
                         .epsilon_sensitivity_mm
                         .iter()
                         .map(|&eps| {
-                            let settings = quasi_elastic::Settings {
+                            let settings = quasi_elastic::QuasiElasticSettings {
                                 epsilon_mm: eps,
                                 ..scene.quasi_elastic
                             };
@@ -257,19 +256,19 @@ fn run_recorded(
             }
             Stage::Hertz => {
                 let contacts = match scene.hertz_contact {
-                    hertz::sweep::ContactSource::Rigid => {
+                    hertz::ContactSource::Rigid => {
                         let rigid = results.rigid.as_ref().expect("rigid runs before Hertz");
-                        hertz::sweep::Contacts::Rigid(rigid)
+                        hertz::Contacts::Rigid(rigid)
                     }
-                    hertz::sweep::ContactSource::QuasiElastic => {
+                    hertz::ContactSource::QuasiElastic => {
                         let qe = results.quasi_elastic.as_ref();
-                        hertz::sweep::Contacts::QuasiElastic(qe.expect("its contacts run first"))
+                        hertz::Contacts::QuasiElastic(qe.expect("its contacts run first"))
                     }
                 };
                 let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
                 let h = record.time(stage, progress, || {
                     let load = scene.wheel_load_n;
-                    hertz::sweep::sweep(contacts, load, e_star, &scene.hertz)
+                    hertz::sweep(contacts, load, e_star, &scene.hertz)
                 });
                 results.hertz = Some(h);
             }
@@ -291,7 +290,7 @@ fn run_recorded(
 }
 
 /// Loads the scene's four profiles and places them: [`place_wheels`], [`place_rails`] and
-/// [`assemble`].
+/// `assemble`.
 ///
 /// # Errors
 /// [`SceneError`] naming the profile key.
@@ -306,6 +305,7 @@ pub fn place(scene: &Scene) -> Result<Placement, SceneError> {
 ///
 /// # Errors
 /// As [`place`].
+#[doc(hidden)] // public for the pipeline benchmark
 pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, SceneError> {
     let (wheels, rails) = join_in_pool(
         || place_wheels_in(scene, Some(cache)),
@@ -363,6 +363,7 @@ fn load_profile(
 ///
 /// # Errors
 /// [`SceneError`] naming the profile key.
+#[doc(hidden)] // public for the fleet benchmark
 pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], SceneError> {
     place_wheels_in(scene, None)
 }
@@ -406,6 +407,7 @@ fn place_wheels_in(
 ///
 /// # Errors
 /// [`SceneError`] naming the profile key.
+#[doc(hidden)] // public for the fleet benchmark
 pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     place_rails_in(scene, None)
 }
@@ -414,7 +416,7 @@ pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], SceneError> {
 ///
 /// # Errors
 /// As [`place_rails`].
-pub fn place_rails_cached(
+pub(crate) fn place_rails_cached(
     scene: &Scene,
     cache: &PlacementCache,
 ) -> Result<[Arc<PlacedRail>; 2], SceneError> {
@@ -466,7 +468,7 @@ fn place_rails_in(
 ///
 /// # Errors
 /// [`SceneError`] naming the wheel's profile key.
-pub fn assemble(
+pub(crate) fn assemble(
     scene: &Scene,
     wheels: [PlacedWheel; 2],
     rails: [Arc<PlacedRail>; 2],

@@ -1,33 +1,33 @@
 //! Why an iterative solver stopped: one type for the roll solvers of [`crate::rigid`] and the
-//! ellipse-shape solvers of [`crate::hertz`] (re-exported as `rigid::Stop` and `hertz::Stop`).
+//! ellipse-shape solvers of [`crate::hertz`] (`wheelrail::Stop`, also as `rigid::Stop` and `hertz::Stop`).
 //!
 //! Anything but [`Stop::Converged`] means the numbers did not meet the solver's own tolerance:
 //! the outputs flag such a result instead of plotting it as valid.
-//!
-//! # Texts
-//!
-//! The reason appears in two families of outputs, each with its own spelling, kept as they
-//! were before the two solvers shared this type:
-//!
-//! | variant        | [`Display`](std::fmt::Display) | [`Stop::status_text`] |
-//! |----------------|-------------------|-------------------|
-//! | `Converged`    | `converged`       | `converged`       |
-//! | `IterationCap` | `iteration_cap`   | `iteration cap`   |
-//! | `LeftDomain`   | `left_domain`     | `left domain`     |
-//! | `NoContact`    | `no_contact`      | `no contact`      |
-//! | `Stalled`      | `stalled`         | `stalled`         |
-//!
-//! `Display` is an identifier: the `stop` column of `wheelrail hertz` and the `ellipse: ...`
-//! status of `hertz.csv`. [`Stop::status_text`] is words: the `status` column of
-//! `rigid.csv` and the `rigid search: ...` status of the tables built on a rigid sweep.
 
 use std::fmt;
 
 /// Why an iterative solve stopped.
 ///
+/// # Texts
+///
+/// The reason appears in two families of outputs, each with its own spelling, kept as they
+/// were before the two solvers shared this type:
+///
+/// | variant        | [`Display`](std::fmt::Display) | [`Stop::status_text`] |
+/// |----------------|-------------------|-------------------|
+/// | `Converged`    | `converged`       | `converged`       |
+/// | `IterationCap` | `iteration_cap`   | `iteration cap`   |
+/// | `LeftDomain`   | `left_domain`     | `left domain`     |
+/// | `NoContact`    | `no_contact`      | `no contact`      |
+/// | `Stalled`      | `stalled`         | `stalled`         |
+///
+/// `Display` is an identifier: the `stop` column of `wheelrail hertz` and the `ellipse: ...`
+/// status of `hertz.csv`. [`Stop::status_text`] is words: the `status` column of
+/// `rigid.csv` and the `rigid search: ...` status of the tables built on a rigid sweep.
+///
 /// # Example
 /// ```
-/// use wheelrail::stop::Stop;
+/// use wheelrail::Stop;
 /// assert_eq!(Stop::IterationCap.to_string(), "iteration_cap");
 /// assert_eq!(Stop::IterationCap.status_text(), "iteration cap");
 /// ```
@@ -50,8 +50,8 @@ pub enum Stop {
 }
 
 impl Stop {
-    /// The reason in words, for `status` columns (see the [module docs](self) for the
-    /// mapping to the identifier of [`Display`](fmt::Display)).
+    /// The reason in words, for `status` columns (see [`Stop`] for the mapping to the
+    /// identifier of [`Display`](fmt::Display)).
     pub fn status_text(self) -> &'static str {
         match self {
             Stop::Converged => "converged",

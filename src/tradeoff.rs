@@ -10,7 +10,7 @@
 //! - `roll_rad`; `a_rel`, `b_rel`, `p0_rel`: relative errors of the Hertz results where both
 //!   the setting and the reference have an ellipse.
 
-use crate::hertz::{self, Method};
+use crate::hertz::{self, EllipseMethod};
 use crate::pipeline::{self, Stage};
 use crate::profile::read::PointProfile;
 use crate::profile::{Profile, ProfileKind};
@@ -33,9 +33,9 @@ pub struct Setting {
     /// Rigid solver.
     pub solver: Solver,
     /// Quasi-elastic settings.
-    pub quasi_elastic: quasi_elastic::Settings,
+    pub quasi_elastic: quasi_elastic::QuasiElasticSettings,
     /// Hertz method.
-    pub hertz: Method,
+    pub hertz: EllipseMethod,
 }
 
 /// The measured cost and errors of one setting.
@@ -79,14 +79,14 @@ pub fn reference_setting() -> Setting {
         label: "reference".into(),
         profile_step_mm: None,
         solver: Solver::default(),
-        quasi_elastic: quasi_elastic::Settings {
+        quasi_elastic: quasi_elastic::QuasiElasticSettings {
             cutoff: 60.0,
             quadrature: quasi_elastic::Quadrature::GaussLegendre {
                 panel_widths: REFERENCE_PANEL_WIDTHS,
             },
-            ..quasi_elastic::Settings::default()
+            ..quasi_elastic::QuasiElasticSettings::default()
         },
-        hertz: Method::Exact,
+        hertz: EllipseMethod::Exact,
     }
 }
 
@@ -97,7 +97,7 @@ pub fn default_setting(scene: &Scene) -> Setting {
         profile_step_mm: None,
         solver: Solver::default(),
         quasi_elastic: scene.quasi_elastic,
-        hertz: Method::Exact,
+        hertz: EllipseMethod::Exact,
     }
 }
 
@@ -108,11 +108,11 @@ pub fn paper_setting(scene: &Scene) -> Setting {
         label: "paper".into(),
         profile_step_mm: Some(0.1),
         solver: Solver::Paper,
-        quasi_elastic: quasi_elastic::Settings {
+        quasi_elastic: quasi_elastic::QuasiElasticSettings {
             quadrature: quasi_elastic::Quadrature::Trapezoid { max_step_mm: 0.1 },
             ..scene.quasi_elastic
         },
-        hertz: Method::Paper,
+        hertz: EllipseMethod::Paper,
     }
 }
 
@@ -136,7 +136,7 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
     for max_step in [0.01, 0.05, 0.2] {
         out.push(Setting {
             label: format!("trapezoid {max_step} mm"),
-            quasi_elastic: quasi_elastic::Settings {
+            quasi_elastic: quasi_elastic::QuasiElasticSettings {
                 quadrature: quasi_elastic::Quadrature::Trapezoid {
                     max_step_mm: max_step,
                 },
@@ -148,7 +148,7 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
     for panel_widths in [2.0, 4.0] {
         out.push(Setting {
             label: format!("Gauss-Legendre panels of {panel_widths} widths"),
-            quasi_elastic: quasi_elastic::Settings {
+            quasi_elastic: quasi_elastic::QuasiElasticSettings {
                 quadrature: quasi_elastic::Quadrature::GaussLegendre { panel_widths },
                 ..d.quasi_elastic
             },
@@ -158,7 +158,7 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
     for cutoff in [10.0, 15.0, 37.0] {
         out.push(Setting {
             label: format!("cut-off exp(-{cutoff})"),
-            quasi_elastic: quasi_elastic::Settings {
+            quasi_elastic: quasi_elastic::QuasiElasticSettings {
                 cutoff,
                 ..d.quasi_elastic
             },
@@ -167,7 +167,7 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
     }
     out.push(Setting {
         label: "paper Hertz".into(),
-        hertz: Method::Paper,
+        hertz: EllipseMethod::Paper,
         ..d.clone()
     });
     out
@@ -177,7 +177,7 @@ pub fn grid(scene: &Scene) -> Vec<Setting> {
 struct Run {
     rigid: Arc<RigidSweep>,
     quasi_elastic: QuasiElasticSweep,
-    hertz: hertz::sweep::HertzSweep,
+    hertz: hertz::HertzSweep,
 }
 
 /// The scene with `setting`'s numerical choices in place of its own.

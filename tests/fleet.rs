@@ -677,11 +677,6 @@ fn two_minima_in_one_bracket_of_a_generated_wheel_converge() {
         wheelrail::rigid::Solver::default(),
     );
     for p in sweep.positions() {
-        assert_eq!(
-            p.stop,
-            wheelrail::stop::Stop::Converged,
-            "y_ws = {}",
-            p.y_ws
-        );
+        assert_eq!(p.stop, wheelrail::Stop::Converged, "y_ws = {}", p.y_ws);
     }
 }

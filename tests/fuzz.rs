@@ -29,7 +29,7 @@
 use proptest::prelude::*;
 use std::path::Path;
 use wheelrail::profile::read::{
-    ProfileFormat, ReadError, ReadOptions, StepBack, parse_str_with, validate::MIN_POINTS,
+    PointProfile, ProfileFormat, ReadError, ReadOptions, StepBack, parse_str_with,
 };
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::rigid::{self, Solver, Stop};
@@ -65,7 +65,7 @@ fn check_parse(text: &str, format: ProfileFormat, kind: ProfileKind, step_back: 
     let lines = text.lines().count();
     match parse_str_with(text, format, kind, "fuzz", &ReadOptions::new(step_back)) {
         Ok(p) => {
-            assert!(p.points.len() >= MIN_POINTS);
+            assert!(p.points.len() >= PointProfile::MIN_POINTS);
             assert!(p.points.windows(2).all(|w| w[1][0] > w[0][0]));
             assert!(p.points.iter().flatten().all(|v| v.is_finite()));
             assert!(p.dropped_step_backs.iter().all(|&l| l >= 1 && l <= lines));

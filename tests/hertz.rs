@@ -4,14 +4,14 @@
 use proptest::prelude::*;
 use std::f64::consts::PI;
 use wheelrail::hertz::{
-    Contact, Ellipse, HertzError, Material, Method, NotHertzianReason, PrincipalCurvatures, Stop,
-    accuracy, ellipse, relative_curvatures,
+    Contact, Ellipse, EllipseMethod, HertzError, Material, NotHertzianReason, PrincipalCurvatures,
+    Stop, accuracy, ellipse, relative_curvatures,
 };
 
 /// Steel on steel, E = 210 GPa, ν = 0.3: E* = E / (2 (1 - ν²)).
 const E_STEEL: f64 = 210_000.0 / (2.0 * (1.0 - 0.09));
 
-fn solve(a: f64, b: f64, load: f64, e_star: f64, method: Method) -> Ellipse {
+fn solve(a: f64, b: f64, load: f64, e_star: f64, method: EllipseMethod) -> Ellipse {
     match ellipse(a, b, load, e_star, method) {
         Ok(Contact::Hertzian(e)) => e,
         other => panic!("A = {a}, B = {b}: expected a Hertzian contact, got {other:?}"),
@@ -33,7 +33,7 @@ fn exact_matches_mpmath_references() {
     let mut worst = [0.0f64; 4];
     for line in data.lines().filter(|l| !l.starts_with('#')).skip(1) {
         let v: Vec<f64> = line.split(',').map(|s| s.parse().unwrap()).collect();
-        let c = solve(v[0], v[1], v[2], v[3], Method::Exact);
+        let c = solve(v[0], v[1], v[2], v[3], EllipseMethod::Exact);
         assert_eq!(c.stop, Stop::Converged);
         let got = [c.a_mm, c.b_mm, c.p0_mpa, c.approach_mm];
         for (col, name) in ["a", "b", "p0", "approach"].iter().enumerate() {
@@ -76,7 +76,7 @@ fn classical_coefficients_m_n() {
     for (theta_deg, m, n) in table {
         let cos: f64 = f64::to_radians(theta_deg).cos();
         let a = b * (1.0 - cos) / (1.0 + cos);
-        let c = solve(a, b, load, E_STEEL, Method::Exact);
+        let c = solve(a, b, load, E_STEEL, EllipseMethod::Exact);
         let scale = (3.0 * load / (4.0 * E_STEEL * (a + b))).cbrt();
         assert!(
             (c.a_mm / scale - m).abs() <= 5e-5,
@@ -100,7 +100,7 @@ fn sphere_on_plane_closed_form() {
         (460.0, 7e4, E_STEEL),
         (1.0, 1e-3, 1e3),
     ] {
-        let c = solve(0.5 / r, 0.5 / r, load, e_star, Method::Exact);
+        let c = solve(0.5 / r, 0.5 / r, load, e_star, EllipseMethod::Exact);
         let a = (3.0 * load * r / (4.0 * e_star)).cbrt();
         assert!(rel(c.a_mm, a) <= 1e-14 && rel(c.b_mm, a) <= 1e-14);
         assert!(rel(c.approach_mm, a * a / r) <= 1e-14);
@@ -117,8 +117,8 @@ fn sphere_on_plane_closed_form() {
 #[test]
 fn near_circle_is_continuous() {
     let b = 0.01;
-    let circle = solve(b, b, 1e3, E_STEEL, Method::Exact);
-    let near = solve(b * (1.0 - 1e-12), b, 1e3, E_STEEL, Method::Exact);
+    let circle = solve(b, b, 1e3, E_STEEL, EllipseMethod::Exact);
+    let near = solve(b * (1.0 - 1e-12), b, 1e3, E_STEEL, EllipseMethod::Exact);
     assert!(rel(near.a_mm, circle.a_mm) <= 1e-12 && near.a_mm > circle.a_mm);
     assert!(rel(near.b_mm, circle.b_mm) <= 1e-12);
     assert!(rel(near.approach_mm, circle.approach_mm) <= 1e-12);
@@ -130,7 +130,7 @@ fn near_circle_is_continuous() {
 fn extreme_ratios_stay_finite_and_monotonic() {
     let mut last_ratio = f64::INFINITY;
     for k in 0..=300 {
-        let c = solve(10f64.powi(-k), 1.0, 1.0, 1.0, Method::Exact);
+        let c = solve(10f64.powi(-k), 1.0, 1.0, 1.0, EllipseMethod::Exact);
         assert_eq!(c.stop, Stop::Converged);
         let g = c.b_mm / c.a_mm;
         assert!(
@@ -152,7 +152,7 @@ fn not_hertzian_cases_are_results() {
         (0.01, -0.001, NotHertzianReason::NonPositiveLateral),
     ];
     for (a, b, reason) in cases {
-        for method in [Method::Exact, Method::Paper] {
+        for method in [EllipseMethod::Exact, EllipseMethod::Paper] {
             assert_eq!(
                 ellipse(a, b, 1e4, E_STEEL, method),
                 Ok(Contact::NotHertzian(reason)),
@@ -164,7 +164,7 @@ fn not_hertzian_cases_are_results() {
 
 #[test]
 fn invalid_inputs_are_errors_named_after_the_condition() {
-    let m = Method::Exact;
+    let m = EllipseMethod::Exact;
     assert_eq!(
         ellipse(0.01, 0.01, 0.0, E_STEEL, m),
         Err(HertzError::NonPositiveLoad { load_n: 0.0 })
@@ -281,7 +281,7 @@ proptest! {
     #[test]
     fn swapping_a_and_b_swaps_the_axes(
         a in 1e-6..1.0f64, b in 1e-6..1.0f64, load in 1.0..1e6f64,
-        method in prop_oneof![Just(Method::Exact), Just(Method::Paper)],
+        method in prop_oneof![Just(EllipseMethod::Exact), Just(EllipseMethod::Paper)],
     ) {
         let x = solve(a, b, load, E_STEEL, method);
         let y = solve(b, a, load, E_STEEL, method);
@@ -295,7 +295,7 @@ proptest! {
     #[test]
     fn eight_times_the_load_doubles_a_b_p0(
         a in 1e-6..1.0f64, b in 1e-6..1.0f64, load in 1.0..1e6f64,
-        method in prop_oneof![Just(Method::Exact), Just(Method::Paper)],
+        method in prop_oneof![Just(EllipseMethod::Exact), Just(EllipseMethod::Paper)],
     ) {
         let x = solve(a, b, load, E_STEEL, method);
         let y = solve(a, b, 8.0 * load, E_STEEL, method);
@@ -309,7 +309,7 @@ proptest! {
     /// and carries a stop reason.
     #[test]
     fn paper_method_is_finite(a in 1e-300..1.0f64, b in 1e-300..1.0f64) {
-        let c = solve(a, b, 1e4, E_STEEL, Method::Paper);
+        let c = solve(a, b, 1e4, E_STEEL, EllipseMethod::Paper);
         prop_assert!(c.a_mm.is_finite() && c.b_mm.is_finite() && c.a_mm > 0.0 && c.b_mm > 0.0);
         prop_assert!(c.p0_mpa.is_finite() && c.approach_mm.is_finite());
         prop_assert!(c.eccentricity > 0.0 && c.eccentricity < 1.0);
@@ -349,8 +349,8 @@ fn paper_error_table() {
     for ratio in [
         1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.05, 0.1, 0.2, 0.5, 0.8, 0.9, 0.99, 0.999, 1.0,
     ] {
-        let x = solve(ratio * b, b, 7e4, E_STEEL, Method::Exact);
-        let p = solve(ratio * b, b, 7e4, E_STEEL, Method::Paper);
+        let x = solve(ratio * b, b, 7e4, E_STEEL, EllipseMethod::Exact);
+        let p = solve(ratio * b, b, 7e4, E_STEEL, EllipseMethod::Paper);
         let g_exact = x.b_mm / x.a_mm;
         let err_g = (p.b_mm / p.a_mm) / g_exact - 1.0;
         let err_a = p.a_mm / x.a_mm - 1.0;

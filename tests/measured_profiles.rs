@@ -8,11 +8,13 @@
 use std::path::{Path, PathBuf};
 use wheelrail::gap::{SideGap, SidePose};
 use wheelrail::profile::read::{ReadError, ReadOptions, StepBack, read_profile, read_profile_with};
-use wheelrail::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM;
 use wheelrail::profile::{Profile, ProfileKind};
-use wheelrail::quasi_elastic::{self, Settings};
+use wheelrail::quasi_elastic::{self, QuasiElasticSettings};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::sweep::Sweep;
+
+/// The filter wavelength measured profiles want (mm): the README's 4 mm.
+const FILTER_WAVELENGTH_MM: f64 = 4.0;
 use wheelrail::track::{
     Inclination, PlacedRail, PlacedWheel, Placement, Side, SidePair, TrackLayout,
 };
@@ -82,7 +84,7 @@ fn layout() -> TrackLayout {
 
 fn measured(name: &str, kind: ProfileKind) -> Profile {
     let points = read_profile_with(&data(name), kind, &DROP).unwrap();
-    Profile::from_points(points, DEFAULT_FILTER_WAVELENGTH_MM).unwrap()
+    Profile::from_points(points, FILTER_WAVELENGTH_MM).unwrap()
 }
 
 fn placement(wheel: Profile, rail: Profile, rail_inclination: Inclination) -> Placement {
@@ -105,7 +107,7 @@ fn check(placement: &Placement, name: &str) -> usize {
         &Sweep::from_slice(&ys).unwrap(),
         Solver::default(),
     );
-    let qe = quasi_elastic::search(placement, sweep.clone(), &Settings::default());
+    let qe = quasi_elastic::search(placement, sweep.clone(), &QuasiElasticSettings::default());
     let mut converged = 0;
     for (pos, q) in sweep.positions().iter().zip(qe.positions()) {
         if pos.stop != Stop::Converged {

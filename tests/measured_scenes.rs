@@ -88,16 +88,16 @@ fn measured_scenes_complete_with_finite_or_flagged_rows() {
 #[test]
 fn quasi_elastic_on_measured_profiles_is_converged() {
     use wheelrail::hertz;
-    use wheelrail::quasi_elastic::{self, Quadrature, Settings};
+    use wheelrail::quasi_elastic::{self, Quadrature, QuasiElasticSettings};
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/measured_average/scene.toml");
     let scene = Scene::load(&path).unwrap();
     let placement = pipeline::place(&scene).unwrap();
     let rigid = wheelrail::rigid::search(&placement, scene.sweep(), Default::default());
     let e_star = hertz::effective_modulus(scene.wheel_material(), scene.rail_material());
-    let run = |settings: &Settings| {
+    let run = |settings: &QuasiElasticSettings| {
         let qe = quasi_elastic::search(&placement, rigid.clone(), settings);
-        let contacts = hertz::sweep::Contacts::QuasiElastic(&qe);
-        let h = hertz::sweep::sweep(contacts, scene.wheel_load_n(), e_star, scene.hertz());
+        let contacts = hertz::Contacts::QuasiElastic(&qe);
+        let h = hertz::sweep(contacts, scene.wheel_load_n(), e_star, scene.hertz());
         (qe, h)
     };
     let (qe, default) = run(scene.quasi_elastic());

@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use std::path::Path;
 use std::sync::OnceLock;
-use wheelrail::quasi_elastic::{self, Settings, average};
+use wheelrail::quasi_elastic::{self, QuasiElasticSettings, average};
 use wheelrail::rigid::{self, Solver};
 use wheelrail::scene::Scene;
 use wheelrail::sweep::Sweep;
@@ -18,8 +18,8 @@ fn placement() -> &'static Placement {
     })
 }
 
-fn eps(e: f64) -> Settings {
-    Settings::default().with_epsilon(e).unwrap()
+fn eps(e: f64) -> QuasiElasticSettings {
+    QuasiElasticSettings::default().with_epsilon(e).unwrap()
 }
 
 #[test]
@@ -97,11 +97,11 @@ fn cutoff_changes_nothing_at_output_precision() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let a = quasi_elastic::search(placement(), r.clone(), &Settings::default());
+    let a = quasi_elastic::search(placement(), r.clone(), &QuasiElasticSettings::default());
     let b = quasi_elastic::search(
         placement(),
         r.clone(),
-        &Settings::default().with_cutoff(60.0).unwrap(),
+        &QuasiElasticSettings::default().with_cutoff(60.0).unwrap(),
     );
     for (p, q) in a.positions().iter().zip(b.positions()) {
         for side in [Side::Left, Side::Right] {
@@ -167,7 +167,7 @@ fn smooths_the_rigid_jumps() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let q = quasi_elastic::search(placement(), r.clone(), &Settings::default());
+    let q = quasi_elastic::search(placement(), r.clone(), &QuasiElasticSettings::default());
     let mut rigid_max: f64 = 0.0;
     for (a, b) in r.positions().iter().zip(&r.positions()[1..]) {
         rigid_max =
@@ -206,7 +206,7 @@ proptest! {
         // Both shifts solved and averaged: a mirror-symmetric placement would mirror them.
         let unmirrored = placement().clone().without_mirroring();
         let r = rigid::search(&unmirrored, &Sweep::from_slice(&[-y, y]).unwrap(), Solver::default());
-        let q = quasi_elastic::search(&unmirrored, r.clone(), &Settings::default());
+        let q = quasi_elastic::search(&unmirrored, r.clone(), &QuasiElasticSettings::default());
         let (m, p) = (&q.positions()[0], &q.positions()[1]);
         let pairs = [(m.side(Side::Left), p.side(Side::Right)), (m.side(Side::Right), p.side(Side::Left))];
         for (a, b) in pairs {
@@ -236,7 +236,7 @@ fn weight_shares_match_an_independent_integration() {
         &Sweep::from_slice(&sweep).unwrap(),
         Solver::default(),
     );
-    let q = quasi_elastic::search(placement(), r.clone(), &Settings::default());
+    let q = quasi_elastic::search(placement(), r.clone(), &QuasiElasticSettings::default());
     let side = SideGap::new(placement().left(), 1.0);
     let mut checked = 0;
     for (rp, qp) in r.positions().iter().zip(q.positions()) {

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 use wheelrail::profile::Profile;
-use wheelrail::quasi_elastic::{self, Settings};
+use wheelrail::quasi_elastic::{self, QuasiElasticSettings};
 use wheelrail::rigid::{self, Solver, Stop};
 use wheelrail::scene::Scene;
 use wheelrail::sweep::Sweep;
@@ -34,7 +34,7 @@ fn quasi_elastic_regions_share_the_rigid_minimum() {
         Solver::default(),
     );
     for eps in [1e-3, 3e-3] {
-        let settings = Settings::default().with_epsilon(eps).unwrap();
+        let settings = QuasiElasticSettings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
         for (p, q) in rigid.positions().iter().zip(qe.positions()) {
             assert_eq!(p.stop, Stop::Converged);
@@ -91,7 +91,7 @@ fn s1002_end_of_definition_has_finite_derivatives() {
         &Sweep::from_slice(&[-45.0, 45.0]).unwrap(),
         Solver::default(),
     );
-    let settings = Settings::default().with_epsilon(1.0).unwrap();
+    let settings = QuasiElasticSettings::default().with_epsilon(1.0).unwrap();
     let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
     for q in qe.positions() {
         for side in [Side::Left, Side::Right] {
@@ -125,7 +125,7 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
         Solver::default(),
     );
     for eps in [1e-5, 1e-4] {
-        let settings = Settings::default().with_epsilon(eps).unwrap();
+        let settings = QuasiElasticSettings::default().with_epsilon(eps).unwrap();
         let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
         // The invariant guarded here: a converged rigid contact has a quasi-elastic patch.
         // (With these absurd radii, roll 0.19 rad, the rigid search may also flag a position
@@ -204,7 +204,7 @@ fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
         &Sweep::from_slice(&ys).unwrap(),
         Solver::default(),
     );
-    let settings = Settings::default().with_epsilon(1e-5).unwrap();
+    let settings = QuasiElasticSettings::default().with_epsilon(1e-5).unwrap();
     let qe = quasi_elastic::search(&placement, rigid.clone(), &settings);
     let mut checked = 0;
     for (p, q) in rigid.positions().iter().zip(qe.positions()) {

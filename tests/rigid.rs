@@ -44,7 +44,7 @@ fn paper_sweep(solver: Solver) -> &'static rigid::RigidSweep {
 }
 
 /// The smallest gap of one side over wheel points every `step` mm, at a solved position.
-fn min_gap(side: Side, pos: &rigid::Position, step: f64) -> f64 {
+fn min_gap(side: Side, pos: &rigid::RigidPosition, step: f64) -> f64 {
     let placement = paper_placement();
     let sign = side.sign();
     let gap = SideGap::new(placement.side(side), sign);
@@ -59,7 +59,7 @@ fn min_gap(side: Side, pos: &rigid::Position, step: f64) -> f64 {
 /// How far the contact point of `side` moves per radian of roll at a solved position
 /// (mm/rad), `|d g'/d phi| / g''` at the contact (implicit function theorem on `g'(s) = 0`,
 /// the roll derivative by central differences of `g'` over 1e-6 rad), and `g''` there.
-fn contact_roll_sensitivity(pos: &rigid::Position, side: Side) -> (f64, f64) {
+fn contact_roll_sensitivity(pos: &rigid::RigidPosition, side: Side) -> (f64, f64) {
     let sign = side.sign();
     let gap = SideGap::new(paper_placement().side(side), sign);
     let s = pos.side(side).unwrap().s;
@@ -236,7 +236,8 @@ fn known_features_of_s1002_on_uic60_at_1_in_40() {
         .expect("flange contact within the sweep");
     assert!((6.0..7.0).contains(&onset.y_ws), "onset at {}", onset.y_ws);
     // ... and the rolling radius difference exceeds 10 mm within half a millimetre of it.
-    let dr = |p: &rigid::Position| p.side(Side::Left).unwrap().r - p.side(Side::Right).unwrap().r;
+    let dr =
+        |p: &rigid::RigidPosition| p.side(Side::Left).unwrap().r - p.side(Side::Right).unwrap().r;
     assert!(
         sweep
             .positions()

@@ -8,7 +8,7 @@ mod common;
 use common::{assert_clean_failure, report_scene, root, scratch, stderr};
 use std::path::{Path, PathBuf};
 use std::process::Output;
-use wheelrail::quasi_elastic::{self, Quadrature, Settings};
+use wheelrail::quasi_elastic::{self, Quadrature, QuasiElasticSettings};
 use wheelrail::scene::Scene;
 
 /// Writes `text` as `scene.toml` in a fresh folder and runs `wheelrail report` on it.
@@ -59,11 +59,17 @@ fn trapezoid_search_with_the_largest_step_terminates() {
     let huge = Quadrature::Trapezoid {
         max_step_mm: f64::MAX,
     };
-    assert!(Settings::default().with_quadrature(huge).is_err());
+    assert!(
+        QuasiElasticSettings::default()
+            .with_quadrature(huge)
+            .is_err()
+    );
     let largest = Quadrature::Trapezoid {
-        max_step_mm: wheelrail::quasi_elastic::TRAPEZOID_STEP_RANGE_MM.1,
+        max_step_mm: wheelrail::quasi_elastic::QuasiElasticSettings::TRAPEZOID_STEP_RANGE_MM.1,
     };
-    let settings = Settings::default().with_quadrature(largest).unwrap();
+    let settings = QuasiElasticSettings::default()
+        .with_quadrature(largest)
+        .unwrap();
     let q = quasi_elastic::search(&placement, rigid.clone(), &settings);
     assert_eq!(q.positions().len(), 5);
     for p in q.positions() {

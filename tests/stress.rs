@@ -47,11 +47,11 @@ use proptest::prelude::*;
 use std::f64::consts::PI;
 use std::path::Path;
 use wheelrail::gap::{SideGap, SidePose};
-use wheelrail::hertz::{self, Contact, Material, Method};
+use wheelrail::hertz::{self, Contact, EllipseMethod, Material};
 use wheelrail::profile::read::{ProfileFormat, parse_str};
 use wheelrail::profile::{Profile, ProfileKind};
-use wheelrail::quasi_elastic::{self, Settings};
-use wheelrail::rigid::{self, Position, RigidSweep, Solver, Stop};
+use wheelrail::quasi_elastic::{self, QuasiElasticSettings};
+use wheelrail::rigid::{self, RigidPosition, RigidSweep, Solver, Stop};
 use wheelrail::scene::Scene;
 use wheelrail::sweep::Sweep;
 use wheelrail::track::{
@@ -118,7 +118,7 @@ fn e_star(young_gpa: f64, nu: f64) -> f64 {
     hertz::effective_modulus(&m, &m)
 }
 
-fn solve(a: f64, b: f64, p: f64, e: f64, method: Method) -> hertz::Ellipse {
+fn solve(a: f64, b: f64, p: f64, e: f64, method: EllipseMethod) -> hertz::Ellipse {
     match hertz::ellipse(a, b, p, e, method) {
         Ok(Contact::Hertzian(c)) => c,
         other => panic!("A = {a}, B = {b}, P = {p}, E* = {e}, {method}: {other:?}"),
@@ -149,7 +149,7 @@ proptest! {
         nu in 0.0..=0.49_f64,
         paper in any::<bool>(),
     ) {
-        let method = if paper { Method::Paper } else { Method::Exact };
+        let method = if paper { EllipseMethod::Paper } else { EllipseMethod::Exact };
         let b = 10f64.powf(b_log);
         let a = ratio * b;
         let p = 10f64.powf(load_log);
@@ -165,7 +165,7 @@ proptest! {
             prop_assert!(v.is_finite() && v > 0.0, "{name} = {v} for {c:?}");
         }
         prop_assert!((0.0..1.0).contains(&c.eccentricity), "{c:?}");
-        if method == Method::Exact {
+        if method == EllipseMethod::Exact {
             prop_assert_eq!(c.stop, Stop::Converged);
         }
         // Hertz: the shape depends on A/B only, so 8 P doubles a, b and p0 and quadruples
@@ -204,7 +204,7 @@ proptest! {
         let a = ratio * b;
         let p = 10f64.powf(load_log);
         let e = e_star(young_gpa, nu);
-        let c = solve(a, b, p, e, Method::Exact);
+        let c = solve(a, b, p, e, EllipseMethod::Exact);
         let (major, minor) = (c.a_mm.max(c.b_mm), c.a_mm.min(c.b_mm));
         // A is the smaller curvature here, so the major axis lies along A.
         prop_assert!(c.a_mm >= c.b_mm);
@@ -373,7 +373,7 @@ fn penetration_tol(placement: &Placement, side: Side) -> f64 {
 const GAP_CHECK_STEP_MM: f64 = 0.02;
 
 /// Gaps `d(s)` (mm, axle height included) of one side at a solved position, every `step`.
-fn gaps(placement: &Placement, side: Side, pos: &Position, step: f64) -> Vec<(f64, f64)> {
+fn gaps(placement: &Placement, side: Side, pos: &RigidPosition, step: f64) -> Vec<(f64, f64)> {
     let sign = side.sign();
     let gap = SideGap::new(placement.side(side), sign);
     let pose = SidePose::new(sign, pos.y_ws, pos.roll);
@@ -447,7 +447,7 @@ fn check_rigid(placement: &Placement, sweep: &RigidSweep, context: &str) -> usiz
 fn check_quasi_elastic(
     placement: &Placement,
     sweep: &RigidSweep,
-    settings: &Settings,
+    settings: &QuasiElasticSettings,
     context: &str,
 ) {
     let qe = quasi_elastic::search(placement, sweep.clone(), settings);
@@ -530,7 +530,7 @@ fn run(placement: &Placement, ys: &[f64], eps_mm: f64, context: &str) -> RigidSw
     );
     assert_eq!(sweep.positions().len(), ys.len(), "{context}");
     check_rigid(placement, &sweep, context);
-    let settings = Settings::default()
+    let settings = QuasiElasticSettings::default()
         .with_epsilon(eps_mm)
         .expect("eps in range");
     check_quasi_elastic(placement, &sweep, &settings, context);

@@ -32,7 +32,7 @@ fuzz_target!(|data: &[u8]| {
     else {
         return;
     };
-    assert!(profile.points.len() >= wheelrail::profile::read::validate::MIN_POINTS);
+    assert!(profile.points.len() >= wheelrail::profile::read::PointProfile::MIN_POINTS);
     assert!(profile.points.windows(2).all(|w| w[1][0] > w[0][0]));
     assert!(profile.points.iter().flatten().all(|v| v.is_finite()));
     let smoothing = if (selector / 12) % 2 == 0 { 0.0 } else { 4.0 };

@@ -3,9 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use wheelrail::quasi_elastic::{
-    CUTOFF_RANGE, EPSILON_RANGE_MM, PANEL_WIDTHS_RANGE, Quadrature, TRAPEZOID_STEP_RANGE_MM,
-};
+use wheelrail::quasi_elastic::{Quadrature, QuasiElasticSettings as Qe};
 use wheelrail::scene::Scene;
 
 fuzz_target!(|data: &[u8]| {
@@ -32,15 +30,15 @@ fuzz_target!(|data: &[u8]| {
             .all(|(i, e)| eps[..i].iter().all(|f| f.to_bits() != e.to_bits()))
     );
     let qe = scene.quasi_elastic();
-    assert!((EPSILON_RANGE_MM.0..=EPSILON_RANGE_MM.1).contains(&qe.epsilon_mm()));
-    assert!((CUTOFF_RANGE.0..=CUTOFF_RANGE.1).contains(&qe.cutoff()));
+    assert!((Qe::EPSILON_RANGE_MM.0..=Qe::EPSILON_RANGE_MM.1).contains(&qe.epsilon_mm()));
+    assert!((Qe::CUTOFF_RANGE.0..=Qe::CUTOFF_RANGE.1).contains(&qe.cutoff()));
     match qe.quadrature() {
         Quadrature::GaussLegendre { panel_widths } => {
-            assert!((PANEL_WIDTHS_RANGE.0..=PANEL_WIDTHS_RANGE.1).contains(&panel_widths));
+            assert!((Qe::PANEL_WIDTHS_RANGE.0..=Qe::PANEL_WIDTHS_RANGE.1).contains(&panel_widths));
         }
         Quadrature::Trapezoid { max_step_mm } => {
             assert!(
-                (TRAPEZOID_STEP_RANGE_MM.0..=TRAPEZOID_STEP_RANGE_MM.1).contains(&max_step_mm)
+                (Qe::TRAPEZOID_STEP_RANGE_MM.0..=Qe::TRAPEZOID_STEP_RANGE_MM.1).contains(&max_step_mm)
             );
         }
     }

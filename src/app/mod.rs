@@ -505,8 +505,8 @@ fn check(scene_path: &Path, golden: &Path, bless: bool) -> Result<ExitCode, Erro
 }
 
 fn conicity(path: &Path, method: &str, amplitudes: Option<&str>) -> Result<ExitCode, Error> {
-    use crate::conicity::{self, DeltaR, Method};
-    let method = Method::from_name(method).ok_or_else(|| {
+    use crate::conicity::{self, ConicityMethod, DeltaR};
+    let method = ConicityMethod::from_name(method).ok_or_else(|| {
         Error::Usage(format!(
             "--method {method:?}: expected \"klingel\" or \"regression\""
         ))

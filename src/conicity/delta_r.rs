@@ -167,7 +167,7 @@ impl DeltaR {
     /// A Δr function with jumps (a `y` given twice: values from the left, then from the
     /// right) and unknown values (NaN), as a rigid sweep gives it. `y` must not decrease and
     /// no `y` may appear three times; no sign change is required (the conicity then says
-    /// [`Status::NoEquilibrium`](super::Status::NoEquilibrium)).
+    /// [`ConicityStatus::NoEquilibrium`](super::ConicityStatus::NoEquilibrium)).
     ///
     /// # Errors
     /// [`DeltaRError::NotIncreasing`], [`DeltaRError::NonFinite`] for a non-finite `y`.

@@ -9,7 +9,7 @@
 //!
 //! # Methods
 //!
-//! * [`Method::Klingel`] (default), EN 15302:2008+A1:2010 Annex B: the wavelength of the
+//! * [`ConicityMethod::Klingel`] (default), EN 15302:2008+A1:2010 Annex B: the wavelength of the
 //!   nonlinear kinematic motion. Its first integral `(y')² e r0 + S(y) = h`, with
 //!   `S(y) = ∫ Δr dy` from the equilibrium `Δr(y_eq) = 0`, gives the turning points
 //!   `S(y1) = S(y2) = h` of each level `h` and the half wavelength
@@ -22,7 +22,7 @@
 //!   a turning point, where the integrand is singular (integrable): no time stepping, no
 //!   cut-off, no quadrature error. A jump of Δr (a contact-point jump) is a piece of zero
 //!   width: `S` stays continuous and the integral is exact across it.
-//! * [`Method::Regression`], EN 15302:2008+A1:2010 Annex C, linear regression of the Δr
+//! * [`ConicityMethod::Regression`], EN 15302:2008+A1:2010 Annex C, linear regression of the Δr
 //!   function: the straight line fitted to Δr over the motion `y_eq ± ŷ` by least squares,
 //!   each `y` weighted by the time a harmonic motion `y = y_eq + ŷ sin ωt` spends there
 //!   (density `1 / (π sqrt(ŷ² - (y - y_eq)²))`), and `tan γe` half its slope (a cone has
@@ -44,37 +44,42 @@
 //! # Example
 //!
 //! ```
-//! use wheelrail::conicity::{DeltaR, Method, equivalent_conicity};
+//! use wheelrail::conicity::{DeltaR, ConicityMethod, equivalent_conicity};
 //! // A cone of conicity 0.2: Δr = 2 · 0.2 · y.
 //! let y: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();
 //! let dr = y.iter().map(|y| 0.4 * y).collect();
 //! let delta_r = DeltaR::new(y, dr).unwrap();
-//! let c = equivalent_conicity(&delta_r, &[1.0, 3.0, 5.0], Method::Klingel);
+//! let c = equivalent_conicity(&delta_r, &[1.0, 3.0, 5.0], ConicityMethod::Klingel);
 //! for p in &c.points {
 //!     assert!((p.tan_gamma_e - 0.2).abs() < 1e-12);
 //! }
 //! ```
 
 mod delta_r;
-pub mod pair;
+mod pair;
 mod well;
 
 pub use delta_r::{CsvProblem, DeltaR, DeltaRCsvError, DeltaRError};
 use well::Well;
 
-pub use pair::{PairConicity, Parameters, Settings, SettingsError, assess};
+pub(crate) use pair::assess_by_method;
+pub use pair::{
+    ConicitySettings, ConicitySettingsError, PairConicity, ParameterRow, Parameters, assess,
+    delta_r_of,
+};
 
 /// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
-pub const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
+pub(crate) const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
 
 /// The default amplitudes: 0.5 to 10 mm in steps of 0.1 mm (96 values), exact decimals.
+#[doc(hidden)] // public for the conicity benchmarks
 pub fn default_amplitudes_mm() -> Vec<f64> {
     (5..=100).map(|i| f64::from(i) / 10.0).collect()
 }
 
 /// How the equivalent conicity is computed from Δr.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Method {
+pub enum ConicityMethod {
     /// Wavelength of the nonlinear kinematic motion (EN 15302 Annex B), exact closed forms.
     Klingel,
     /// Linear regression of Δr over the motion, weighted as a harmonic motion (EN 15302
@@ -82,27 +87,27 @@ pub enum Method {
     Regression,
 }
 
-impl Method {
+impl ConicityMethod {
     /// Both methods, default first.
-    pub const ALL: [Method; 2] = [Method::Klingel, Method::Regression];
+    pub const ALL: [ConicityMethod; 2] = [ConicityMethod::Klingel, ConicityMethod::Regression];
 
     /// The name used in scene files, on the command line and in column names.
     pub fn name(self) -> &'static str {
         match self {
-            Method::Klingel => "klingel",
-            Method::Regression => "regression",
+            ConicityMethod::Klingel => "klingel",
+            ConicityMethod::Regression => "regression",
         }
     }
 
     /// The method of a name.
-    pub fn from_name(name: &str) -> Option<Method> {
-        Method::ALL.into_iter().find(|m| m.name() == name)
+    pub fn from_name(name: &str) -> Option<ConicityMethod> {
+        ConicityMethod::ALL.into_iter().find(|m| m.name() == name)
     }
 }
 
 /// Why an amplitude has the value it has.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Status {
+pub enum ConicityStatus {
     /// Computed.
     Ok,
     /// The whole motion lies in a band where Δr = 0: no restoring effect, `tan γe = 0`.
@@ -118,15 +123,15 @@ pub enum Status {
     NoEquilibrium,
 }
 
-impl Status {
+impl ConicityStatus {
     /// Text of the `status` columns.
     pub fn name(self) -> &'static str {
         match self {
-            Status::Ok => "ok",
-            Status::ZeroBand => "zero band",
-            Status::BeyondRange => "beyond delta_r range",
-            Status::NoPeriodicMotion => "no periodic motion",
-            Status::NoEquilibrium => "no equilibrium",
+            ConicityStatus::Ok => "ok",
+            ConicityStatus::ZeroBand => "zero band",
+            ConicityStatus::BeyondRange => "beyond delta_r range",
+            ConicityStatus::NoPeriodicMotion => "no periodic motion",
+            ConicityStatus::NoEquilibrium => "no equilibrium",
         }
     }
 }
@@ -141,14 +146,14 @@ pub struct ConicityPoint {
     /// Centre of the motion, `(y1 + y2) / 2` (mm): the equilibrium for a symmetric Δr.
     pub centre_mm: f64,
     /// How the value was obtained.
-    pub status: Status,
+    pub status: ConicityStatus,
 }
 
 /// The equivalent conicity function of one Δr by one method.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EquivalentConicity {
     /// The method.
-    pub method: Method,
+    pub method: ConicityMethod,
     /// The equilibrium position, the middle of the band where Δr = 0 (mm; NaN if none).
     pub equilibrium_mm: f64,
     /// The largest amplitude the Δr function supports (mm; NaN if none).
@@ -172,19 +177,19 @@ impl EquivalentConicity {
 ///
 /// # Example
 /// ```
-/// use wheelrail::conicity::{DeltaR, Method, Status, equivalent_conicity};
+/// use wheelrail::conicity::{DeltaR, ConicityMethod, ConicityStatus, equivalent_conicity};
 /// // Δr = 0 for |y| <= 1 mm, a cone of 0.1 outside: no restoring effect below ŷ = 1 mm.
 /// let y: Vec<f64> = (-50..=50).map(|i| f64::from(i) * 0.1).collect();
 /// let dr = y.iter().map(|&y: &f64| 0.2 * (y.abs() - 1.0).max(0.0) * y.signum()).collect();
-/// let c = equivalent_conicity(&DeltaR::new(y, dr).unwrap(), &[0.5, 2.0], Method::Klingel);
-/// assert_eq!(c.points[0].status, Status::ZeroBand);
+/// let c = equivalent_conicity(&DeltaR::new(y, dr).unwrap(), &[0.5, 2.0], ConicityMethod::Klingel);
+/// assert_eq!(c.points[0].status, ConicityStatus::ZeroBand);
 /// assert_eq!(c.points[0].tan_gamma_e.to_bits(), 0f64.to_bits());
 /// assert!(c.points[1].tan_gamma_e > 0.0 && c.points[1].tan_gamma_e < 0.1);
 /// ```
 pub fn equivalent_conicity(
     delta_r: &DeltaR,
     amplitudes_mm: &[f64],
-    method: Method,
+    method: ConicityMethod,
 ) -> EquivalentConicity {
     let Some(well) = Well::new(delta_r) else {
         return EquivalentConicity {
@@ -197,14 +202,14 @@ pub fn equivalent_conicity(
                     amplitude_mm: a,
                     tan_gamma_e: f64::NAN,
                     centre_mm: f64::NAN,
-                    status: Status::NoEquilibrium,
+                    status: ConicityStatus::NoEquilibrium,
                 })
                 .collect(),
         };
     };
     let points = match method {
-        Method::Klingel => well.klingel(amplitudes_mm),
-        Method::Regression => amplitudes_mm
+        ConicityMethod::Klingel => well.klingel(amplitudes_mm),
+        ConicityMethod::Regression => amplitudes_mm
             .iter()
             .map(|&a| well.regression(delta_r, a))
             .collect(),
@@ -213,8 +218,8 @@ pub fn equivalent_conicity(
         method,
         equilibrium_mm: well.equilibrium(),
         max_amplitude_mm: match method {
-            Method::Klingel => well.klingel_max_amplitude(),
-            Method::Regression => well.regression_max_amplitude(),
+            ConicityMethod::Klingel => well.klingel_max_amplitude(),
+            ConicityMethod::Regression => well.regression_max_amplitude(),
         },
         points,
     }
@@ -223,14 +228,15 @@ pub fn equivalent_conicity(
 /// The equivalent conicity at the default amplitudes ([`default_amplitudes_mm`]) that
 /// `delta_r` supports: those beyond [`EquivalentConicity::max_amplitude_mm`] of the Klingel
 /// method are left out rather than reported as NaN.
-pub fn equivalent_conicity_clipped(delta_r: &DeltaR, method: Method) -> EquivalentConicity {
+#[doc(hidden)] // public for the conicity benchmarks
+pub fn equivalent_conicity_clipped(delta_r: &DeltaR, method: ConicityMethod) -> EquivalentConicity {
     let amplitudes = supported_default_amplitudes(delta_r);
     equivalent_conicity(delta_r, &amplitudes, method)
 }
 
 /// The default amplitudes up to the largest one the Klingel motion supports on `delta_r`
 /// (all of them when Δr has no equilibrium: each is then reported as such).
-pub fn supported_default_amplitudes(delta_r: &DeltaR) -> Vec<f64> {
+pub(crate) fn supported_default_amplitudes(delta_r: &DeltaR) -> Vec<f64> {
     let mut amplitudes = default_amplitudes_mm();
     if let Some(well) = Well::new(delta_r) {
         let max = well.klingel_max_amplitude();
@@ -259,11 +265,11 @@ mod tests {
         for lambda in [0.001, 0.05, 0.2, 1.5] {
             let d = cone(lambda);
             let amps = default_amplitudes_mm();
-            for method in Method::ALL {
+            for method in ConicityMethod::ALL {
                 let c = equivalent_conicity(&d, &amps, method);
                 assert_eq!(c.points.len(), 96);
                 for p in &c.points {
-                    assert_eq!(p.status, Status::Ok, "{method:?} {p:?}");
+                    assert_eq!(p.status, ConicityStatus::Ok, "{method:?} {p:?}");
                     assert!(
                         (p.tan_gamma_e - lambda).abs() < 1e-10 * lambda.max(1.0),
                         "{method:?} lambda {lambda} at {}: {}",
@@ -284,14 +290,14 @@ mod tests {
             .map(|&y: &f64| 0.3 * (y.abs() - 1.5).max(0.0) * y.signum())
             .collect();
         let d = DeltaR::new(y, dr).unwrap();
-        for method in Method::ALL {
+        for method in ConicityMethod::ALL {
             let c = equivalent_conicity(&d, &[0.5, 1.0, 1.5, 1.6, 3.0], method);
             for p in &c.points[..3] {
-                assert_eq!(p.status, Status::ZeroBand);
+                assert_eq!(p.status, ConicityStatus::ZeroBand);
                 assert_eq!(p.tan_gamma_e.to_bits(), 0.0f64.to_bits());
             }
             for p in &c.points[3..] {
-                assert_eq!(p.status, Status::Ok);
+                assert_eq!(p.status, ConicityStatus::Ok);
                 assert!(p.tan_gamma_e > 0.0 && p.tan_gamma_e < 0.15, "{p:?}");
             }
             assert!(c.equilibrium_mm.abs() < 1e-12);
@@ -303,12 +309,12 @@ mod tests {
         let y = grid(-4.0, 5.0, 0.1);
         let dr = y.iter().map(|y| 0.2 * y).collect();
         let d = DeltaR::new(y, dr).unwrap();
-        for method in Method::ALL {
+        for method in ConicityMethod::ALL {
             let c = equivalent_conicity(&d, &[3.9, 4.1, 6.0], method);
-            assert_eq!(c.points[0].status, Status::Ok);
+            assert_eq!(c.points[0].status, ConicityStatus::Ok);
             assert!((c.points[0].tan_gamma_e - 0.1).abs() < 1e-12);
             for p in &c.points[1..] {
-                assert_eq!(p.status, Status::BeyondRange, "{method:?}");
+                assert_eq!(p.status, ConicityStatus::BeyondRange, "{method:?}");
                 assert!(p.tan_gamma_e.is_nan());
             }
             assert!((c.max_amplitude_mm - 4.0).abs() < 1e-9, "{c:?}");
@@ -321,7 +327,7 @@ mod tests {
         let y = grid(-9.0, 11.0, 0.1);
         let dr = y.iter().map(|y| 0.3 * (y - 0.7)).collect();
         let d = DeltaR::new(y, dr).unwrap();
-        let c = equivalent_conicity(&d, &[1.0, 5.0], Method::Klingel);
+        let c = equivalent_conicity(&d, &[1.0, 5.0], ConicityMethod::Klingel);
         assert!((c.equilibrium_mm - 0.7).abs() < 1e-12);
         for p in &c.points {
             assert!((p.tan_gamma_e - 0.15).abs() < 1e-12);
@@ -341,7 +347,7 @@ mod tests {
             .collect();
         let d = DeltaR::new(y, dr).unwrap();
         let expected = (2.0 / (1.0 / l1.sqrt() + 1.0 / l2.sqrt())).powi(2);
-        let c = equivalent_conicity(&d, &[2.0, 7.0], Method::Klingel);
+        let c = equivalent_conicity(&d, &[2.0, 7.0], ConicityMethod::Klingel);
         for p in &c.points {
             assert!((p.tan_gamma_e - expected).abs() < 1e-12, "{p:?} {expected}");
             // Turning points sqrt(h/λ): the centre lies towards the softer side.
@@ -380,9 +386,11 @@ mod tests {
             }
             DeltaR::with_jumps(y, dr).unwrap()
         };
-        let exact = equivalent_conicity(&jumpy(0.0, 0.1), &[3.0], Method::Klingel).points[0];
-        let fine = equivalent_conicity(&jumpy(1e-4, 1e-5), &[3.0], Method::Klingel).points[0];
-        assert_eq!(exact.status, Status::Ok);
+        let exact =
+            equivalent_conicity(&jumpy(0.0, 0.1), &[3.0], ConicityMethod::Klingel).points[0];
+        let fine =
+            equivalent_conicity(&jumpy(1e-4, 1e-5), &[3.0], ConicityMethod::Klingel).points[0];
+        assert_eq!(exact.status, ConicityStatus::Ok);
         assert!(
             (exact.tan_gamma_e - fine.tan_gamma_e).abs() < 1e-4,
             "{exact:?} {fine:?}"

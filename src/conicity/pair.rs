@@ -4,18 +4,18 @@
 //! difference at ±3 mm.
 
 use super::{
-    DeltaR, EquivalentConicity, Method, equivalent_conicity, supported_default_amplitudes,
+    ConicityMethod, DeltaR, EquivalentConicity, equivalent_conicity, supported_default_amplitudes,
 };
-use crate::rigid::{Position, RigidSweep, contact_angle};
+use crate::rigid::{RigidPosition, RigidSweep, contact_angle};
 use crate::track::Side;
 
-pub use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
+pub(crate) use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
 
 /// The lateral shift at which Δr and the contact angle difference are reported (mm).
-pub const REPORT_SHIFT_MM: f64 = 3.0;
+pub(crate) const REPORT_SHIFT_MM: f64 = 3.0;
 
 /// The amplitudes bounding Polach's nonlinearity parameter (mm).
-pub const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
+pub(crate) const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
 
 /// The largest amplitude of the equivalent conicity accepted (mm): the motion must stay on
 /// the rail heads, and a scene's `[sweep]` is limited to ±100 mm.
@@ -24,19 +24,19 @@ pub(crate) const MAX_AMPLITUDE_MM: f64 = 100.0;
 /// The largest number of amplitudes accepted: as many as a sweep has positions at most.
 const MAX_AMPLITUDES: usize = crate::sweep::MAX_POSITIONS;
 
-/// Settings of the `equivalent_conicity` stage (`[conicity]` in a scene), checked by
-/// [`Settings::with_amplitudes_mm`]. The default: Klingel's method at 0.5 to 10 mm in
+/// ConicitySettings of the `equivalent_conicity` stage (`[conicity]` in a scene), checked by
+/// [`ConicitySettings::with_amplitudes_mm`]. The default: Klingel's method at 0.5 to 10 mm in
 /// 0.1 mm steps, clipped to what the sweep supports.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Settings {
-    pub(crate) method: Method,
+pub struct ConicitySettings {
+    pub(crate) method: ConicityMethod,
     pub(crate) amplitudes_mm: Option<Vec<f64>>,
 }
 
-impl Default for Settings {
+impl Default for ConicitySettings {
     fn default() -> Self {
-        Settings {
-            method: Method::Klingel,
+        ConicitySettings {
+            method: ConicityMethod::Klingel,
             amplitudes_mm: None,
         }
     }
@@ -44,7 +44,7 @@ impl Default for Settings {
 
 /// Why equivalent-conicity amplitudes are not accepted.
 #[derive(Debug, Clone, PartialEq)]
-pub enum SettingsError {
+pub enum ConicitySettingsError {
     /// No amplitudes, or more than 100001.
     Count {
         /// How many were given.
@@ -66,16 +66,16 @@ pub enum SettingsError {
     },
 }
 
-impl std::fmt::Display for SettingsError {
+impl std::fmt::Display for ConicitySettingsError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match *self {
-            SettingsError::Count { count } => {
+            ConicitySettingsError::Count { count } => {
                 write!(
                     f,
                     "expected 1 to {MAX_AMPLITUDES} amplitudes, found {count}"
                 )
             }
-            SettingsError::OutOfRange {
+            ConicitySettingsError::OutOfRange {
                 index,
                 amplitude_mm,
             } => write!(
@@ -83,7 +83,7 @@ impl std::fmt::Display for SettingsError {
                 "amplitude {amplitude_mm} (item {}) must be a number above 0 and at most {MAX_AMPLITUDE_MM} mm",
                 index + 1
             ),
-            SettingsError::NotIncreasing {
+            ConicitySettingsError::NotIncreasing {
                 amplitude_mm,
                 previous_mm,
             } => write!(
@@ -94,13 +94,13 @@ impl std::fmt::Display for SettingsError {
     }
 }
 
-impl std::error::Error for SettingsError {}
+impl std::error::Error for ConicitySettingsError {}
 
-impl Settings {
+impl ConicitySettings {
     /// The pair's parameters by `method` (both methods are always tabulated), at the
     /// default amplitudes.
-    pub fn new(method: Method) -> Settings {
-        Settings {
+    pub fn new(method: ConicityMethod) -> ConicitySettings {
+        ConicitySettings {
             method,
             amplitudes_mm: None,
         }
@@ -110,34 +110,37 @@ impl Settings {
     /// increasing, each above 0 and at most 100 mm.
     ///
     /// # Errors
-    /// [`SettingsError`] naming the first amplitude that is not accepted.
-    pub fn with_amplitudes_mm(self, amplitudes_mm: Vec<f64>) -> Result<Settings, SettingsError> {
+    /// [`ConicitySettingsError`] naming the first amplitude that is not accepted.
+    pub fn with_amplitudes_mm(
+        self,
+        amplitudes_mm: Vec<f64>,
+    ) -> Result<ConicitySettings, ConicitySettingsError> {
         let a = &amplitudes_mm;
         if a.is_empty() || a.len() > MAX_AMPLITUDES {
-            return Err(SettingsError::Count { count: a.len() });
+            return Err(ConicitySettingsError::Count { count: a.len() });
         }
         for (index, &v) in a.iter().enumerate() {
             if !(v.is_finite() && v > 0.0 && v <= MAX_AMPLITUDE_MM) {
-                return Err(SettingsError::OutOfRange {
+                return Err(ConicitySettingsError::OutOfRange {
                     index,
                     amplitude_mm: v,
                 });
             }
             if index > 0 && v <= a[index - 1] {
-                return Err(SettingsError::NotIncreasing {
+                return Err(ConicitySettingsError::NotIncreasing {
                     amplitude_mm: v,
                     previous_mm: a[index - 1],
                 });
             }
         }
-        Ok(Settings {
+        Ok(ConicitySettings {
             amplitudes_mm: Some(amplitudes_mm),
             ..self
         })
     }
 
     /// The method of the pair's parameters.
-    pub fn method(&self) -> Method {
+    pub fn method(&self) -> ConicityMethod {
         self.method
     }
 
@@ -151,7 +154,7 @@ impl Settings {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Parameters {
     /// The method of the `tan γe` values.
-    pub method: Method,
+    pub method: ConicityMethod,
     /// `tan γe` at ŷ = 2, 3 and 4 mm.
     pub tan_gamma_e: [f64; 3],
     /// Polach's nonlinearity parameter (1/mm).
@@ -200,8 +203,10 @@ impl Parameters {
     /// The parameters as named rows with units and definitions, in report order.
     pub fn rows(&self) -> Vec<ParameterRow> {
         let m = match self.method {
-            Method::Klingel => "EN 15302 Annex B, Klingel wavelength of the kinematic motion",
-            Method::Regression => "EN 15302 Annex C, regression of delta_r over the motion",
+            ConicityMethod::Klingel => {
+                "EN 15302 Annex B, Klingel wavelength of the kinematic motion"
+            }
+            ConicityMethod::Regression => "EN 15302 Annex C, regression of delta_r over the motion",
         };
         let tan = |i: usize, a: &str| ParameterRow {
             name: ["tan_gamma_e_2mm", "tan_gamma_e_3mm", "tan_gamma_e_4mm"][i],
@@ -296,10 +301,10 @@ pub struct PairConicity {
 
 impl PairConicity {
     /// The result of `method`.
-    pub fn by(&self, method: Method) -> &EquivalentConicity {
+    pub fn by(&self, method: ConicityMethod) -> &EquivalentConicity {
         match method {
-            Method::Klingel => &self.klingel,
-            Method::Regression => &self.regression,
+            ConicityMethod::Klingel => &self.klingel,
+            ConicityMethod::Regression => &self.regression,
         }
     }
 }
@@ -347,15 +352,15 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 /// use wheelrail::{conicity, pipeline, rigid, scene::Scene};
 /// let scene = Scene::from_toml("[sweep]\nfrom_mm = -10.0\nto_mm = 10.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
 /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), scene.sweep(), rigid::Solver::default());
-/// let pair = conicity::assess(&sweep, &conicity::Settings::default());
+/// let pair = conicity::assess(&sweep, &conicity::ConicitySettings::default());
 /// let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
 /// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
 /// ```
-pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
+pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
     let delta_r = delta_r_of(sweep);
     let amplitudes = amplitudes(settings, &delta_r);
-    let klingel = equivalent_conicity(&delta_r, &amplitudes, Method::Klingel);
-    let regression = equivalent_conicity(&delta_r, &amplitudes, Method::Regression);
+    let klingel = equivalent_conicity(&delta_r, &amplitudes, ConicityMethod::Klingel);
+    let regression = equivalent_conicity(&delta_r, &amplitudes, ConicityMethod::Regression);
     let parameters = parameters(sweep, &delta_r, settings);
     PairConicity {
         delta_r,
@@ -369,9 +374,9 @@ pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
 /// parameters: what [`assess`] gives for that method, without the other method's function
 /// (a fleet's summary needs one). The same functions compute both: the values are
 /// [`assess`]'s to the last digit.
-pub fn assess_by_method(
+pub(crate) fn assess_by_method(
     sweep: &RigidSweep,
-    settings: &Settings,
+    settings: &ConicitySettings,
 ) -> (EquivalentConicity, Parameters) {
     let delta_r = delta_r_of(sweep);
     let amplitudes = amplitudes(settings, &delta_r);
@@ -382,7 +387,7 @@ pub fn assess_by_method(
 }
 
 /// The amplitudes of the settings, or the default ones the Δr function supports.
-fn amplitudes(settings: &Settings, delta_r: &DeltaR) -> Vec<f64> {
+fn amplitudes(settings: &ConicitySettings, delta_r: &DeltaR) -> Vec<f64> {
     settings
         .amplitudes_mm
         .clone()
@@ -390,7 +395,7 @@ fn amplitudes(settings: &Settings, delta_r: &DeltaR) -> Vec<f64> {
 }
 
 /// The parameters of the pair swept by `sweep`, whose Δr function is `delta_r`.
-fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Parameters {
+fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &ConicitySettings) -> Parameters {
     let at = equivalent_conicity(delta_r, &[2.0, 3.0, 4.0], settings.method);
     let tan_gamma_e = [0, 1, 2].map(|i| at.points[i].tan_gamma_e);
     let [a2, a4] = NONLINEARITY_AMPLITUDES_MM;
@@ -413,7 +418,7 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Para
 
 /// `f` at shift `y`, linear between the neighbouring positions (the position itself when
 /// the sweep holds `y`); NaN outside the sweep.
-fn interpolate(sweep: &RigidSweep, y: f64, f: impl Fn(&Position) -> f64) -> f64 {
+fn interpolate(sweep: &RigidSweep, y: f64, f: impl Fn(&RigidPosition) -> f64) -> f64 {
     let p = &sweep.positions();
     let i = p.partition_point(|q| q.y_ws < y);
     if let Some(q) = p.get(i)
@@ -446,8 +451,8 @@ mod tests {
         .unwrap();
         let placement = crate::pipeline::place(&scene).unwrap();
         let sweep = search(&placement, &scene.sweep, Solver::default());
-        for method in [Method::Klingel, Method::Regression] {
-            let settings = Settings {
+        for method in [ConicityMethod::Klingel, ConicityMethod::Regression] {
+            let settings = ConicitySettings {
                 method,
                 amplitudes_mm: None,
             };

@@ -2,7 +2,7 @@
 //! as quadratic pieces on both sides of the equilibrium ([`Well`]), the integral of
 //! `1 / sqrt(h - S)` piece by piece, and the level `h` of an amplitude.
 
-use super::{ConicityPoint, DeltaR, Status};
+use super::{ConicityPoint, ConicityStatus, DeltaR};
 use std::f64::consts::PI;
 
 /// One piece of a branch of `S`, in the branch coordinate `t >= 0` (distance from the
@@ -289,7 +289,7 @@ impl Well {
                 amplitude_mm: f64::NAN,
                 tan_gamma_e: f64::NAN,
                 centre_mm: f64::NAN,
-                status: Status::BeyondRange,
+                status: ConicityStatus::BeyondRange,
             };
             amplitudes.len()
         ];
@@ -301,7 +301,7 @@ impl Well {
             out[i].amplitude_mm = a;
             let target = 2.0 * a - band;
             if a.is_nan() || a <= 0.0 {
-                out[i].status = Status::BeyondRange;
+                out[i].status = ConicityStatus::BeyondRange;
                 continue;
             }
             if target <= 0.0 {
@@ -309,7 +309,7 @@ impl Well {
                     amplitude_mm: a,
                     tan_gamma_e: 0.0,
                     centre_mm: self.equilibrium(),
-                    status: Status::ZeroBand,
+                    status: ConicityStatus::ZeroBand,
                 };
                 continue;
             }
@@ -334,7 +334,7 @@ impl Well {
                 }
             };
             let Some(width_hi) = width_hi else {
-                out[i].status = Status::BeyondRange;
+                out[i].status = ConicityStatus::BeyondRange;
                 continue;
             };
             let lo = [
@@ -347,7 +347,7 @@ impl Well {
             let hi = self.right[pr].running_max.min(self.left[pl].running_max);
             let width_lo = width(pr, pl, lo);
             if width_lo > target * (1.0 + 1e-12) {
-                out[i].status = Status::NoPeriodicMotion;
+                out[i].status = ConicityStatus::NoPeriodicMotion;
                 continue;
             }
             // Width and its slope in u = sqrt(h): dt/dh = 1 / S' at each turning point.
@@ -372,7 +372,7 @@ impl Well {
                 amplitude_mm: a,
                 tan_gamma_e: ratio * ratio,
                 centre_mm: 0.5 * ((self.band.1 + tr) + (self.band.0 - tl)),
-                status: Status::Ok,
+                status: ConicityStatus::Ok,
             };
         }
         out
@@ -392,14 +392,14 @@ impl Well {
             amplitude_mm: a,
             tan_gamma_e: f64::NAN,
             centre_mm: c,
-            status: Status::BeyondRange,
+            status: ConicityStatus::BeyondRange,
         };
         if a.is_nan() || a <= 0.0 || a > self.regression_max_amplitude() * (1.0 + 1e-12) + 1e-12 {
             return point;
         }
         if 2.0 * a <= self.band_width() {
             point.tan_gamma_e = 0.0;
-            point.status = Status::ZeroBand;
+            point.status = ConicityStatus::ZeroBand;
             return point;
         }
         let (y, d) = (&delta_r.y, &delta_r.dr);
@@ -441,7 +441,7 @@ impl Well {
             sum += prim(knot, aa, bb) - prim(start, aa, bb);
         }
         point.tan_gamma_e = sum / (PI * a);
-        point.status = Status::Ok;
+        point.status = ConicityStatus::Ok;
         point
     }
 }

@@ -65,7 +65,7 @@ impl Inputs {
 }
 
 /// Items for profile files given one by one: each on both wheels (or both rails with
-/// `rails`), ids from the file names (see [`unique_ids`]).
+/// `rails`), ids from the file names (see `unique_ids`).
 pub fn items_of_files(paths: &[PathBuf], rails: bool) -> Vec<Item> {
     let stems: Vec<String> = paths
         .iter()
@@ -100,12 +100,7 @@ pub fn items_of_files(paths: &[PathBuf], rails: bool) -> Vec<Item> {
 /// Ids for names, in order: characters other than letters, digits, `.`, `-` and `_`
 /// replaced by `_`, a leading `.` too (ids name folders), empty names `profile`; a name met
 /// again gets `-2`, `-3`, ... (the first keeps its name).
-///
-/// ```
-/// let ids = wheelrail::fleet::unique_ids(&["w 1".into(), "w_1".into(), "".into(), ".x".into()]);
-/// assert_eq!(ids, ["w_1", "w_1-2", "profile", "_x"]);
-/// ```
-pub fn unique_ids(names: &[String]) -> Vec<String> {
+pub(crate) fn unique_ids(names: &[String]) -> Vec<String> {
     let mut seen = HashSet::new();
     names
         .iter()
@@ -440,5 +435,12 @@ mod tests {
                 assert_eq!(parts, (0..len).collect::<Vec<_>>(), "{len} in {n}");
             }
         }
+    }
+
+    /// A known value of `unique_ids`.
+    #[test]
+    fn unique_ids_example() {
+        let ids = super::unique_ids(&["w 1".into(), "w_1".into(), "".into(), ".x".into()]);
+        assert_eq!(ids, ["w_1", "w_1-2", "profile", "_x"]);
     }
 }

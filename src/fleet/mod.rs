@@ -6,7 +6,7 @@
 //! side frame; or two wheels measured separately; or a rail profile for a grinding
 //! assessment). [`Fleet::new`] places the template's fixed profiles once and shares them;
 //! [`Fleet::assess`] reads, fits and places an item's files with the same functions as a
-//! report run ([`pipeline::place_wheels`], [`pipeline::place_rails`], [`pipeline::assemble`])
+//! report run ([`pipeline::place_wheels`], [`pipeline::place_rails`], `pipeline::assemble`)
 //! and runs the stages the summary needs with [`pipeline::run_on`], so its numbers agree to
 //! the last digit with `wheelrail report` on the template with those files.
 //!
@@ -21,9 +21,7 @@
 mod inputs;
 pub mod synthetic;
 
-pub use inputs::{
-    FleetError, Inputs, Item, PairsProblem, Shard, items_of_files, parse_pairs, unique_ids,
-};
+pub use inputs::{FleetError, Inputs, Item, PairsProblem, Shard, items_of_files, parse_pairs};
 
 use crate::cache::PlacementCache;
 use crate::conicity::Parameters;
@@ -61,13 +59,16 @@ pub struct Summary {
 
 /// The summary of a run: the equivalent conicity by `settings`' method and the pair's
 /// parameters (from the run's conicity stage when it ran, else computed here from its rigid
-/// sweep by [`crate::conicity::pair::assess_by_method`], the same values without the other
+/// sweep by [`crate::conicity::assess_by_method`], the same values without the other
 /// method's function), and the largest Hertz pressure if Hertz ran.
 ///
 /// # Panics
 /// If the run computed neither the equivalent conicity nor the rigid sweep (a caller's bug:
 /// [`Fleet`] always runs the rigid search).
-pub fn summarise(results: &Results, settings: &crate::conicity::Settings) -> Summary {
+pub(crate) fn summarise(
+    results: &Results,
+    settings: &crate::conicity::ConicitySettings,
+) -> Summary {
     let points = |c: &crate::conicity::EquivalentConicity| -> Vec<(f64, f64)> {
         c.points
             .iter()
@@ -81,7 +82,7 @@ pub fn summarise(results: &Results, settings: &crate::conicity::Settings) -> Sum
                 .rigid
                 .as_ref()
                 .expect("a fleet run computes the rigid sweep");
-            let (function, parameters) = crate::conicity::pair::assess_by_method(rigid, settings);
+            let (function, parameters) = crate::conicity::assess_by_method(rigid, settings);
             (points(&function), parameters)
         }
     };
@@ -345,6 +346,7 @@ fn placed_sha256(results: &Results, role: &str) -> Option<String> {
 /// all before it are done. `sink` runs on a thread of its own, so a slow sink (a file, a
 /// progress bar) never holds up the workers; results wait in memory only while an earlier
 /// item is still running. A panic in `f` becomes `on_panic(message)` for that item.
+#[doc(hidden)] // public for the fleet benchmark
 pub fn in_order<T, R>(
     items: &[T],
     f: impl Fn(&T) -> R + Sync,

@@ -2,11 +2,11 @@
 //! example report. Deterministic from a seed and an index, so a fleet can be regenerated
 //! instead of committed.
 //!
-//! A profile is the analytic S1002 sampled every [`STEP_MM`] with three defects of varying
+//! A profile is the analytic S1002 sampled every `STEP_MM` with three defects of varying
 //! depth ([`Wear::of`]):
 //!
 //! * **tread hollow wear**: the radius reduced by `hollow_mm · cos²(π (s - c) / (2 W))` over
-//!   `|s - c| < W` ([`HOLLOW_HALF_WIDTH_MM`]), `c` near the taping line: the running band
+//!   `|s - c| < W` (`HOLLOW_HALF_WIDTH_MM`), `c` near the taping line: the running band
 //!   worn into a groove, leaving a false flange on the field side (conicity rises);
 //! * **flange wear**: the flange face thinned laterally by `flange_mm`: the radius
 //!   reduced by `flange_mm · |dF/ds| · cos²` over the flank (a lateral shift of the face by
@@ -20,14 +20,14 @@ use crate::profile::Profile;
 use crate::rng::SplitMix64;
 
 /// Lateral spacing of the generated points (mm): a MiniProf-like density.
-pub const STEP_MM: f64 = 0.25;
+pub(crate) const STEP_MM: f64 = 0.25;
 /// The generated profile starts here (mm): 1 mm into the flange back from its vertical face
 /// at -70 mm, where measured profiles begin too.
-pub const S_FROM_MM: f64 = -69.0;
+pub(crate) const S_FROM_MM: f64 = -69.0;
 /// Half width of the hollow-worn band (mm).
-pub const HOLLOW_HALF_WIDTH_MM: f64 = 22.0;
+pub(crate) const HOLLOW_HALF_WIDTH_MM: f64 = 22.0;
 /// Centre and half width of the worn flange face (mm).
-pub const FLANGE_WEAR_BAND_MM: (f64, f64) = (-40.0, 12.0);
+pub(crate) const FLANGE_WEAR_BAND_MM: (f64, f64) = (-40.0, 12.0);
 
 /// The defects of one generated profile (mm).
 #[derive(Debug, Clone, Copy, PartialEq)]

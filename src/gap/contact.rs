@@ -17,7 +17,7 @@
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
 /// let rigid = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap(), rigid::Solver::default());
-/// let qe = quasi_elastic::search(&placement, rigid.clone(), &quasi_elastic::Settings::default());
+/// let qe = quasi_elastic::search(&placement, rigid.clone(), &quasi_elastic::QuasiElasticSettings::default());
 /// let a = rigid.positions()[0].contact[0].unwrap().point();
 /// let b = qe.positions()[0].sides[0].main().unwrap().point();
 /// // The averaged contact lies on the tread near the rigid one (left wheel, y > 0).

@@ -135,7 +135,7 @@ impl GapPoint {
 
 /// One side's geometry prepared for repeated gap evaluations: the placed pair and the coarse
 /// wheel samples (the coarse scans read the rail's
-/// [`HeightTable`](crate::track::HeightTable)). Built once per sweep.
+/// `HeightTable`). Built once per sweep.
 #[derive(Debug, Clone)]
 pub struct SideGap<'a> {
     /// The wheel and rail of the side.

@@ -38,7 +38,7 @@ pub fn series_error(e: f64) -> (f64, f64) {
 }
 
 /// Relative error of the axis ratio `b/a` from the paper's fixed-point iteration (with its
-/// thresholds, [`PaperSettings::default`]) against the exact one, and the number of fixed-point
+/// default thresholds) against the exact one, and the number of fixed-point
 /// updates, at the curvature ratio `a_over_b_curv = A/B` (either order; the smaller over the
 /// larger is used).
 ///
@@ -111,7 +111,7 @@ pub fn study() -> HertzAccuracy {
             let [a, b, load, e_star, ra, rb, ..] = v[..] else {
                 return None;
             };
-            let e = super::ellipse(a, b, load, e_star, super::Method::Exact).ok()?;
+            let e = super::ellipse(a, b, load, e_star, super::EllipseMethod::Exact).ok()?;
             let e = e.ellipse()?;
             let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
             Some((lo / hi, (e.b_mm / e.a_mm) / (rb / ra) - 1.0))

@@ -27,7 +27,7 @@
 //! error.
 
 use super::{
-    Contact, HertzError, Material, Method, PrincipalCurvatures, effective_modulus, ellipse,
+    Contact, EllipseMethod, HertzError, Material, PrincipalCurvatures, effective_modulus, ellipse,
     relative_curvatures,
 };
 
@@ -79,8 +79,8 @@ pub struct HertzArgs {
     #[arg(long, default_value_t = 0.3, allow_hyphen_values = true)]
     pub poisson: f64,
     /// Numerical method.
-    #[arg(long, value_enum, default_value_t = Method::Exact)]
-    pub method: Method,
+    #[arg(long, value_enum, default_value_t = EllipseMethod::Exact)]
+    pub method: EllipseMethod,
 }
 
 /// The CSV header printed by [`run`].
@@ -267,13 +267,13 @@ mod tests {
             "0.25",
         ])
         .unwrap();
-        assert_eq!(args.method, Method::Paper);
+        assert_eq!(args.method, EllipseMethod::Paper);
         let r = row(&run(&args).unwrap().csv);
         assert_eq!(r[5], "paper");
         // Exact p0 for these inputs from the library; the paper method is within 5 % at
         // A/B = 0.5 (see the accuracy table in the module docs).
         let e_star = 200e3 / (2.0 * (1.0 - 0.0625));
-        let exact = ellipse(0.001, 0.002, 1e5, e_star, Method::Exact).unwrap();
+        let exact = ellipse(0.001, 0.002, 1e5, e_star, EllipseMethod::Exact).unwrap();
         let p0 = exact.ellipse().unwrap().p0_mpa;
         assert!((num(&r[2]) / p0 - 1.0).abs() < 0.05);
     }

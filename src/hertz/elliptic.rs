@@ -5,7 +5,7 @@
 //! contact ellipse), never by `m = 1 - g²`: forming `m` first throws away the digits of `g`
 //! for elongated ellipses (g = 1e-4 leaves 8 significant digits in 1 - m).
 //!
-//! # Method
+//! # EllipseMethod
 //!
 //! The AGM is started from `(a₀, b₀) = (1, g)`; `c_n² = a_n² - b_n²` is carried by the
 //! subtraction-free recurrence `c₁ = (1 - g)/2`, `c_{n+1} = c_n² / (4 a_{n+1})`. With

@@ -11,14 +11,14 @@
 //!
 //! # Methods
 //!
-//! * [`Method::Exact`] (default): `K` and `E` by the arithmetic-geometric mean from `(1, b/a)`,
+//! * [`EllipseMethod::Exact`] (default): `K` and `E` by the arithmetic-geometric mean from `(1, b/a)`,
 //!   the shape equation in cancellation-free form, Newton in `ln(b/a)` from Greenwood's start
 //!   corrected by a fitted polynomial (one Newton step for `A/B ≥ 7e-13`).
 //!   Relative error at most 1.5e-15 for `a`, `b`, `p0` and the approach against 50-digit
 //!   mpmath references (`tests/data/hertz_reference.csv`, `scripts/hertz_reference.py`) over
 //!   `A/B ∈ [1e-9, 1]` (the tests demand 1e-12); finite and monotonic down to `A/B = 1e-300`.
-//! * [`Method::Paper`]: the paper's truncated series and fixed-point iteration as stated
-//!   (see [`paper`]), kept to measure it.
+//! * [`EllipseMethod::Paper`]: the paper's truncated series and fixed-point iteration as stated
+//!   (`paper.rs`), kept to measure it.
 //!
 //! # Accuracy of the paper's method
 //!
@@ -67,19 +67,27 @@
 //! * B. C. Carlson (1995), Numerical computation of real or complex elliptic integrals,
 //!   Numerical Algorithms 10, 13-26: `R_D`, for the cancellation-free ratio.
 
+// The paper's Hertz numerics against the exact ones: public for the reference tests
+// (`tests/hertz.rs`); the study's result is `HertzAccuracy`.
+#[doc(hidden)]
 pub mod accuracy;
 #[cfg(feature = "cli")]
 pub mod cli;
 mod elliptic;
 mod exact;
-pub mod paper;
-pub mod sweep;
+pub(crate) mod paper;
+mod sweep;
+
+pub use accuracy::HertzAccuracy;
+pub use sweep::{
+    ContactSource, Contacts, HertzPosition, HertzSettings, HertzSweep, NormalLoad, SideHertz, sweep,
+};
 
 use std::f64::consts::PI;
 use std::fmt;
 
 /// Why the shape solve stopped (shared with [`crate::rigid`]).
-pub use crate::stop::Stop;
+pub use crate::Stop;
 
 /// An isotropic linear-elastic material.
 ///
@@ -250,7 +258,7 @@ pub fn relative_curvatures(k: &PrincipalCurvatures, psi_rad: f64) -> (f64, f64) 
 /// How [`ellipse`] evaluates the elliptic integrals and the shape.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
-pub enum Method {
+pub enum EllipseMethod {
     /// AGM for `K`, `E`, cancellation-free shape equation, Newton in `ln(b/a)`: machine
     /// precision.
     #[default]
@@ -260,11 +268,11 @@ pub enum Method {
     Paper,
 }
 
-impl fmt::Display for Method {
+impl fmt::Display for EllipseMethod {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
-            Method::Exact => "exact",
-            Method::Paper => "paper",
+            EllipseMethod::Exact => "exact",
+            EllipseMethod::Paper => "paper",
         })
     }
 }
@@ -323,7 +331,7 @@ pub struct Ellipse {
     /// Why the shape solve stopped.
     pub stop: Stop,
     /// The method that produced these numbers.
-    pub method: Method,
+    pub method: EllipseMethod,
 }
 
 /// Outcome of [`ellipse`]: the contact is Hertzian, or the reason it is not.
@@ -441,11 +449,11 @@ fn finite(quantity: &'static str, value: f64) -> Result<(), HertzError> {
 /// # Example
 ///
 /// ```
-/// use wheelrail::hertz::{Contact, Method, ellipse};
+/// use wheelrail::hertz::{Contact, EllipseMethod, ellipse};
 /// // Steel sphere R = 10 mm on a steel plane, P = 100 N, E* = 115384.6 MPa:
 /// // a = (3 P R / (4 E*))^(1/3) = 0.186 626 mm (Johnson 1985, §4.2).
 /// let e_star = 210_000.0 / (2.0 * (1.0 - 0.09));
-/// let Contact::Hertzian(c) = ellipse(0.05, 0.05, 100.0, e_star, Method::Exact)? else {
+/// let Contact::Hertzian(c) = ellipse(0.05, 0.05, 100.0, e_star, EllipseMethod::Exact)? else {
 ///     panic!("convex bodies are Hertzian");
 /// };
 /// let a = (3.0 * 100.0 * 10.0 / (4.0 * e_star)).cbrt();
@@ -458,7 +466,7 @@ pub fn ellipse(
     b_per_mm: f64,
     load_n: f64,
     e_star_mpa: f64,
-    method: Method,
+    method: EllipseMethod,
 ) -> Result<Contact, HertzError> {
     finite("A", a_per_mm)?;
     finite("B", b_per_mm)?;
@@ -490,7 +498,7 @@ pub fn ellipse(
     };
     // Major semi-axis from a³ = 3 P D / (2 π E* A') with D = (K - E)/e².
     let (g, eccentricity, k, d, iterations, stop) = match method {
-        Method::Exact => {
+        EllipseMethod::Exact => {
             let ratio = small / large;
             let ln_ratio = if ratio >= f64::MIN_POSITIVE {
                 ratio.ln()
@@ -501,7 +509,7 @@ pub fn ellipse(
             let e = ((1.0 - s.g) * (1.0 + s.g)).sqrt();
             (s.g, e, s.k, s.d, s.iterations, s.stop)
         }
-        Method::Paper => {
+        EllipseMethod::Paper => {
             let s = paper::eccentricity(small / large, &paper::PaperSettings::default());
             let e = s.eccentricity;
             let e_sq = e * e;

@@ -1,5 +1,5 @@
 //! The paper's numerical scheme (Onat, Voltr & Lata 2014, section 5), kept as stated so that
-//! its accuracy and cost can be measured against [`Method::Exact`](super::Method::Exact).
+//! its accuracy and cost can be measured against [`EllipseMethod::Exact`](super::EllipseMethod::Exact).
 //!
 //! * `K` and `E` by the power series in the eccentricity `e` (paper Eqs. 15-18):
 //!   `K = Σ P_n`, `P₁ = π/2`, `P_{n+1} = P_n ((2n-1)/(2n))² e²`, and
@@ -56,15 +56,6 @@ pub const SERIES_TERM_CAP: u32 = 100_000;
 /// # Units
 ///
 /// Dimensionless; `e` is the eccentricity (modulus `k = e`, parameter `m = e²`).
-///
-/// # Example
-///
-/// ```
-/// use wheelrail::hertz::paper::series_k;
-/// // Two terms at e = 0.05: π/2 (1 + e²/4) = 1.5717779...
-/// let k = series_k(0.05, 1e-3);
-/// assert!((k - 1.571_778_074_499_143).abs() < 1e-15);
-/// ```
 pub fn series_k(e: f64, tol: f64) -> f64 {
     let e_sq = e * e;
     let mut term = FRAC_PI_2;
@@ -85,15 +76,6 @@ pub fn series_k(e: f64, tol: f64) -> f64 {
 /// # Units
 ///
 /// Dimensionless; `e` is the eccentricity.
-///
-/// # Example
-///
-/// ```
-/// use wheelrail::hertz::paper::series_e;
-/// // Two terms at e = 0.05: π/2 (1 - e²/4) = 1.5698183...
-/// let e = series_e(0.05, 1e-3);
-/// assert!((e - 1.569_814_579_090_650).abs() < 1e-15);
-/// ```
 pub fn series_e(e: f64, tol: f64) -> f64 {
     let e_sq = e * e;
     let mut k_term = FRAC_PI_2;
@@ -131,18 +113,6 @@ pub struct PaperShape {
 /// # Units
 ///
 /// Dimensionless.
-///
-/// # Example
-///
-/// ```
-/// use wheelrail::hertz::Stop;
-/// use wheelrail::hertz::paper::{PaperSettings, eccentricity};
-/// let s = eccentricity(0.1, &PaperSettings::default());
-/// assert_eq!(s.stop, Stop::Converged);
-/// // The exact b/a at A/B = 0.1 is 0.222250 (mpmath); the paper lands within 3 %.
-/// let g = (1.0 - s.eccentricity * s.eccentricity).sqrt();
-/// assert!((g / 0.222_250 - 1.0).abs() < 0.03);
-/// ```
 pub fn eccentricity(ratio: f64, settings: &PaperSettings) -> PaperShape {
     let tol = settings.series_term_tol;
     let mut e = settings.start;
@@ -219,5 +189,35 @@ mod tests {
             );
             assert!(s.k - s.e_integral > 0.0);
         }
+    }
+
+    /// A known value of `series_k`.
+    #[test]
+    fn series_k_example() {
+        use crate::hertz::paper::series_k;
+        // Two terms at e = 0.05: π/2 (1 + e²/4) = 1.5717779...
+        let k = series_k(0.05, 1e-3);
+        assert!((k - 1.571_778_074_499_143).abs() < 1e-15);
+    }
+
+    /// A known value of `series_e`.
+    #[test]
+    fn series_e_example() {
+        use crate::hertz::paper::series_e;
+        // Two terms at e = 0.05: π/2 (1 - e²/4) = 1.5698183...
+        let e = series_e(0.05, 1e-3);
+        assert!((e - 1.569_814_579_090_65).abs() < 1e-15);
+    }
+
+    /// A known value of `eccentricity`.
+    #[test]
+    fn eccentricity_example() {
+        use crate::hertz::Stop;
+        use crate::hertz::paper::{PaperSettings, eccentricity};
+        let s = eccentricity(0.1, &PaperSettings::default());
+        assert_eq!(s.stop, Stop::Converged);
+        // The exact b/a at A/B = 0.1 is 0.222250 (mpmath); the paper lands within 3 %.
+        let g = (1.0 - s.eccentricity * s.eccentricity).sqrt();
+        assert!((g / 0.222_250 - 1.0).abs() < 0.03);
     }
 }

@@ -12,7 +12,7 @@
 //! them in proportion to their weight shares (an approximation: the weights follow the gap,
 //! not the elastic load sharing), the heaviest patch is reported, and the status says so.
 
-use super::{Contact, Method, PrincipalCurvatures, ellipse, relative_curvatures};
+use super::{Contact, EllipseMethod, PrincipalCurvatures, ellipse, relative_curvatures};
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::rigid::{RigidSweep, Stop};
 use crate::sweep::{Mirror, Mirrored};
@@ -87,26 +87,26 @@ impl<'a> Contacts<'a> {
     }
 }
 
-/// Settings of the sweep.
+/// HertzSettings of the sweep.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Settings {
+pub struct HertzSettings {
     /// Ellipse method.
-    pub(crate) method: Method,
+    pub(crate) method: EllipseMethod,
     /// Normal-load rule.
     pub(crate) normal_load: NormalLoad,
 }
 
-impl Settings {
+impl HertzSettings {
     /// The ellipse `method` and the `normal_load` rule (any combination is valid).
-    pub fn new(method: Method, normal_load: NormalLoad) -> Settings {
-        Settings {
+    pub fn new(method: EllipseMethod, normal_load: NormalLoad) -> HertzSettings {
+        HertzSettings {
             method,
             normal_load,
         }
     }
 
     /// The ellipse method.
-    pub fn method(&self) -> Method {
+    pub fn method(&self) -> EllipseMethod {
         self.method
     }
 
@@ -120,7 +120,7 @@ impl Settings {
 #[derive(Debug, Clone, PartialEq)]
 pub struct HertzSweep {
     source: ContactSource,
-    positions: Vec<Position>,
+    positions: Vec<HertzPosition>,
 }
 
 impl HertzSweep {
@@ -130,7 +130,7 @@ impl HertzSweep {
     }
 
     /// One result per position of the sweep, in its order.
-    pub fn positions(&self) -> &[Position] {
+    pub fn positions(&self) -> &[HertzPosition] {
         &self.positions
     }
 }
@@ -159,19 +159,19 @@ impl SideHertz {
 
 /// The Hertz results at one position.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Position {
+pub struct HertzPosition {
     /// Lateral shift of the wheelset (mm).
     pub y_ws: f64,
     /// Left and right wheels.
     pub sides: [SideHertz; 2],
 }
 
-impl Mirrored for Position {
+impl Mirrored for HertzPosition {
     /// The other wheel's result at the mirrored position: every Hertz quantity is the same
     /// in either side's frame.
-    fn mirrored(&self, y_ws: f64) -> Position {
+    fn mirrored(&self, y_ws: f64) -> HertzPosition {
         let [left, right] = &self.sides;
-        Position {
+        HertzPosition {
             y_ws,
             sides: [right.clone(), left.clone()],
         }
@@ -191,7 +191,7 @@ pub fn sweep(
     contacts: Contacts,
     wheel_load_n: f64,
     e_star_mpa: f64,
-    settings: &Settings,
+    settings: &HertzSettings,
 ) -> HertzSweep {
     let mirror = match contacts {
         Contacts::Rigid(rigid) => rigid.mirror(),
@@ -199,13 +199,13 @@ pub fn sweep(
     };
     let rigid = contacts.rigid().positions();
     let first = mirror.map_or(0, Mirror::middle);
-    let solved: Vec<Position> = (first..rigid.len())
+    let solved: Vec<HertzPosition> = (first..rigid.len())
         .map(|i| {
             let side = |k: usize| {
                 let input = contact_input(contacts, i, k);
                 side_hertz(input, wheel_load_n, e_star_mpa, settings)
             };
-            Position {
+            HertzPosition {
                 y_ws: rigid[i].y_ws,
                 sides: [side(0), side(1)],
             }
@@ -267,7 +267,7 @@ fn side_hertz(
     input: Result<Input, String>,
     wheel_load_n: f64,
     e_star_mpa: f64,
-    settings: &Settings,
+    settings: &HertzSettings,
 ) -> SideHertz {
     let c = match input {
         Ok(c) => c,
@@ -339,7 +339,7 @@ mod tests {
         let rigid = crate::rigid::search(&placement, scene.sweep(), Default::default());
         let qe = crate::quasi_elastic::search(&placement, rigid.clone(), scene.quasi_elastic());
         assert!(rigid.mirror().is_some() && qe.mirror().is_some());
-        let settings = Settings::default();
+        let settings = HertzSettings::default();
         for contacts in [Contacts::QuasiElastic(&qe), Contacts::Rigid(&rigid)] {
             let swept = sweep(contacts, 70e3, e_star, &settings);
             for (i, p) in swept.positions().iter().enumerate() {

@@ -30,9 +30,9 @@ pub fn columns(fleet: &Fleet) -> Vec<String> {
 }
 
 /// The parameters' rows (names, units, definitions; values of `summary` or NaN).
-fn parameter_rows(summary: Option<&Summary>) -> Vec<crate::conicity::pair::ParameterRow> {
+fn parameter_rows(summary: Option<&Summary>) -> Vec<crate::conicity::ParameterRow> {
     let undefined = crate::conicity::Parameters {
-        method: crate::conicity::Method::Klingel,
+        method: crate::conicity::ConicityMethod::Klingel,
         tan_gamma_e: [f64::NAN; 3],
         nonlinearity_per_mm: f64::NAN,
         equilibrium_mm: f64::NAN,

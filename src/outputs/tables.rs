@@ -1,7 +1,7 @@
 //! Stage results as CSV tables. Every table states its frame, signs and units in `#`
 //! comment lines above the header, and every column name carries its unit.
 
-use crate::conicity::pair::ParameterRow;
+use crate::conicity::ParameterRow;
 use crate::gap::ContactPoint;
 use crate::hertz::accuracy::HertzAccuracy;
 use crate::pipeline::EpsilonSweeps;
@@ -155,7 +155,7 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
     }
     let positions = &sweep.positions();
     let wickens: Vec<_> = positions.iter().map(|p| sweep.wickens(p)).collect();
-    let column = |f: &dyn Fn(&crate::rigid::Position) -> f64| -> Vec<f64> {
+    let column = |f: &dyn Fn(&crate::rigid::RigidPosition) -> f64| -> Vec<f64> {
         positions.iter().map(f).collect()
     };
     t.numeric("delta_r_mm", column(&|p| p.delta_r()))
@@ -181,7 +181,7 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
 /// angle), the second contact point and the jump flag.
 fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableBuilder {
     let name = side.name();
-    let contact = |p: &crate::rigid::Position| match p.side(side) {
+    let contact = |p: &crate::rigid::RigidPosition| match p.side(side) {
         Some(c) if p.stop == Stop::Converged => Some(*c),
         _ => None,
     };
@@ -216,7 +216,7 @@ fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableB
 
 /// The `status` of one position in `rigid.csv`: the stop reason in words, two-point
 /// contacts, and why Wickens' parameters are undefined where they are.
-fn rigid_status(p: &crate::rigid::Position, centred_reference: bool) -> String {
+fn rigid_status(p: &crate::rigid::RigidPosition, centred_reference: bool) -> String {
     let mut s = p.stop.status_text().to_string();
     for (k, side) in ["left", "right"].iter().enumerate() {
         if p.contact[k].is_some_and(|c| c.second.is_some()) {
@@ -273,7 +273,7 @@ fn contact_columns(
     )
 }
 
-fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::Position) -> f64) -> Vec<f64> {
+fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::RigidPosition) -> f64) -> Vec<f64> {
     sweep
         .positions()
         .iter()
@@ -355,8 +355,9 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
                 second(&|c| c.weight_share),
             );
     }
-    let r =
-        |p: &crate::quasi_elastic::Position, k: usize| p.sides[k].main().map_or(f64::NAN, |c| c.r);
+    let r = |p: &crate::quasi_elastic::QuasiElasticPosition, k: usize| {
+        p.sides[k].main().map_or(f64::NAN, |c| c.r)
+    };
     t.numeric(
         "delta_r_mm",
         q.positions()
@@ -449,8 +450,8 @@ pub fn epsilon_sensitivity(rigid: &RigidSweep, e: &EpsilonSweeps) -> Result<Tabl
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn hertz(
-    sweep: &crate::hertz::sweep::HertzSweep,
-    settings: &crate::hertz::sweep::Settings,
+    sweep: &crate::hertz::HertzSweep,
+    settings: &crate::hertz::HertzSettings,
 ) -> Result<Table, TableError> {
     let h = sweep.positions();
     let mut t = Table::builder()
@@ -583,12 +584,12 @@ pub fn conicity_points(
 }
 
 /// What each method is, for table headers.
-pub fn conicity_method_text(m: crate::conicity::Method) -> &'static str {
+pub fn conicity_method_text(m: crate::conicity::ConicityMethod) -> &'static str {
     match m {
-        crate::conicity::Method::Klingel => {
+        crate::conicity::ConicityMethod::Klingel => {
             "klingel (EN 15302 Annex B: wavelength of the nonlinear kinematic motion, closed-form integral)"
         }
-        crate::conicity::Method::Regression => {
+        crate::conicity::ConicityMethod::Regression => {
             "regression (EN 15302 Annex C: least-squares line through delta_r over the motion, weighted as a harmonic motion)"
         }
     }
@@ -599,13 +600,13 @@ pub fn conicity_method_text(m: crate::conicity::Method) -> &'static str {
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Result<Table, TableError> {
-    use crate::conicity::Method;
+    use crate::conicity::ConicityMethod;
     let k = &c.klingel.points;
     let r = &c.regression.points;
     Table::builder()
         .comment("equivalent conicity tan_gamma_e (EN 15302) of the rigid delta_r function, by both methods; NaN with a status where not computable")
-        .comment(format!("tan_gamma_e_klingel: {}", conicity_method_text(Method::Klingel)))
-        .comment(format!("tan_gamma_e_regression: {}", conicity_method_text(Method::Regression)))
+        .comment(format!("tan_gamma_e_klingel: {}", conicity_method_text(ConicityMethod::Klingel)))
+        .comment(format!("tan_gamma_e_regression: {}", conicity_method_text(ConicityMethod::Regression)))
         .comment(CONICITY_FRAME)
         .comment(format!(
             "equilibrium (delta_r = 0) at y = {:.6} mm; largest amplitude supported: {:.6} mm (klingel), {:.6} mm (regression)",

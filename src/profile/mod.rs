@@ -13,11 +13,16 @@
 //! [`Profile::convex_curvature`] is positive where the surface bulges towards the other body
 //! (wheel flange tip, rail crown).
 
-pub mod bounds;
+pub(crate) mod bounds;
 pub mod read;
-pub mod s1002;
+mod s1002;
+// The profile spline: public for the readers' reference tests (`tests/profile_read.rs`), not
+// part of the API.
+#[doc(hidden)]
 pub mod spline;
-pub mod uic60;
+mod uic60;
+
+pub use spline::SplineError;
 
 use spline::SmoothingSpline;
 
@@ -81,7 +86,7 @@ pub struct Profile {
 }
 
 /// Names of the built-in profiles accepted in scenes and by `wheelrail profile`.
-pub const BUILT_IN: [&str; 2] = ["S1002", "UIC60E1"];
+pub(crate) const BUILT_IN: [&str; 2] = ["S1002", "UIC60E1"];
 
 impl Profile {
     /// The S1002 wheel (EN 13715, 28 mm flange height, 32.5 mm flange thickness).

@@ -70,12 +70,6 @@ const ARC_H: (f64, f64, f64) = (9.519259302, 20.5, 49.5);
 ///
 /// `s` is clamped to `[S_MIN, S_MAX]`. At a joint the section on the field side of the
 /// joint is used.
-///
-/// # Example
-/// ```
-/// let [f, _, _] = wheelrail::profile::s1002::eval(-55.0);
-/// assert!((f - 28.0).abs() < 1e-9); // flange tip, EN 13715
-/// ```
 #[inline]
 pub fn eval(s: f64) -> [f64; 3] {
     let s = s.clamp(S_MIN, S_MAX);
@@ -260,5 +254,12 @@ mod tests {
         for j in [JOINTS[0], JOINTS[3], JOINTS[4], JOINTS[5], JOINTS[6]] {
             assert!(jump(j) < 1e-6, "joint {j}: {}", jump(j));
         }
+    }
+
+    /// A known value of `eval`.
+    #[test]
+    fn eval_example() {
+        let [f, _, _] = crate::profile::s1002::eval(-55.0);
+        assert!((f - 28.0).abs() < 1e-9); // flange tip, EN 13715
     }
 }

@@ -61,14 +61,6 @@ pub fn joints() -> [f64; 6] {
 /// `[z, dz/dy, d2z/dy2]` of the upright UIC60 head at lateral `y` (mm), height up positive.
 ///
 /// `y` is clamped to `[-half_width(), half_width()]`.
-///
-/// # Example
-/// ```
-/// use wheelrail::profile::uic60;
-/// // The crown/shoulder joint lies 0.174404 mm below the top (EN 13674-1 drawing).
-/// let [z, _, _] = uic60::eval(10.228);
-/// assert!((z + 0.174404).abs() < 1e-6);
-/// ```
 #[inline]
 pub fn eval(y: f64) -> [f64; 3] {
     let w = half_width();
@@ -190,5 +182,14 @@ mod tests {
             }
         }
         0.5 * (lo + hi)
+    }
+
+    /// A known value of `eval`.
+    #[test]
+    fn eval_example() {
+        use crate::profile::uic60;
+        // The crown/shoulder joint lies 0.174404 mm below the top (EN 13674-1 drawing).
+        let [z, _, _] = uic60::eval(10.228);
+        assert!((z + 0.174404).abs() < 1e-6);
     }
 }

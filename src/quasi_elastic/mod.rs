@@ -13,12 +13,12 @@
 //! * `d_min` is subtracted in the exponent: the same weights after normalisation, and no
 //!   underflow.
 //! * The integrals are taken in the wheel coordinate `s` by 8-point Gauss-Legendre panels
-//!   ([`Quadrature::GaussLegendre`], [`DEFAULT_PANEL_WIDTHS`] weight widths
+//!   ([`Quadrature::GaussLegendre`], `DEFAULT_PANEL_WIDTHS` weight widths
 //!   `sqrt(eps / d'')` long) on the pieces where the integrand is smooth: they end at the
 //!   section joints of wheel and rail, where curvatures jump. The trapezoid rule on a fixed
 //!   grid is kept as a variant ([`Quadrature::Trapezoid`], [`average`]); it is only first
 //!   order across a joint.
-//! * The integrals are cut where `d - d_min > cutoff * eps` ([`DEFAULT_CUTOFF`] = 25: the
+//! * The integrals are cut where `d - d_min > cutoff * eps` (`DEFAULT_CUTOFF` = 25: the
 //!   weight left out is below 2e-12 of the total for a quadratic gap).
 //! * The Gauss nodes' weights take an inline `exp` within one unit in the last place of
 //!   libm's (`weight.rs`); the trapezoid variant keeps libm's.
@@ -33,11 +33,10 @@ use std::sync::Arc;
 
 mod settings;
 
-pub use settings::{
-    CUTOFF_RANGE, DEFAULT_CUTOFF, DEFAULT_EPSILON_MM, DEFAULT_MAX_STEP_MM, DEFAULT_PANEL_WIDTHS,
-    EPSILON_RANGE_MM, PANEL_WIDTHS_RANGE, Quadrature, Settings, SettingsError,
-    TRAPEZOID_STEP_RANGE_MM,
+pub(crate) use settings::{
+    DEFAULT_CUTOFF, DEFAULT_EPSILON_MM, DEFAULT_MAX_STEP_MM, DEFAULT_PANEL_WIDTHS, EPSILON_RANGE_MM,
 };
+pub use settings::{Quadrature, QuasiElasticSettings, QuasiElasticSettingsError};
 
 /// Trapezoid steps per weight width `sqrt(eps / d'')` at the rigid contact point.
 pub(crate) const TRAPEZOID_STEPS_PER_WIDTH: f64 = 8.0;
@@ -136,7 +135,7 @@ impl SideResult {
 
 /// The quasi-elastic result at one lateral position.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Position {
+pub struct QuasiElasticPosition {
     /// Lateral shift of the wheelset (mm).
     pub y_ws: f64,
     /// Left and right results (empty when the rigid solution is missing).
@@ -145,8 +144,8 @@ pub struct Position {
     pub rigid_stop: Stop,
 }
 
-impl Mirrored for Position {
-    fn mirrored(&self, y_ws: f64) -> Position {
+impl Mirrored for QuasiElasticPosition {
+    fn mirrored(&self, y_ws: f64) -> QuasiElasticPosition {
         let side = |k: usize| SideResult {
             patches: self.sides[k]
                 .patches
@@ -154,7 +153,7 @@ impl Mirrored for Position {
                 .map(Patch::mirror_image)
                 .collect(),
         };
-        Position {
+        QuasiElasticPosition {
             y_ws,
             sides: [side(1), side(0)],
             rigid_stop: self.rigid_stop,
@@ -162,7 +161,7 @@ impl Mirrored for Position {
     }
 }
 
-impl Position {
+impl QuasiElasticPosition {
     /// The result of `side`.
     pub fn side(&self, side: Side) -> &SideResult {
         match side {
@@ -177,16 +176,16 @@ impl Position {
 /// together.
 #[derive(Debug, Clone)]
 pub struct QuasiElasticSweep {
-    settings: Settings,
+    settings: QuasiElasticSettings,
     rigid: Arc<RigidSweep>,
-    positions: Vec<Position>,
+    positions: Vec<QuasiElasticPosition>,
     /// Whether the positions before the middle are the mirror images of those after it.
     mirror: Option<Mirror>,
 }
 
 impl QuasiElasticSweep {
     /// The settings used.
-    pub fn settings(&self) -> &Settings {
+    pub fn settings(&self) -> &QuasiElasticSettings {
         &self.settings
     }
 
@@ -196,7 +195,7 @@ impl QuasiElasticSweep {
     }
 
     /// One result per position of [the rigid sweep](Self::rigid), in its order.
-    pub fn positions(&self) -> &[Position] {
+    pub fn positions(&self) -> &[QuasiElasticPosition] {
         &self.positions
     }
 
@@ -220,7 +219,7 @@ impl QuasiElasticSweep {
 /// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
 /// let rigid = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&[2.0]).unwrap(), rigid::Solver::default());
-/// let qe = quasi_elastic::search(&placement, rigid, &quasi_elastic::Settings::default());
+/// let qe = quasi_elastic::search(&placement, rigid, &quasi_elastic::QuasiElasticSettings::default());
 /// let patch = qe.positions()[0].sides[0].main().unwrap();
 /// // Averaging moves the contact point, but stays on the tread near the rigid point.
 /// assert!((patch.s - qe.rigid().positions()[0].contact[0].unwrap().s).abs() < 3.0);
@@ -228,7 +227,7 @@ impl QuasiElasticSweep {
 pub fn search(
     placement: &Placement,
     rigid: impl Into<Arc<RigidSweep>>,
-    settings: &Settings,
+    settings: &QuasiElasticSettings,
 ) -> QuasiElasticSweep {
     let rigid: Arc<RigidSweep> = rigid.into();
     let sides = SideGap::both(placement);
@@ -241,7 +240,7 @@ pub fn search(
     let first = mirror.map_or(0, Mirror::middle);
     // Positions are independent: averaged in parallel (rayon), buffers per thread.
     use rayon::prelude::*;
-    let solved: Vec<Position> = all[first..]
+    let solved: Vec<QuasiElasticPosition> = all[first..]
         .par_iter()
         .map_init(Work::default, |work, p| {
             let mut result = [SideResult::default(), SideResult::default()];
@@ -254,7 +253,7 @@ pub fn search(
                     }
                 }
             }
-            Position {
+            QuasiElasticPosition {
                 y_ws: p.y_ws,
                 sides: result,
                 rigid_stop: p.stop,
@@ -316,7 +315,7 @@ struct Pass<'a> {
     d_min: f64,
     /// The distance over which the gap rises by eps at the rigid point (mm).
     width: f64,
-    settings: &'a Settings,
+    settings: &'a QuasiElasticSettings,
 }
 
 /// The patches of one wheel at one position, heaviest first: the weighted averages over
@@ -327,7 +326,7 @@ fn side_average(
     roll: f64,
     axle_height: f64,
     s_rigid: f64,
-    settings: &Settings,
+    settings: &QuasiElasticSettings,
     work: &mut Work,
 ) -> SideResult {
     let eps = settings.epsilon_mm;
@@ -674,7 +673,9 @@ mod tests {
             Quadrature::default(),
             Quadrature::Trapezoid { max_step_mm: 0.05 },
         ] {
-            let settings = Settings::default().with_quadrature(quadrature).unwrap();
+            let settings = QuasiElasticSettings::default()
+                .with_quadrature(quadrature)
+                .unwrap();
             let mirrored = search(&placement, rigid.clone(), &settings);
             let averaged = search(&unmirrored, rigid.clone(), &settings);
             assert_eq!(

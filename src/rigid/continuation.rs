@@ -5,7 +5,7 @@
 //! mm from the solution on average instead of 0.14 mm: fewer Newton steps, fewer slides of
 //! the basin).
 
-use super::{JUMP_SCREEN_MM, Position, Stop};
+use super::{JUMP_SCREEN_MM, RigidPosition, Stop};
 
 /// Start values of the roll along the sweep: the last converged rolls extrapolated by the
 /// parabola through the last three (the line through two while there are fewer), which
@@ -67,7 +67,7 @@ impl Continuation {
         }
     }
 
-    pub(super) fn push(&mut self, p: &Position) {
+    pub(super) fn push(&mut self, p: &RigidPosition) {
         if p.stop != Stop::Converged {
             return;
         }

@@ -7,7 +7,7 @@ use super::continuation::Continuation;
 use super::jumps::{Refinement, find_jumps};
 use super::minima::Scratch;
 use super::solve::PositionSolver;
-use super::{Jump, Position, Solver};
+use super::{Jump, RigidPosition, Solver};
 use crate::sweep::{Mirror, Sweep};
 
 /// Halves of a sweep shorter than this (positions) run one after the other on a calling
@@ -31,7 +31,7 @@ pub(super) fn positions(
     sweep: &Sweep,
     mirror: Option<Mirror>,
     centre_roll: f64,
-) -> Vec<Position> {
+) -> Vec<RigidPosition> {
     let shifts = sweep.shifts_mm();
     let n = shifts.len();
     let start = match mirror {
@@ -66,7 +66,7 @@ fn continuation(
     shifts: &[f64],
     indices: impl Iterator<Item = usize>,
     centre_roll: f64,
-) -> Vec<Position> {
+) -> Vec<RigidPosition> {
     let mut scratch = Scratch::default();
     let mut path = Continuation::new(centre_roll);
     indices
@@ -90,7 +90,7 @@ fn continuation(
 /// middle window of an even sweep, its own mirror image, is refined as it is.
 pub(super) fn jumps(
     solve: &PositionSolver,
-    positions: &[Position],
+    positions: &[RigidPosition],
     mirror: Option<Mirror>,
     scratch: &mut Scratch,
 ) -> Vec<Jump> {
@@ -112,7 +112,7 @@ pub(super) fn jumps(
 /// the test `a_cold_solve_does_not_depend_on_what_was_solved_before`), so in a pool the two
 /// halves of `part` are refined at once, the second with a state of its own, and their
 /// jumps joined in the windows' order: the jumps of one pass.
-fn jumps_of(solve: &PositionSolver, part: &[Position], scratch: &mut Scratch) -> Vec<Jump> {
+fn jumps_of(solve: &PositionSolver, part: &[RigidPosition], scratch: &mut Scratch) -> Vec<Jump> {
     let in_pool = rayon::current_thread_index().is_some();
     if !(in_pool && part.len() > 2) {
         return jumps_in(solve, part, scratch);
@@ -127,7 +127,7 @@ fn jumps_of(solve: &PositionSolver, part: &[Position], scratch: &mut Scratch) ->
 }
 
 /// The jumps of the windows of `part`, refined one after the other with `scratch`.
-fn jumps_in(solve: &PositionSolver, part: &[Position], scratch: &mut Scratch) -> Vec<Jump> {
+fn jumps_in(solve: &PositionSolver, part: &[RigidPosition], scratch: &mut Scratch) -> Vec<Jump> {
     let refinement = Refinement {
         // The level wheelset's wheels are solved one at a time.
         separable: *solve.solver() == Solver::NoRoll,

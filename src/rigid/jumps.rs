@@ -4,7 +4,7 @@
 
 use super::level::join_sides;
 use super::minima::Scratch;
-use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, Position, side_index};
+use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, RigidPosition, side_index};
 use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap, SidePose};
 use crate::track::Side;
 
@@ -56,13 +56,13 @@ pub(super) struct Refinement {
 /// the paper's iteration) steers by the positions it reports.
 pub(super) fn find_jumps(
     sides: &[SideGap; 2],
-    positions: &[Position],
+    positions: &[RigidPosition],
     Refinement {
         separable,
         certifying,
     }: Refinement,
     scratch: &mut Scratch,
-    mut solve: impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
+    mut solve: impl FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition,
 ) -> Vec<Jump> {
     let mut jumps = Vec::new();
     let mut steps = Steps::default();
@@ -104,7 +104,7 @@ pub(super) fn find_jumps(
                 continue;
             }
             // The other wheel at the ends of a confirmed jump, for its Δr.
-            let mut whole = |(p, half): (Position, bool)| {
+            let mut whole = |(p, half): (RigidPosition, bool)| {
                 if !half {
                     return p;
                 }
@@ -147,11 +147,11 @@ impl Ask {
     /// ([`Scratch::provisional`]) unless certified.
     fn solve(
         self,
-        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
+        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition,
         y_ws: f64,
         theta0: f64,
         scratch: &mut Scratch,
-    ) -> Position {
+    ) -> RigidPosition {
         scratch.warm &= !self.cold;
         scratch.provisional = !self.certified;
         solve(y_ws, theta0, self, scratch)
@@ -169,7 +169,7 @@ struct Task<'a, 'b> {
 /// An end of a candidate interval: the position, whether it is a refinement's half
 /// position (separable solvers), and the provisional step it was solved at (`None`:
 /// certified, the sweep's or a certified refinement's).
-type End = ((Position, bool), Option<usize>);
+type End = ((RigidPosition, bool), Option<usize>);
 
 /// What a provisional solve's scans saw at its pose, per wheel: the scan, the pose box it
 /// read and the minima found, as the solve's own certificate would have read them.
@@ -184,7 +184,7 @@ struct Seen {
 /// reused across refinements.
 #[derive(Debug, Default)]
 struct Steps {
-    done: Vec<(Position, Seen)>,
+    done: Vec<(RigidPosition, Seen)>,
     pool: Vec<Seen>,
 }
 
@@ -198,14 +198,14 @@ impl Steps {
     }
 
     /// The positions of the first `n` steps.
-    fn positions(&self, n: usize) -> Vec<Position> {
+    fn positions(&self, n: usize) -> Vec<RigidPosition> {
         self.done[..n].iter().map(|(p, _)| *p).collect()
     }
 
     /// Records a provisional solve `p` with what its scans saw for `wheels`, taken from
     /// `scratch` (the scans are swapped: each keeps its own count of scans, so a buffer
     /// handed back to the solver stays consistent); the step's index.
-    fn push(&mut self, p: Position, scratch: &mut Scratch, wheels: &[usize]) -> usize {
+    fn push(&mut self, p: RigidPosition, scratch: &mut Scratch, wheels: &[usize]) -> usize {
         let mut seen = self.pool.pop().unwrap_or_default();
         for &w in wheels {
             std::mem::swap(&mut seen.scanned[w], &mut scratch.scanned[w]);
@@ -261,18 +261,18 @@ impl Task<'_, '_> {
     /// certified positions of those steps).
     fn refine(
         &self,
-        w: &[Position],
+        w: &[RigidPosition],
         mut steps: Option<&mut Steps>,
-        known: &[Position],
+        known: &[RigidPosition],
         scratch: &mut Scratch,
-        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> Position,
+        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition,
     ) -> [End; 2] {
         let (side, k) = (self.side, side_index(self.side));
         let mut ends: [End; 2] = [((w[0], false), None), ((w[1], false), None)];
         let only = self.separable.then_some(k);
         let mut cold = true;
         let mut solved = 0;
-        let contact_s = |p: &Position| p.side(side).map_or(f64::NAN, |c| c.s);
+        let contact_s = |p: &RigidPosition| p.side(side).map_or(f64::NAN, |c| c.s);
         let motion = |e: &[End; 2]| (contact_s(&e[0].0.0) - contact_s(&e[1].0.0)).abs();
         let mut secant_steps = 0;
         // A jump keeps its size in the part of the interval that holds it; a contact
@@ -359,8 +359,14 @@ const STRADDLE_WIDTHS: f64 = 100.0;
 /// minimum of the gap at `s_a` (the contact at `pa`) and `B` the one at `s_b`, each followed
 /// at both poses; `None` when a minimum cannot be followed, `A` and `B` merge, or `h` does
 /// not change sign.
-fn competing_root(side: &SideGap, pa: &Position, pb: &Position, s_a: f64, s_b: f64) -> Option<f64> {
-    let h = |p: &Position| -> Option<f64> {
+fn competing_root(
+    side: &SideGap,
+    pa: &RigidPosition,
+    pb: &RigidPosition,
+    s_a: f64,
+    s_b: f64,
+) -> Option<f64> {
+    let h = |p: &RigidPosition| -> Option<f64> {
         let pose = SidePose::new(side.sign, p.y_ws, p.roll);
         let reach = FOLLOW_REACH_MM;
         let a = side.minimum_within((s_a - reach, s_a + reach), s_a, &pose)?;

@@ -9,7 +9,7 @@
 
 use super::minima::{Scratch, certify_minimum, side_minimum};
 use super::solve::{finish, no_contact, side_contact};
-use super::{Position, RollSettings, Stop};
+use super::{RigidPosition, RollSettings, Stop};
 use crate::gap::{GapPoint, SideGap, SidePose};
 
 /// Each wheel at roll 0 on its own rail: the global minimum of each side's gap over a fresh
@@ -24,7 +24,7 @@ pub(super) fn solve_no_roll(
     y_ws: f64,
     scratch: &mut Scratch,
     only: Option<usize>,
-) -> Position {
+) -> RigidPosition {
     // No roll iteration to tune: basins are told apart as by the default solver.
     let same = RollSettings::default().same_minimum_mm;
     let mut mins: [Option<(GapPoint, Option<GapPoint>)>; 2] = [None, None];
@@ -62,7 +62,7 @@ pub(super) fn solve_no_roll(
             let mut contact = [None, None];
             contact[k] = Some(side_contact(&sides[k], 0.0, m));
             // As `finish` gives it, with the wheel's own height as the axle height.
-            Position {
+            RigidPosition {
                 y_ws,
                 roll: 0.0,
                 axle_height: -m.0.g,
@@ -80,7 +80,7 @@ pub(super) fn solve_no_roll(
 /// the other from `b` (as [`solve_no_roll`] with `only` `Some(k)` and `Some(1 - k)`): the
 /// same as solving both at once. The mean of the two own heights `-g` is the axle height
 /// `-(g_L + g_R) / 2` of a joint solve exactly (negation and halving are exact).
-pub(super) fn join_sides(a: &Position, b: &Position, k: usize) -> Position {
+pub(super) fn join_sides(a: &RigidPosition, b: &RigidPosition, k: usize) -> RigidPosition {
     if a.stop != Stop::Converged || b.stop != Stop::Converged {
         return no_contact(a.y_ws, 0.0, 1);
     }
@@ -113,7 +113,7 @@ mod tests {
     /// `separable`; `provisional(ask)` says whether a solve skips its certificate.
     fn level_jumps(
         sides: &[SideGap; 2],
-        positions: &[Position],
+        positions: &[RigidPosition],
         separable: bool,
         mut provisional: impl FnMut(Ask) -> bool,
     ) -> Vec<Jump> {

@@ -21,9 +21,9 @@
 //!   caps are the [`RollSettings`] the variant carries.
 //! * `Paper`: the paper's iteration, `theta += (d_min,r - d_min,l) / (y_min,l - y_min,r)`
 //!   from `theta = 0` at every position, the minima taken over the wheel profile tabulated
-//!   every [`PAPER_TABLE_STEP_MM`], stopping at `|d_min,r - d_min,l| <` 1e-4 mm (its Eq. 4).
+//!   every `PAPER_TABLE_STEP_MM`, stopping at `|d_min,r - d_min,l| <` 1e-4 mm (its Eq. 4).
 //!
-//! Every [`Position`] says why its iteration stopped ([`Stop`]: `Converged`, `IterationCap`,
+//! Every [`RigidPosition`] says why its iteration stopped ([`Stop`]: `Converged`, `IterationCap`,
 //! `NoContact`, `Stalled`); the outputs flag the others instead of plotting them.
 
 mod continuation;
@@ -45,19 +45,19 @@ use crate::sweep::{Mirror, Mirrored, Sweep};
 use crate::track::{Placement, Side};
 
 /// Why the roll iteration at one position stopped (shared with [`crate::hertz`]).
-pub use crate::stop::Stop;
+pub use crate::Stop;
 
 /// The paper's tolerance on `|d_min,r - d_min,l|` (its Eq. 4: "1e-4 is enough"), mm.
-pub const PAPER_TOL_MM: f64 = 1e-4;
+pub(crate) const PAPER_TOL_MM: f64 = 1e-4;
 /// Iteration cap of the paper's solver (it states none; 1000 as for its Hertz iteration).
-pub const PAPER_MAX_ITER: usize = 1000;
+pub(crate) const PAPER_MAX_ITER: usize = 1000;
 /// Spacing of the tabulated wheel profile the paper's solver searches (mm). The paper works
 /// on "tabular data" without stating the spacing; 0.1 mm is a common table step.
-pub const PAPER_TABLE_STEP_MM: f64 = 0.1;
+pub(crate) const PAPER_TABLE_STEP_MM: f64 = 0.1;
 /// A second local minimum of the gap within this distance of the first is reported as a
 /// second contact point (mm). 0.01 mm is the paper's quasi-elastic regularisation: a smaller
 /// separation is within the elastic approach of a loaded contact.
-pub const TWO_POINT_GAP_TOL_MM: f64 = 0.01;
+pub(crate) const TWO_POINT_GAP_TOL_MM: f64 = 0.01;
 
 /// Which rigid solver to run, with its settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -66,8 +66,8 @@ pub enum Solver {
     /// its tolerances and caps.
     Default(RollSettings),
     /// The paper's semi-analytical iteration on tabulated profiles, with the paper's
-    /// tolerance ([`PAPER_TOL_MM`]), a cap ([`PAPER_MAX_ITER`]) and table step
-    /// ([`PAPER_TABLE_STEP_MM`]): reproduced as stated, not tuned.
+    /// tolerance (`PAPER_TOL_MM`), a cap (`PAPER_MAX_ITER`) and table step
+    /// (`PAPER_TABLE_STEP_MM`): reproduced as stated, not tuned.
     Paper,
     /// No roll: each wheel is shifted with the wheelset and lowered onto its own rail, the
     /// wheelset held level (scene key `[rigid] roll = "none"`). This is how the Δr
@@ -126,7 +126,7 @@ pub struct SideContact {
     /// Lateral curvature of the rail at the point, convex positive (1/mm).
     pub rail_curvature: f64,
     /// A second contact point: another local minimum of the gap within
-    /// [`TWO_POINT_GAP_TOL_MM`]; `(s, gap)` in mm.
+    /// `TWO_POINT_GAP_TOL_MM`; `(s, gap)` in mm.
     pub second: Option<(f64, f64)>,
 }
 
@@ -158,7 +158,7 @@ impl SideContact {
 
 /// The solution at one lateral position.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Position {
+pub struct RigidPosition {
     /// Lateral shift of the wheelset (mm).
     pub y_ws: f64,
     /// Roll (rad), right-hand about +x: positive lifts the left wheel.
@@ -175,11 +175,11 @@ pub struct Position {
     pub residual: f64,
 }
 
-impl Mirrored for Position {
+impl Mirrored for RigidPosition {
     /// The solution at the mirrored shift `y_ws` (`-self.y_ws`) of a mirror-symmetric
     /// wheelset: the wheels swap, the roll changes sign, the height stays.
-    fn mirrored(&self, y_ws: f64) -> Position {
-        Position {
+    fn mirrored(&self, y_ws: f64) -> RigidPosition {
+        RigidPosition {
             y_ws,
             // 0 - roll: a level wheelset's roll of 0 stays 0, not -0.
             roll: 0.0 - self.roll,
@@ -192,7 +192,7 @@ impl Mirrored for Position {
     }
 }
 
-impl Position {
+impl RigidPosition {
     /// The contact of `side`.
     pub fn side(&self, side: Side) -> Option<&SideContact> {
         self.contact[side_index(side)].as_ref()
@@ -215,7 +215,7 @@ pub struct Jump {
     pub side: Side,
     /// Lower end of the refined interval (mm).
     pub y_from: f64,
-    /// Upper end of the refined interval (mm), within [`JUMP_REFINE_MM`] of `y_from`.
+    /// Upper end of the refined interval (mm), within `JUMP_REFINE_MM` of `y_from`.
     pub y_to: f64,
     /// Wheel coordinate of the contact point at `y_from` (mm).
     pub s_from: f64,
@@ -249,20 +249,20 @@ impl Jump {
 
 /// A contact point moving more than this between neighbouring positions of the sweep is
 /// examined as a possible jump (mm).
-pub const JUMP_SCREEN_MM: f64 = 0.5;
+pub(crate) const JUMP_SCREEN_MM: f64 = 0.5;
 /// Jump intervals are refined by bisection to this width in `y_ws` (mm).
-pub const JUMP_REFINE_MM: f64 = 1e-4;
+pub(crate) const JUMP_REFINE_MM: f64 = 1e-4;
 /// After refinement a jump must still move the contact point this far (mm); a contact point
 /// that only moves fast shrinks its motion with the interval.
-pub const JUMP_CONFIRM_MM: f64 = 0.1;
+pub(crate) const JUMP_CONFIRM_MM: f64 = 0.1;
 
 /// The rigid solution over a sweep, as [`search`] computed it (read through its accessors:
 /// the stages computed from it rely on its positions being those of its sweep).
 #[derive(Debug, Clone)]
 pub struct RigidSweep {
     solver: Solver,
-    positions: Vec<Position>,
-    centre: Position,
+    positions: Vec<RigidPosition>,
+    centre: RigidPosition,
     jumps: Vec<Jump>,
     /// Whether the positions before the middle are the mirror images of those after it.
     mirror: Option<Mirror>,
@@ -275,12 +275,12 @@ impl RigidSweep {
     }
 
     /// One solution per lateral position, in sweep order.
-    pub fn positions(&self) -> &[Position] {
+    pub fn positions(&self) -> &[RigidPosition] {
         &self.positions
     }
 
     /// The centred solution (`y_ws = 0`), the reference of `z_ws` and `l0`.
-    pub fn centre(&self) -> &Position {
+    pub fn centre(&self) -> &RigidPosition {
         &self.centre
     }
 
@@ -304,16 +304,16 @@ impl RigidSweep {
     }
 
     /// Vertical displacement of the wheelset relative to the centred position (mm, up).
-    pub fn z_ws(&self, p: &Position) -> f64 {
+    pub fn z_ws(&self, p: &RigidPosition) -> f64 {
         p.axle_height - self.centre.axle_height
     }
 
-    /// The shift where the contact angle of `side` first exceeds [`FLANGE_CONTACT_GAMMA_RAD`]
+    /// The shift where the contact angle of `side` first exceeds `FLANGE_CONTACT_GAMMA_RAD`
     /// moving that wheel towards its rail (left: increasing `y_ws > 0`; right: decreasing
     /// `y_ws < 0`): linear between the two positions around the crossing, or the middle of a
     /// contact-point jump between them. NaN when the sweep does not reach it.
     pub fn flange_contact_mm(&self, side: Side) -> f64 {
-        let outward: Vec<&Position> = match side {
+        let outward: Vec<&RigidPosition> = match side {
             Side::Left => self.positions.iter().filter(|p| p.y_ws >= 0.0).collect(),
             Side::Right => self
                 .positions
@@ -355,7 +355,7 @@ impl RigidSweep {
     }
 
     /// Wickens' parameters of position `p` of this sweep (with its [`l0_mm`](Self::l0_mm));
-    /// NaN at `y_ws = 0` (|y_ws| below [`WICKENS_CENTRE_MM`]), where they are undefined,
+    /// NaN at `y_ws = 0` (|y_ws| below `WICKENS_CENTRE_MM`), where they are undefined,
     /// and where the position did not converge.
     ///
     /// # Example
@@ -368,7 +368,7 @@ impl RigidSweep {
     /// // S1002 on UIC60 1:40 at 2 mm: a conicity of about 0.2.
     /// assert!(w.lambda > 0.1 && w.lambda < 0.3);
     /// ```
-    pub fn wickens(&self, p: &Position) -> Wickens {
+    pub fn wickens(&self, p: &RigidPosition) -> Wickens {
         if p.stop != Stop::Converged || p.y_ws.abs() < WICKENS_CENTRE_MM {
             return Wickens {
                 lambda: f64::NAN,
@@ -389,10 +389,10 @@ impl RigidSweep {
 /// Contact angle above which a wheel is in flange contact (rad): 63°, below the flank angle
 /// of S1002 (70°, 1.22 rad) and of the usual worn flanges (65-70°), above every tread and
 /// flange-root contact (S1002 on UIC60 1:40 reaches 0.9 rad at the root).
-pub const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
+pub(crate) const FLANGE_CONTACT_GAMMA_RAD: f64 = 1.1;
 
 /// The contact angle of `side` at `p` (rad), NaN unless it converged with that contact.
-pub(crate) fn contact_angle(p: &Position, side: Side) -> f64 {
+pub(crate) fn contact_angle(p: &RigidPosition, side: Side) -> f64 {
     match p.side(side) {
         Some(c) if p.stop == Stop::Converged => c.gamma,
         _ => f64::NAN,
@@ -401,7 +401,7 @@ pub(crate) fn contact_angle(p: &Position, side: Side) -> f64 {
 
 /// Shifts closer to 0 than this are the centred wheelset, where Wickens' parameters, ratios
 /// to `y_ws`, are undefined (mm; the sweep rounds its positions to 1e-9 mm).
-pub const WICKENS_CENTRE_MM: f64 = 1e-12;
+pub(crate) const WICKENS_CENTRE_MM: f64 = 1e-12;
 
 /// Wickens' linearisation parameters of one position (A. H. Wickens, Fundamentals of Rail
 /// Vehicle Dynamics, 2003), with `l0` half the lateral distance between the contact points

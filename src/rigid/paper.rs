@@ -1,10 +1,10 @@
 //! The paper's roll iteration (its Eqs. 2-5) on the tabulated wheel profile.
 
 use super::solve::{finish, no_contact};
-use super::{PAPER_MAX_ITER, PAPER_TOL_MM, Position, Stop};
+use super::{PAPER_MAX_ITER, PAPER_TOL_MM, RigidPosition, Stop};
 use crate::gap::{SideGap, SidePose};
 
-pub(super) fn solve_paper(sides: &[SideGap; 2], y_ws: f64) -> Position {
+pub(super) fn solve_paper(sides: &[SideGap; 2], y_ws: f64) -> RigidPosition {
     let mut theta = 0.0;
     let mut iterations = 0;
     loop {

@@ -7,7 +7,7 @@
 
 use super::minima::{Scratch, certify_minimum, keep_lowest_known, side_minimum};
 use super::solve::{finish, no_contact};
-use super::{Position, RollSettings, Stop};
+use super::{RigidPosition, RollSettings, Stop};
 use crate::gap::{GapPoint, SideGap, SidePose};
 
 /// The envelope-theorem slope gives way to the secant of the last two iterates where the
@@ -103,7 +103,7 @@ pub(super) fn solve_default(
     y_ws: f64,
     theta0: f64,
     scratch: &mut Scratch,
-) -> Position {
+) -> RigidPosition {
     let mut it = Iteration {
         y_ws,
         theta: theta0,

@@ -6,7 +6,7 @@ use super::level::solve_no_roll;
 use super::minima::Scratch;
 use super::paper::solve_paper;
 use super::roll::solve_default;
-use super::{PAPER_TABLE_STEP_MM, Position, SideContact, Solver, Stop};
+use super::{PAPER_TABLE_STEP_MM, RigidPosition, SideContact, Solver, Stop};
 use crate::gap::{GapPoint, SideGap};
 use crate::track::Placement;
 
@@ -47,7 +47,7 @@ impl<'a> PositionSolver<'a> {
         theta0: f64,
         scratch: &mut Scratch,
         only: Option<usize>,
-    ) -> Position {
+    ) -> RigidPosition {
         match &self.solver {
             Solver::Default(settings) => {
                 solve_default(&self.sides, settings, y_ws, theta0, scratch)
@@ -58,8 +58,8 @@ impl<'a> PositionSolver<'a> {
     }
 }
 
-pub(super) fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> Position {
-    Position {
+pub(super) fn no_contact(y_ws: f64, theta: f64, iterations: usize) -> RigidPosition {
+    RigidPosition {
         y_ws,
         roll: theta,
         axle_height: f64::NAN,
@@ -77,10 +77,10 @@ pub(super) fn finish(
     mins: [(GapPoint, Option<GapPoint>); 2],
     iterations: usize,
     residual: f64,
-) -> Position {
+) -> RigidPosition {
     // Both minimum gaps are (nearly) equal; the axle height closes the mean of them.
     let axle_height = -0.5 * (mins[0].0.g + mins[1].0.g);
-    Position {
+    RigidPosition {
         y_ws,
         roll: theta,
         axle_height,

@@ -11,10 +11,12 @@ use super::{
     MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
 };
 use crate::hertz::Material;
-use crate::hertz::sweep::{ContactSource, Settings as HertzSettings};
+use crate::hertz::{ContactSource, HertzSettings};
 use crate::message::Number;
 use crate::profile::Profile;
-use crate::quasi_elastic::{EPSILON_RANGE_MM, Quadrature, Settings as QeSettings, SettingsError};
+use crate::quasi_elastic::{
+    EPSILON_RANGE_MM, Quadrature, QuasiElasticSettings as QeSettings, QuasiElasticSettingsError,
+};
 use crate::rigid::Solver;
 use crate::stage::Figure;
 use crate::sweep::{Sweep, SweepError};
@@ -390,10 +392,10 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
     )
     .map_err(|e| {
         let key = match e {
-            SettingsError::Epsilon { .. } => "quasi_elastic.epsilon_mm",
-            SettingsError::Cutoff { .. } => "quasi_elastic.cutoff",
-            SettingsError::PanelWidths { .. } => "quasi_elastic.panel_widths",
-            SettingsError::MaxStep { .. } => "quasi_elastic.max_step_mm",
+            QuasiElasticSettingsError::Epsilon { .. } => "quasi_elastic.epsilon_mm",
+            QuasiElasticSettingsError::Cutoff { .. } => "quasi_elastic.cutoff",
+            QuasiElasticSettingsError::PanelWidths { .. } => "quasi_elastic.panel_widths",
+            QuasiElasticSettingsError::MaxStep { .. } => "quasi_elastic.max_step_mm",
         };
         invalid(key, e.to_string())
     })?;
@@ -437,8 +439,8 @@ fn quasi_elastic(raw: &RawScene) -> Result<(QeSettings, Vec<f64>), Invalid> {
 fn hertz(raw: &RawScene) -> Result<(HertzSettings, ContactSource), Invalid> {
     let h = &raw.hertz;
     let method = match h.method.as_deref() {
-        None | Some("exact") => crate::hertz::Method::Exact,
-        Some("paper") => crate::hertz::Method::Paper,
+        None | Some("exact") => crate::hertz::EllipseMethod::Exact,
+        Some("paper") => crate::hertz::EllipseMethod::Paper,
         Some(other) => {
             return Err(invalid(
                 "hertz.method",
@@ -457,8 +459,8 @@ fn hertz(raw: &RawScene) -> Result<(HertzSettings, ContactSource), Invalid> {
         }
     };
     let normal_load = match h.normal_load.as_deref() {
-        None | Some("projected") => crate::hertz::sweep::NormalLoad::Projected,
-        Some("vertical") => crate::hertz::sweep::NormalLoad::Vertical,
+        None | Some("projected") => crate::hertz::NormalLoad::Projected,
+        Some("vertical") => crate::hertz::NormalLoad::Vertical,
         Some(other) => {
             return Err(invalid(
                 "hertz.normal_load",
@@ -515,18 +517,18 @@ fn fleet_settings(raw: &RawFleet) -> Result<FleetSettings, Invalid> {
 /// The settings of `[conicity]`, or the offending key and a message.
 fn conicity_settings(
     raw: &RawConicity,
-) -> Result<crate::conicity::Settings, (&'static str, String)> {
-    use crate::conicity::Method;
+) -> Result<crate::conicity::ConicitySettings, (&'static str, String)> {
+    use crate::conicity::ConicityMethod;
     let method = match raw.method.as_deref() {
-        None => Method::Klingel,
-        Some(name) => Method::from_name(name).ok_or_else(|| {
+        None => ConicityMethod::Klingel,
+        Some(name) => ConicityMethod::from_name(name).ok_or_else(|| {
             (
                 "conicity.method",
                 format!("unknown method {name:?}; expected \"klingel\" or \"regression\""),
             )
         })?,
     };
-    let settings = crate::conicity::Settings::new(method);
+    let settings = crate::conicity::ConicitySettings::new(method);
     match &raw.amplitudes_mm {
         None => Ok(settings),
         Some(a) => settings

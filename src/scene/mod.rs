@@ -18,29 +18,29 @@ use raw::RawScene;
 // wheelset, 460 mm wheels, 70 kN, steel), in one place. Gauge, gauge-point depth and
 // flange-back distance are the track module's standard values (`track::STANDARD_GAUGE_MM`,
 // ...), the numerical settings the defaults of their stages (`rigid::Solver::default`,
-// `quasi_elastic::Settings::default`, `hertz::sweep::Settings::default`).
+// `quasi_elastic::QuasiElasticSettings::default`, `hertz::HertzSettings::default`).
 
 /// Default wheel profile (both sides): the paper's S1002.
-pub const DEFAULT_WHEEL_PROFILE: &str = "S1002";
+pub(crate) const DEFAULT_WHEEL_PROFILE: &str = "S1002";
 /// Default rail profile (both sides): the paper's UIC60 (60E1).
-pub const DEFAULT_RAIL_PROFILE: &str = "UIC60E1";
+pub(crate) const DEFAULT_RAIL_PROFILE: &str = "UIC60E1";
 /// Default rail inclination of the track: the paper's 1:40.
-pub const DEFAULT_INCLINATION: &str = "1:40";
+pub(crate) const DEFAULT_INCLINATION: &str = "1:40";
 /// Default inclination already in the rail profile data: upright (the built-in UIC60 and
 /// most rail files are given upright).
-pub const DEFAULT_RAIL_PROFILE_INCLINATION: &str = "vertical";
+pub(crate) const DEFAULT_RAIL_PROFILE_INCLINATION: &str = "vertical";
 /// Default lateral sweep (mm): the paper's -15 to 15 mm.
-pub const DEFAULT_SWEEP_MM: (f64, f64) = (-15.0, 15.0);
+pub(crate) const DEFAULT_SWEEP_MM: (f64, f64) = (-15.0, 15.0);
 /// Default sweep step (mm): the paper's 0.1 mm (301 positions).
-pub const DEFAULT_SWEEP_STEP_MM: f64 = 0.1;
+pub(crate) const DEFAULT_SWEEP_STEP_MM: f64 = 0.1;
 /// Default nominal wheel radius (mm): the paper's 920 mm wheel.
-pub const DEFAULT_NOMINAL_RADIUS_MM: f64 = 460.0;
+pub(crate) const DEFAULT_NOMINAL_RADIUS_MM: f64 = 460.0;
 /// Default vertical wheel load (kN): the paper's 70 kN.
-pub const DEFAULT_WHEEL_LOAD_KN: f64 = 70.0;
+pub(crate) const DEFAULT_WHEEL_LOAD_KN: f64 = 70.0;
 /// Default Young's modulus of wheel and rail (GPa): steel.
-pub const DEFAULT_YOUNG_GPA: f64 = 210.0;
+pub(crate) const DEFAULT_YOUNG_GPA: f64 = 210.0;
 /// Default Poisson's ratio of wheel and rail: steel.
-pub const DEFAULT_POISSON: f64 = 0.3;
+pub(crate) const DEFAULT_POISSON: f64 = 0.3;
 
 /// Newtons per kilonewton (the scene gives loads in kN, the numerics take N).
 const N_PER_KN: f64 = 1000.0;
@@ -48,36 +48,36 @@ const N_PER_KN: f64 = 1000.0;
 const MPA_PER_GPA: f64 = 1000.0;
 
 /// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
-pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
+pub(crate) const MAX_WHEEL_LOAD_N: f64 = 1e6;
 /// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
 /// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
-pub const MIN_WHEEL_LOAD_N: f64 = 1.0;
+pub(crate) const MIN_WHEEL_LOAD_N: f64 = 1.0;
 /// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
 /// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
-pub const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
+pub(crate) const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
 /// Poisson's ratios accepted, `[0, 0.5)`: the mathematical range is `(-1, 0.5)`, but no
 /// wheel or rail material has a negative ratio (steels 0.27 to 0.30, polymers up to 0.45;
 /// negative ratios belong to auxetic foams), and near -1 the combined modulus `E/(1-ν²)`
 /// grows without bound. 0.5 (incompressible) is excluded by Hertz's formula itself.
-pub const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
+pub(crate) const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
 /// The longest filter wavelength of the profile spline (mm): longer than a wheel's tread
 /// and flange together, the filter flattens the profile itself.
-pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
+pub(crate) const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
 /// The largest number of values of eps in the sensitivity figure: each is a quasi-elastic
 /// pass over the whole sweep.
-pub const MAX_EPSILON_SENSITIVITY: usize = 16;
+pub(crate) const MAX_EPSILON_SENSITIVITY: usize = 16;
 
 /// Default filter wavelength of the spline through profile points read from files (mm): 0,
 /// the spline interpolates. Measured profiles want smoothing (4 mm is a good start, see
-/// [`crate::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM`]); exact benchmark files do not.
-pub const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
+/// the profile spline's default filter); exact benchmark files do not.
+pub(crate) const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
 
 /// The largest `[fleet] conicity_limit` accepted: equivalent conicities of railway wheel/rail
 /// pairs lie far below 1 (limits in use are 0.15 to 0.5); a limit above 2 marks nothing.
-pub const MAX_CONICITY_LIMIT: f64 = 2.0;
+pub(crate) const MAX_CONICITY_LIMIT: f64 = 2.0;
 
 /// The sensitivity values of eps of the `qe_epsilon` figure (mm).
-pub const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
+pub(crate) const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
 
 /// An error in a scene: the file, the key (dotted path) where known, and what was expected.
 #[derive(Debug)]
@@ -196,15 +196,15 @@ pub struct Scene {
     /// Rigid solver.
     pub(crate) rigid_solver: crate::rigid::Solver,
     /// Quasi-elastic settings.
-    pub(crate) quasi_elastic: crate::quasi_elastic::Settings,
+    pub(crate) quasi_elastic: crate::quasi_elastic::QuasiElasticSettings,
     /// Values of eps for the sensitivity figure (mm).
     pub(crate) epsilon_sensitivity_mm: Vec<f64>,
     /// Hertz settings over the sweep.
-    pub(crate) hertz: crate::hertz::sweep::Settings,
+    pub(crate) hertz: crate::hertz::HertzSettings,
     /// The contacts the Hertz ellipses are computed for.
-    pub(crate) hertz_contact: crate::hertz::sweep::ContactSource,
+    pub(crate) hertz_contact: crate::hertz::ContactSource,
     /// Equivalent conicity settings.
-    pub(crate) conicity: crate::conicity::Settings,
+    pub(crate) conicity: crate::conicity::ConicitySettings,
     /// Settings of `wheelrail fleet` with this scene as its template.
     pub(crate) fleet: FleetSettings,
 }
@@ -317,7 +317,7 @@ impl Scene {
     }
 
     /// Quasi-elastic settings.
-    pub fn quasi_elastic(&self) -> &crate::quasi_elastic::Settings {
+    pub fn quasi_elastic(&self) -> &crate::quasi_elastic::QuasiElasticSettings {
         &self.quasi_elastic
     }
 
@@ -327,17 +327,17 @@ impl Scene {
     }
 
     /// Hertz settings over the sweep.
-    pub fn hertz(&self) -> &crate::hertz::sweep::Settings {
+    pub fn hertz(&self) -> &crate::hertz::HertzSettings {
         &self.hertz
     }
 
     /// The contacts the Hertz ellipses are computed for (`[hertz] contact`).
-    pub fn hertz_contact(&self) -> crate::hertz::sweep::ContactSource {
+    pub fn hertz_contact(&self) -> crate::hertz::ContactSource {
         self.hertz_contact
     }
 
     /// Equivalent conicity settings.
-    pub fn conicity(&self) -> &crate::conicity::Settings {
+    pub fn conicity(&self) -> &crate::conicity::ConicitySettings {
         &self.conicity
     }
 

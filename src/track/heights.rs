@@ -7,12 +7,12 @@ use wide::f64x4;
 /// interpolation errs by at most `Z'' h^2 / 8`, 4e-6 mm on the R13 gauge corner at the
 /// 70-degree contact angle of a flange (`Z'' = (1 + tan^2)^1.5 / R`); the coarse scans that
 /// read it allow [`crate::gap::COARSE_MARGIN_MM`].
-pub const HEIGHT_TABLE_STEP_MM: f64 = 0.02;
+pub(crate) const HEIGHT_TABLE_STEP_MM: f64 = 0.02;
 
 /// A uniform table of a placed rail's heights `Z(Y)` in the side frame, interpolated
 /// linearly: the cheap, approximate rail of coarse scans (and the paper's tabulated rail).
 #[derive(Debug, Clone, Default)]
-pub struct HeightTable {
+pub(crate) struct HeightTable {
     y0: f64,
     inv_step: f64,
     /// Largest table coordinate `t = (y - y0) / step` inside the table (`z.len() - 2`).

@@ -6,29 +6,29 @@ use crate::message::Number;
 use std::fmt;
 
 /// Distance from the inner face of a wheel to its taping line (EN 13715), mm.
-pub const TAPING_LINE_FROM_INNER_FACE_MM: f64 = 70.0;
+pub(crate) const TAPING_LINE_FROM_INNER_FACE_MM: f64 = 70.0;
 
 /// Standard gauge (mm): 1435.
-pub const STANDARD_GAUGE_MM: f64 = 1435.0;
+pub(crate) const STANDARD_GAUGE_MM: f64 = 1435.0;
 /// Depth below the top of rail at which the gauge is measured (mm, EN 13848-1): 14.
-pub const GAUGE_POINT_DEPTH_MM: f64 = 14.0;
+pub(crate) const GAUGE_POINT_DEPTH_MM: f64 = 14.0;
 /// Distance between the inner faces of a standard wheelset's wheels (mm): 1360.
-pub const STANDARD_FLANGE_BACK_MM: f64 = 1360.0;
+pub(crate) const STANDARD_FLANGE_BACK_MM: f64 = 1360.0;
 
 /// The gauges accepted (mm): every gauge in use, from 381 mm minimum-gauge railways to
 /// 1676 mm broad gauge, with margin. The wheelset is placed from it; 1e300 mm is not a track.
-pub const GAUGE_RANGE_MM: (f64, f64) = (300.0, 2000.0);
+pub(crate) const GAUGE_RANGE_MM: (f64, f64) = (300.0, 2000.0);
 /// The gauge-point depths accepted (mm, the lower end excluded): the gauge point lies in the
 /// rail head, whose gauge face is about 30 mm deep on every standard rail (14 mm is the
 /// usual depth, 10 mm on some older networks).
-pub const GAUGE_POINT_DEPTH_RANGE_MM: (f64, f64) = (0.0, 30.0);
+pub(crate) const GAUGE_POINT_DEPTH_RANGE_MM: (f64, f64) = (0.0, 30.0);
 /// The flange-back distances accepted, as fractions of the gauge (the upper end excluded):
 /// the wheels must sit between the rails (1360 / 1435 = 0.948 on standard gauge; 0.8 leaves
 /// room for every gauge and wheelset standard).
-pub const FLANGE_BACK_RANGE_OF_GAUGE: (f64, f64) = (0.8, 1.0);
+pub(crate) const FLANGE_BACK_RANGE_OF_GAUGE: (f64, f64) = (0.8, 1.0);
 /// The rail inclinations accepted (rad): upright to about 11 degrees towards the track
 /// centre (1:40 is 0.025 rad, 1:20 is 0.05 rad); an outward or steeper tilt is not a track.
-pub const INCLINATION_RANGE_RAD: (f64, f64) = (0.0, 0.2);
+pub(crate) const INCLINATION_RANGE_RAD: (f64, f64) = (0.0, 0.2);
 
 /// Why a track layout or an inclination is not accepted. Each variant names the quantity,
 /// so that a caller (the scene file) can name the key it came from.
@@ -39,22 +39,22 @@ pub enum LayoutError {
         /// The text as given.
         text: String,
     },
-    /// An inclination outside [`INCLINATION_RANGE_RAD`] (or not finite).
+    /// An inclination outside `INCLINATION_RANGE_RAD` (or not finite).
     InclinationOutOfRange {
         /// The angle, rad.
         radians: f64,
     },
-    /// A gauge outside [`GAUGE_RANGE_MM`] (or not finite).
+    /// A gauge outside `GAUGE_RANGE_MM` (or not finite).
     Gauge {
         /// The gauge, mm.
         gauge_mm: f64,
     },
-    /// A gauge-point depth outside [`GAUGE_POINT_DEPTH_RANGE_MM`] (or not finite).
+    /// A gauge-point depth outside `GAUGE_POINT_DEPTH_RANGE_MM` (or not finite).
     GaugePointDepth {
         /// The depth, mm.
         depth_mm: f64,
     },
-    /// A flange-back distance that does not fit the gauge ([`FLANGE_BACK_RANGE_OF_GAUGE`]).
+    /// A flange-back distance that does not fit the gauge (`FLANGE_BACK_RANGE_OF_GAUGE`).
     FlangeBack {
         /// The flange-back distance, mm.
         flange_back_mm: f64,
@@ -107,7 +107,7 @@ impl fmt::Display for LayoutError {
 impl std::error::Error for LayoutError {}
 
 /// A rail inclination towards the track centre, as an angle in radians, within
-/// [`INCLINATION_RANGE_RAD`].
+/// `INCLINATION_RANGE_RAD`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Inclination(pub(crate) f64);
 
@@ -118,7 +118,7 @@ impl Inclination {
     /// The inclination of `radians` towards the track centre.
     ///
     /// # Errors
-    /// [`LayoutError::InclinationOutOfRange`] outside [`INCLINATION_RANGE_RAD`] or for a
+    /// [`LayoutError::InclinationOutOfRange`] outside `INCLINATION_RANGE_RAD` or for a
     /// non-finite angle.
     ///
     /// # Example
@@ -141,7 +141,7 @@ impl Inclination {
     /// # Errors
     /// [`LayoutError::InclinationText`] when the text is none of these,
     /// [`LayoutError::InclinationOutOfRange`] when the angle is outside
-    /// [`INCLINATION_RANGE_RAD`].
+    /// `INCLINATION_RANGE_RAD`.
     ///
     /// # Example
     /// ```

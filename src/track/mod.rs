@@ -22,17 +22,13 @@ mod rail;
 mod sparse;
 mod wheel;
 
-pub use heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
-pub use layout::{
-    FLANGE_BACK_RANGE_OF_GAUGE, GAUGE_POINT_DEPTH_MM, GAUGE_POINT_DEPTH_RANGE_MM, GAUGE_RANGE_MM,
-    INCLINATION_RANGE_RAD, Inclination, LayoutError, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
-    TAPING_LINE_FROM_INNER_FACE_MM, TrackLayout,
-};
+pub(crate) use heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
+pub(crate) use layout::{GAUGE_POINT_DEPTH_MM, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM};
+pub use layout::{Inclination, LayoutError, TrackLayout};
 pub(crate) use rail::SurfaceBounds;
-pub use rail::{
-    MAX_RAIL_SLOPE, PlacedRail, RailPoint, SURFACE_TABLE_MAX_SLOPE, SURFACE_TABLE_STEP_MM,
-};
-pub use wheel::{NOMINAL_RADIUS_RANGE_MM, PlacedWheel, WheelPoint, check_nominal_radius};
+pub use rail::{PlacedRail, RailPoint};
+pub(crate) use wheel::{NOMINAL_RADIUS_RANGE_MM, check_nominal_radius};
+pub use wheel::{PlacedWheel, WheelPoint};
 pub(crate) use wheel::{WheelCell, WheelCells};
 
 /// Why a rail could not be placed.
@@ -50,7 +46,7 @@ pub enum PlacementError {
         /// What was expected.
         expected: ProfileKind,
     },
-    /// A nominal wheel radius outside [`NOMINAL_RADIUS_RANGE_MM`] (or not finite).
+    /// A nominal wheel radius outside `NOMINAL_RADIUS_RANGE_MM` (or not finite).
     NominalRadius {
         /// The radius, mm.
         radius_mm: f64,

@@ -99,13 +99,13 @@ impl WheelPoint {
 
 /// The nominal wheel radii accepted (mm): from small trolley wheels to the largest
 /// locomotive wheels, with margin.
-pub const NOMINAL_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
+pub(crate) const NOMINAL_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
 
 /// `nominal_radius_mm` if it is within [`NOMINAL_RADIUS_RANGE_MM`].
 ///
 /// # Errors
 /// [`PlacementError::NominalRadius`] otherwise (and for a non-finite radius).
-pub fn check_nominal_radius(nominal_radius_mm: f64) -> Result<f64, PlacementError> {
+pub(crate) fn check_nominal_radius(nominal_radius_mm: f64) -> Result<f64, PlacementError> {
     let (lo, hi) = NOMINAL_RADIUS_RANGE_MM;
     if (lo..=hi).contains(&nominal_radius_mm) {
         Ok(nominal_radius_mm)
@@ -123,7 +123,7 @@ impl PlacedWheel {
     /// # Errors
     /// [`PlacementError::WrongKind`] when the profile is not a wheel,
     /// [`PlacementError::NominalRadius`] when the radius is outside
-    /// [`NOMINAL_RADIUS_RANGE_MM`].
+    /// `NOMINAL_RADIUS_RANGE_MM`.
     pub fn place(
         profile: Profile,
         nominal_radius_mm: f64,

@@ -5,8 +5,8 @@ use crate::report::{Chart, Figure, LegendPosition, Series};
 
 /// The equivalent conicity function by both methods, `tan γe(3 mm)` marked (EN 15302).
 pub(crate) fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Figure {
-    use crate::conicity::{Method, REFERENCE_AMPLITUDE_MM};
-    let series = |m: Method| -> Line {
+    use crate::conicity::{ConicityMethod, REFERENCE_AMPLITUDE_MM};
+    let series = |m: ConicityMethod| -> Line {
         c.by(m)
             .points
             .iter()
@@ -20,11 +20,20 @@ pub(crate) fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Figure {
         "amplitude of the kinematic motion ŷ (mm)",
         "equivalent conicity tan γe",
     )
-    .series(Series::line("Klingel wavelength (Annex B)", series(Method::Klingel)).color(0))
     .series(
-        Series::line("regression of Δr (Annex C)", series(Method::Regression))
-            .color(1)
-            .dashed(),
+        Series::line(
+            "Klingel wavelength (Annex B)",
+            series(ConicityMethod::Klingel),
+        )
+        .color(0),
+    )
+    .series(
+        Series::line(
+            "regression of Δr (Annex C)",
+            series(ConicityMethod::Regression),
+        )
+        .color(1)
+        .dashed(),
     );
     if at3.is_finite() {
         chart = chart

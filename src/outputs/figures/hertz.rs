@@ -6,7 +6,7 @@ use crate::report::{Chart, Figure, LegendPosition, Series};
 
 /// `(y_ws, f(ellipse))` of wheel `k` over a Hertz sweep, NaN where there is no ellipse.
 fn ellipse_series(
-    h: &[crate::hertz::sweep::Position],
+    h: &[crate::hertz::HertzPosition],
     k: usize,
     f: fn(&crate::hertz::Ellipse) -> f64,
 ) -> Vec<(f64, f64)> {
@@ -16,7 +16,7 @@ fn ellipse_series(
 }
 
 /// Semi-axes of the contact ellipses (paper Fig. 6).
-pub(crate) fn semi_axes(h: &[crate::hertz::sweep::Position]) -> Figure {
+pub(crate) fn semi_axes(h: &[crate::hertz::HertzPosition]) -> Figure {
     let get = |k, f| ellipse_series(h, k, f);
     Figure::single(
         Chart::new("Semi-axes of the contact ellipses", SHIFT, "semi-axis (mm)")
@@ -36,7 +36,7 @@ pub(crate) fn semi_axes(h: &[crate::hertz::sweep::Position]) -> Figure {
 }
 
 /// Maximum contact pressure.
-pub(crate) fn pressure(h: &[crate::hertz::sweep::Position]) -> Figure {
+pub(crate) fn pressure(h: &[crate::hertz::HertzPosition]) -> Figure {
     Figure::single(
         Chart::new("Maximum contact pressure", SHIFT, "p0 (MPa)")
             .series(Series::line("left", ellipse_series(h, 0, |e| e.p0_mpa)).color(LEFT))

@@ -3,7 +3,7 @@
 use super::profiles::drawn_profiles;
 use super::{LEFT, RIGHT, RIGID, SHIFT};
 use crate::report::{Chart, Figure, Series};
-use crate::rigid::{Position, RigidSweep, SideContact, Stop};
+use crate::rigid::{RigidPosition, RigidSweep, SideContact, Stop};
 use crate::track::{Placement, Side};
 
 /// Vertical offset of the wheel above the rail in contact maps (mm), so that the lines
@@ -15,7 +15,7 @@ const MAP_LIFT_MM: f64 = 8.0;
 pub(super) fn rigid_series(
     sweep: &RigidSweep,
     side: Side,
-    f: impl Fn(&Position, &SideContact) -> f64,
+    f: impl Fn(&RigidPosition, &SideContact) -> f64,
 ) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(sweep.positions().len());
     for (i, p) in sweep.positions().iter().enumerate() {
@@ -36,7 +36,7 @@ pub(super) fn rigid_series(
 }
 
 /// A wheelset quantity over a rigid sweep, broken where either contact point jumps.
-fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&Position) -> f64) -> Vec<(f64, f64)> {
+fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&RigidPosition) -> f64) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(sweep.positions().len());
     for (i, p) in sweep.positions().iter().enumerate() {
         out.push((
@@ -120,7 +120,7 @@ pub(crate) fn contact_points(placement: &Placement, sweep: &RigidSweep) -> Figur
 
 /// Rolling radius difference against the shift (paper Fig. 2).
 pub(crate) fn rolling_radius(sweep: &RigidSweep) -> Figure {
-    let dr = |p: &Position| match p.contact {
+    let dr = |p: &RigidPosition| match p.contact {
         [Some(l), Some(r)] => l.r - r.r,
         _ => f64::NAN,
     };
@@ -160,7 +160,7 @@ pub(crate) fn roll(sweep: &RigidSweep) -> Figure {
 
 /// Wickens' contact angle parameter against the shift (paper Fig. 2).
 pub(crate) fn contact_angle_parameter(sweep: &RigidSweep) -> Figure {
-    let eps = |p: &Position| sweep.wickens(p).epsilon;
+    let eps = |p: &RigidPosition| sweep.wickens(p).epsilon;
     Figure::single(with_onsets(
         Chart::new(
             "Contact angle parameter epsilon = l0 (tan gamma_l - tan gamma_r) / (2 y_ws)",

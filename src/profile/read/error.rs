@@ -79,7 +79,7 @@ pub enum ReadError {
         origin: String,
         /// Points found (after dropping the measured end faces of a MiniProf file).
         found: usize,
-        /// The minimum, [`MIN_POINTS`](super::validate::MIN_POINTS).
+        /// The minimum, [`MIN_POINTS`](super::PointProfile::MIN_POINTS).
         min: usize,
     },
     /// A field that must be a number is not one.
@@ -116,7 +116,7 @@ pub enum ReadError {
         column: usize,
     },
     /// Two consecutive points coincide (within
-    /// [`DUPLICATE_TOLERANCE_MM`](super::validate::DUPLICATE_TOLERANCE_MM)).
+    /// `DUPLICATE_TOLERANCE_MM`).
     DuplicatePoint {
         /// The path.
         origin: String,

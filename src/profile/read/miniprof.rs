@@ -10,7 +10,7 @@ const EXPECTED: &str = "a number in mm";
 
 /// Lateral distance from the inner face (flange back) of a wheel to its taping line, mm
 /// (EN 13715; the crate docs' standard-gauge layout).
-pub const TAPING_LINE_FROM_INNER_FACE_MM: f64 = 70.0;
+pub(crate) const TAPING_LINE_FROM_INNER_FACE_MM: f64 = 70.0;
 
 /// Characters that start a comment line (CONTACT's `read_miniprof_profile` uses the same).
 const COMMENT_STARTS: [char; 4] = ['"', '!', '%', '#'];

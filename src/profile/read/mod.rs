@@ -1,7 +1,7 @@
 //! Profile file readers: the project's CSV, SIMPACK `.prw`/`.prr` and MiniProf `.whl`/`.ban`.
 //!
 //! Every reader returns a [`PointProfile`]: points in the profile's own **side frame**, sorted
-//! by strictly increasing lateral coordinate, checked by [`validate`]. Readers convert at the
+//! by strictly increasing lateral coordinate, checked by `validate`. Readers convert at the
 //! edge (units, mirroring, origin of the lateral coordinate) and nowhere else; nothing
 //! downstream needs to know which format a profile came from.
 //!
@@ -103,7 +103,7 @@
 //!   = -y. Y is up in MiniProf's own files (avg_HR.BAN, avg_low2.ban: crown at Y = -0.2,
 //!   faces down to Y = -34) but down in `MBench_UIC60_v3.ban` (Y = z of the .prr, +38.5 at
 //!   the foot of the gauge face), so the direction is detected from the shape (see
-//!   [`validate`]: the crest is inside the curve, the side faces at its ends). With this
+//!   `validate`: the crest is inside the curve, the side faces at its ends). With this
 //!   mapping `MBench_UIC60_v3.ban` gives exactly the points of `MBench_UIC60_v3.prr` (offset
 //!   0: both files have their origin at the crown, XOffset = YOffset = 0), less the 19
 //!   commented-out ones.
@@ -111,7 +111,7 @@
 //! MiniProf files include the end faces of the measured body (the flange back and the outer
 //! face of a wheel, the side faces below a rail head, vertical or undercut). They are not
 //! part of the profile as a function of its lateral coordinate and are dropped when they lie
-//! in the shadow of the last point before them (see [`validate`], step 3); everything else
+//! in the shadow of the last point before them (see `validate`, step 3); everything else
 //! that goes back laterally is an error naming its line. Measured files do zig-zag: both
 //! 2020 wheels of the test data step back at the flange tip (Car7216_0001r.whl line 223 by
 //! 0.6 mm, Car7358_0001r.whl line 216 by 0.01 mm) and avg_HR.BAN at the gauge corner (line
@@ -123,7 +123,7 @@
 //! [`ReadOptions`]`{ step_back: `[`StepBack::Drop`]` }` and [`read_profile_with`] or
 //! [`parse_str_with`]: walking outwards from the crest, every point that does not advance the
 //! lateral coordinate beyond the points kept before it is dropped, as CONTACT's
-//! `delete_foldback` option does (details in [`validate`]), and the lines of the dropped
+//! `delete_foldback` option does (details in `validate`), and the lines of the dropped
 //! points are listed in [`PointProfile::dropped_step_backs`] so that the caller can report
 //! them. Files the default reader accepts read to the same points with nothing dropped.
 
@@ -132,13 +132,12 @@ mod error;
 mod fields;
 mod miniprof;
 mod simpack;
-pub mod validate;
+pub(crate) mod validate;
 
 use std::fmt;
 use std::path::Path;
 
 pub use error::{Axis, Field, ReadError};
-pub use miniprof::TAPING_LINE_FROM_INNER_FACE_MM;
 
 use crate::profile::ProfileKind;
 
@@ -241,7 +240,7 @@ pub struct ProfileSource {
 /// A profile as sampled points in its side frame (see the [module docs](self)).
 ///
 /// Invariants, established by the readers: at least
-/// [`MIN_POINTS`](validate::MIN_POINTS) points, all finite, sorted by strictly increasing
+/// [`MIN_POINTS`](PointProfile::MIN_POINTS) points, all finite, sorted by strictly increasing
 /// lateral coordinate.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PointProfile {
@@ -257,6 +256,10 @@ pub struct PointProfile {
 }
 
 impl PointProfile {
+    /// The fewest points a profile may have: a spline through fewer cannot hold a tread and
+    /// a flange (see the readers' checks).
+    pub const MIN_POINTS: usize = validate::MIN_POINTS;
+
     /// A profile from points in memory, `[lateral, vertical]` in mm in the side frame (`[s,
     /// F]` for a wheel, `[y, z]` for a rail, see the [module docs](self)), checked as a file's
     /// points are: finite, at least a few, strictly increasing lateral coordinate (either
@@ -415,7 +418,7 @@ pub fn read_profile_with(
 /// ([`ReadError::NonNumeric`], [`ReadError::NonFinite`], [`ReadError::MissingField`],
 /// [`ReadError::Malformed`], [`ReadError::WrongUnits`], [`ReadError::MissingUnits`],
 /// [`ReadError::MissingHeader`], [`ReadError::UnsupportedRotation`],
-/// [`ReadError::BadUnitFactor`], [`ReadError::WrongKind`]); then the checks of [`validate`]
+/// [`ReadError::BadUnitFactor`], [`ReadError::WrongKind`]); then the checks of `validate`
 /// ([`ReadError::NoPoints`], [`ReadError::TooFewPoints`], [`ReadError::DuplicatePoint`],
 /// [`ReadError::NonMonotonic`], [`ReadError::ImplausibleExtent`]).
 ///

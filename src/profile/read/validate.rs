@@ -38,28 +38,28 @@ use crate::profile::ProfileKind;
 /// Fewest points a profile may have. A wheel tread with flange or a rail head with its gauge
 /// corner cannot be described by fewer; the real files have hundreds. This is a sanity floor
 /// that catches truncated files, not a quality criterion.
-pub const MIN_POINTS: usize = 10;
+pub(crate) const MIN_POINTS: usize = 10;
 
 /// Two consecutive points closer than this in both coordinates are the same point written
 /// twice. Far below any real spacing (the closest pair in `MBench_UIC60_v3.prr` is 2e-6 mm
 /// apart laterally and 5e-5 mm vertically) and far above rounding of values printed with
 /// eight significant digits.
-pub const DUPLICATE_TOLERANCE_MM: f64 = 1e-9;
+pub(crate) const DUPLICATE_TOLERANCE_MM: f64 = 1e-9;
 
 /// Plausible lateral extent of a profile, mm. A rail head is about 72 mm wide, a wheel from
 /// the flange back to the outer face about 140 mm; a profile narrower than 5 mm is almost
 /// certainly in metres (0.14) and one wider than 1000 mm in micrometres. (Inches, 5.5 for a
 /// wheel, slip through this check; the CSV header and SIMPACK unit factor catch those.)
-pub const LATERAL_EXTENT_MM: (f64, f64) = (5.0, 1000.0);
+pub(crate) const LATERAL_EXTENT_MM: (f64, f64) = (5.0, 1000.0);
 
 /// Largest plausible vertical extent of a profile, mm: a rail section is 172 mm high, a
 /// measured wheel a few tens of millimetres.
-pub const MAX_VERTICAL_EXTENT_MM: f64 = 500.0;
+pub(crate) const MAX_VERTICAL_EXTENT_MM: f64 = 500.0;
 
 /// Lateral scatter, mm, that MiniProf shows on a vertical face: up to 0.16 mm on the flange
 /// backs of Car7216_0001r.whl and Car7358_0001r.whl. A dropped end-face point may stick out
 /// this much beyond the last kept point (step 3 of the module docs).
-pub const END_FACE_LATERAL_JITTER_MM: f64 = 0.2;
+pub(crate) const END_FACE_LATERAL_JITTER_MM: f64 = 0.2;
 
 /// Points kept by [`finish`], and the lines of the points it dropped because they stepped
 /// back ([`StepBack::Drop`] only; end faces are not counted).
@@ -118,7 +118,7 @@ pub(crate) fn finish(
 
 /// Height of the highest point of a wheel profile above its field-side end beyond which
 /// that point is a flange (a tread rises by a few millimetres at most; a flange by about 28).
-pub const FLANGE_RISE_MM: f64 = 10.0;
+pub(crate) const FLANGE_RISE_MM: f64 = 10.0;
 
 /// `Ok` unless a wheel profile in the side frame has its flange on the field side: the
 /// highest point at `s > 0`, more than [`FLANGE_RISE_MM`] above the profile's end at the

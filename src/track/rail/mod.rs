@@ -22,7 +22,6 @@ use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
 mod surface;
 
 pub(crate) use surface::SurfaceBounds;
-pub use surface::{SURFACE_TABLE_MAX_SLOPE, SURFACE_TABLE_STEP_MM};
 use surface::{Split, SurfaceTable};
 
 /// Sampling step used to find the top and the gauge point before refining them (mm).
@@ -30,7 +29,7 @@ use surface::{Split, SurfaceTable};
 const PLACEMENT_SCAN_STEP_MM: f64 = 0.01;
 /// Placed rail slopes steeper than this (|dZ/dY|, about 88.9 degrees) are no longer treated
 /// as part of the running surface: a vertical or undercut face cannot be written as Z(Y).
-pub const MAX_RAIL_SLOPE: f64 = 50.0;
+pub(crate) const MAX_RAIL_SLOPE: f64 = 50.0;
 
 /// A point of a placed rail, in the side frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -319,7 +318,7 @@ impl PlacedRail {
 
     /// The rail's heights tabulated every [`HEIGHT_TABLE_STEP_MM`] (coarse scans).
     #[inline]
-    pub fn heights(&self) -> &HeightTable {
+    pub(crate) fn heights(&self) -> &HeightTable {
         &self.heights
     }
 
@@ -347,7 +346,7 @@ impl PlacedRail {
     /// The rail surface above the side-frame lateral position `y` (mm), or `None` outside
     /// [`PlacedRail::y_range`].
     ///
-    /// From the quintic table of the surface where it holds (see [`SURFACE_TABLE_STEP_MM`]
+    /// From the quintic table of the surface where it holds (see `SURFACE_TABLE_STEP_MM`
     /// for its errors), otherwise as [`PlacedRail::exact_at`].
     #[inline]
     pub fn at(&self, y: f64) -> Option<RailPoint> {

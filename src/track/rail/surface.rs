@@ -12,7 +12,7 @@ use std::sync::OnceLock;
 /// 8.5e-13 mm in `Z`, 1.5e-10 in the slope and 1.5e-8 relative in `Z''`, all on the R13
 /// corners at slopes 1.5 to [`SURFACE_TABLE_MAX_SLOPE`], where the derivatives of `Z(Y)` are
 /// largest; on the crown and shoulder it is exact to rounding.
-pub const SURFACE_TABLE_STEP_MM: f64 = 0.02;
+pub(crate) const SURFACE_TABLE_STEP_MM: f64 = 0.02;
 /// Pieces steeper than this (`|dZ/dY|` at an end, about 72 degrees) are not tabulated: the
 /// derivatives of `Z(Y)` grow without bound towards a vertical tangent. There, and on pieces
 /// that hold a section joint of an analytic rail (where `Z''` jumps) or more than one knot
@@ -21,7 +21,7 @@ pub const SURFACE_TABLE_STEP_MM: f64 = 0.02;
 /// A piece of a sampled rail that holds one spline knot is tabulated as two quintics, one
 /// on each side of the knot: within a spline piece the surface is as smooth as an analytic
 /// arc (a rotated cubic), and `Z'''`, which jumps at the knot, is never interpolated across.
-pub const SURFACE_TABLE_MAX_SLOPE: f64 = 3.0;
+pub(crate) const SURFACE_TABLE_MAX_SLOPE: f64 = 3.0;
 
 /// A knot closer than this to an end of a table piece (in units of the piece, `t`) does not
 /// split it: `Z'''` jumps only on a sliver of `1e-6 h`, where the quintic of the piece errs
