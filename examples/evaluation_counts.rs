@@ -9,14 +9,13 @@
 
 use std::path::{Path, PathBuf};
 use wheelrail::counters::{self, Counts};
-use wheelrail::scene::Scene;
-use wheelrail::stage::Stage;
-use wheelrail::{pipeline, quasi_elastic, rigid};
+use wheelrail::pipeline::Stage;
+use wheelrail::prelude::*;
 
 /// The EN 15302 reference pair's benchmark scene (R-UIC519A on S-UIC519A, 141 positions).
 const EN_PAIR: &str = "benches/data/en15302_e1_delta_r.toml";
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+fn main() -> Result<(), Error> {
     let args: Vec<PathBuf> = std::env::args_os().skip(1).map(PathBuf::from).collect();
     let scenes: Vec<(String, Scene)> = if args.is_empty() {
         let paper = Scene::from_toml("", "paper", Path::new("."))?;
@@ -25,7 +24,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     } else {
         args.iter()
             .map(|p| Ok((p.display().to_string(), Scene::load(p)?)))
-            .collect::<Result<_, wheelrail::scene::SceneError>>()?
+            .collect::<Result<_, Error>>()?
     };
     for (label, scene) in &scenes {
         let placement = pipeline::place(scene)?;

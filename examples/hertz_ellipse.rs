@@ -2,9 +2,10 @@
 //!
 //! Run with `cargo run --release --example hertz_ellipse`.
 
-use wheelrail::hertz::{self, Contact, EllipseMethod, Material, PrincipalCurvatures};
+use wheelrail::hertz::{Contact, PrincipalCurvatures};
+use wheelrail::prelude::*;
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+fn main() -> Result<(), Error> {
     // A 460 mm wheel with a straight (conical) tread on a rail head of 300 mm crown radius:
     // principal curvatures in 1/mm, convex positive, principal directions aligned (ψ = 0).
     let k = PrincipalCurvatures {

@@ -4,15 +4,9 @@
 //! Run with `cargo run --release --example measured_wheel [FILE.whl]` (default: the worn
 //! wheel Car7216 of the test data).
 
-use wheelrail::hertz::{self, Material};
-use wheelrail::profile::read::{self, ReadOptions, StepBack};
-use wheelrail::profile::{Profile, ProfileKind};
-use wheelrail::quasi_elastic;
-use wheelrail::rigid::{self, Solver};
-use wheelrail::sweep::Sweep;
-use wheelrail::track::{Inclination, Placement, TrackLayout};
+use wheelrail::prelude::*;
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+fn main() -> Result<(), Error> {
     let path = std::env::args().nth(1).unwrap_or_else(|| {
         concat!(
             env!("CARGO_MANIFEST_DIR"),
@@ -23,7 +17,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // Measured flanges fold back at their vertical faces: drop those points (the reader
     // lists them), then smooth the measurement with a 4 mm filter.
     let options = ReadOptions::new(StepBack::Drop);
-    let points = read::read_profile_with(path.as_ref(), ProfileKind::Wheel, &options)?;
+    let points = read_profile_with(path.as_ref(), ProfileKind::Wheel, &options)?;
     println!(
         "{}: {} points ({} dropped), sha256 {}",
         points.source.path,
@@ -34,34 +28,25 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let wheel = Profile::from_points(points, 4.0)?;
 
     let layout = TrackLayout::standard(Inclination::parse("1:40")?);
-    let placement = Placement::symmetric(
-        wheel,
-        460.0,
-        Profile::uic60e1(),
-        Inclination::VERTICAL,
-        layout,
-    )?;
-    let shifts: Vec<f64> = (-8..=8).map(f64::from).collect();
+    let rail = Profile::uic60e1();
+    let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
     let rigid = rigid::search(
         &placement,
-        &Sweep::from_slice(&shifts).unwrap(),
+        &Sweep::range(-8.0, 8.0, 1.0)?,
         Solver::default(),
     );
-    let qe = quasi_elastic::search(
-        &placement,
-        rigid,
-        &quasi_elastic::QuasiElasticSettings::default(),
-    );
+    // The quasi-elastic sweep keeps the rigid sweep it averaged around.
+    let qe = quasi_elastic::search(&placement, rigid, &QuasiElasticSettings::default());
 
     // Hertz on the heaviest quasi-elastic patch, 70 kN per wheel, steel on steel.
     let steel = Material::new(210e3, 0.3)?;
     let e_star = hertz::effective_modulus(&steel, &steel);
-    let settings = hertz::HertzSettings::default();
-    let ellipses = hertz::sweep(hertz::Contacts::QuasiElastic(&qe), 70e3, e_star, &settings);
+    let settings = HertzSettings::default();
+    let ellipses = hertz::sweep(Contacts::QuasiElastic(&qe), 70e3, e_star, &settings);
 
     println!("y_ws_mm  delta_r_mm  left: a_mm  b_mm  p0_MPa");
     for (position, hertz) in qe.rigid().positions().iter().zip(ellipses.positions()) {
-        let left = &hertz.sides[0];
+        let left = hertz.side(Side::Left);
         match left.ellipse() {
             Some(e) => println!(
                 "{:6.1}  {:9.4}  {:9.3}  {:5.3}  {:6.0}",

@@ -3,13 +3,9 @@
 //!
 //! Run with `cargo run --release --example own_profiles`.
 
-use wheelrail::conicity;
-use wheelrail::profile::{Profile, ProfileKind, read::PointProfile};
-use wheelrail::rigid::{self, Solver};
-use wheelrail::sweep::Sweep;
-use wheelrail::track::{Inclination, Placement, TrackLayout};
+use wheelrail::prelude::*;
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+fn main() -> Result<(), Error> {
     // Stand-ins for your measured or designed points, in each profile's side frame (mm):
     // the wheel as [s, F] (s from the taping line, flange at s < 0), the rail as [y, z]
     // (upright, y towards the field side, z up from the top of rail). Here: S1002 and 60E1
@@ -21,18 +17,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let wheel = Profile::from_points(wheel, 0.0)?; // 0: interpolate, no smoothing
     let rail = Profile::from_points(rail, 0.0)?;
 
-    // Standard gauge and wheelset, rails inclined 1:40; the rail points are upright.
+    // Standard gauge and wheelset, rails inclined 1:40; the rail points are upright. One
+    // wheel and one rail on both sides: a mirror-symmetric wheelset.
     let layout = TrackLayout::standard(Inclination::parse("1:40")?);
     let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
 
     // Lateral shifts of the wheelset from -10 to 10 mm every 0.1 mm, roll solved.
-    let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect();
     let sweep = rigid::search(
         &placement,
-        &Sweep::from_slice(&shifts).unwrap(),
+        &Sweep::range(-10.0, 10.0, 0.1)?,
         Solver::default(),
     );
-    let pair = conicity::assess(&sweep, &conicity::ConicitySettings::default());
+    let pair = conicity::assess(&sweep, &ConicitySettings::default());
 
     println!("y_ws_mm, delta_r_mm (every 2 mm)");
     for (y, dr) in pair
@@ -46,9 +42,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!(
         "tan γe ({}) at 2, 3, 4 mm: {:.4}, {:.4}, {:.4}",
         p.method.name(),
-        p.tan_gamma_e[0],
-        p.tan_gamma_e[1],
-        p.tan_gamma_e[2]
+        p.tan_gamma_e_2mm,
+        p.tan_gamma_e_3mm,
+        p.tan_gamma_e_4mm
     );
     println!(
         "flange contact from {:.2} mm (left) and {:.2} mm (right); {} contact-point jumps",

@@ -5,7 +5,7 @@
 //! `DIR/worn_0000.csv` ... (N files, default 300; seed default 14).
 
 use std::path::PathBuf;
-use wheelrail::fleet::synthetic;
+use wheelrail::prelude::*;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -14,7 +14,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let seed: u64 = args.next().map_or(Ok(14), |a| a.parse())?;
     std::fs::create_dir_all(&dir)?;
     for i in 0..n {
-        let (text, _) = synthetic::csv_text(seed, i);
+        let (text, _) = fleet::synthetic::csv_text(seed, i);
         std::fs::write(dir.join(format!("worn_{i:04}.csv")), text)?;
     }
     eprintln!("wrote {n} profiles (seed {seed}) to {}", dir.display());

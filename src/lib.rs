@@ -7,15 +7,19 @@
 //!
 //! 1. [`profile`]: wheel and rail profiles (analytic S1002 and UIC60, or read from files),
 //!    their slopes and curvatures;
-//! 2. [`track`]: placing the wheels and rails of a wheelset on the track;
-//! 3. `rigid`: rigid contact search with the wheelset roll solved (paper Eqs. 2-5);
-//! 4. `quasi_elastic`: quasi-elastic contact search (paper Eqs. 6-8);
-//! 5. [`hertz`]: the Hertz contact ellipse (paper Eqs. 9-20);
+//! 2. [`track`]: placing the wheels and rails of a wheelset on the track
+//!    ([`track::Placement`], mirror-symmetric or not), over a [`sweep::Sweep`] of shifts;
+//! 3. [`rigid`]: rigid contact search with the wheelset roll solved (paper Eqs. 2-5);
+//! 4. [`quasi_elastic`]: quasi-elastic contact search (paper Eqs. 6-8);
+//! 5. [`hertz`]: the Hertz contact ellipse (paper Eqs. 9-20), one or over a sweep;
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
-//! need, `report` (feature `cli`) turns results into bytes (CSV, SVG, PNG, HTML).
+//! need, [`fleet`] assesses many profiles against one scene. [`prelude`] holds what a
+//! typical use needs; [`Error`] converts from every error type of the crate. With the
+//! feature `cli` (default), `report` and `outputs` turn results into bytes (CSV, SVG, PNG,
+//! HTML) and `app` is the command line.
 //!
 //! # Quick start
 //!
@@ -24,11 +28,9 @@
 //! equivalent conicity of EN 15302 (`examples/own_profiles.rs` prints more):
 //!
 //! ```
-//! use wheelrail::profile::{Profile, ProfileKind, read::PointProfile};
-//! use wheelrail::track::{Inclination, Placement, TrackLayout};
-//! use wheelrail::{conicity, rigid};
+//! use wheelrail::prelude::*;
 //!
-//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! # fn main() -> Result<(), Error> {
 //! let points = |p: Profile| p.sample(0.5).iter().map(|r| [r[0], r[1]]).collect();
 //! let wheel = PointProfile::from_points(ProfileKind::Wheel, "my wheel", points(Profile::s1002()))?;
 //! let rail = PointProfile::from_points(ProfileKind::Rail, "my rail", points(Profile::uic60e1()))?;
@@ -36,11 +38,9 @@
 //!
 //! let layout = TrackLayout::standard(Inclination::parse("1:40")?);
 //! let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
-//! let shifts: Vec<f64> = (-100..=100).map(|i| f64::from(i) * 0.1).collect(); // mm
-//! let sweep = rigid::search(&placement, &wheelrail::sweep::Sweep::from_slice(&shifts).unwrap(), rigid::Solver::default());
-//! let pair = conicity::assess(&sweep, &conicity::ConicitySettings::default());
-//! let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
-//! assert!((0.1..0.3).contains(&tan_gamma_e_3mm));
+//! let sweep = rigid::search(&placement, &Sweep::range(-10.0, 10.0, 0.1)?, Solver::default());
+//! let pair = conicity::assess(&sweep, &ConicitySettings::default());
+//! assert!((0.1..0.3).contains(&pair.parameters.tan_gamma_e_3mm));
 //! # Ok(())
 //! # }
 //! ```

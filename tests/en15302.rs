@@ -148,8 +148,12 @@ fn reference_profiles_reproduce_annex_e_and_f() {
         }
         assert!(n >= 10, "{case}: only {n} points away from jumps");
         let mut line = String::new();
-        for (i, a) in [2.0, 3.0, 4.0].into_iter().enumerate() {
-            let t = c.parameters.tan_gamma_e[i];
+        let p = &c.parameters;
+        for (a, t) in [2.0, 3.0, 4.0].into_iter().zip([
+            p.tan_gamma_e_2mm,
+            p.tan_gamma_e_3mm,
+            p.tan_gamma_e_4mm,
+        ]) {
             let r = reference[case][&((a * 10.0) as i64)];
             assert!(
                 within(t, r),

@@ -155,8 +155,12 @@ impl ConicitySettings {
 pub struct Parameters {
     /// The method of the `tan γe` values.
     pub method: ConicityMethod,
-    /// `tan γe` at ŷ = 2, 3 and 4 mm.
-    pub tan_gamma_e: [f64; 3],
+    /// `tan γe` at ŷ = 2 mm.
+    pub tan_gamma_e_2mm: f64,
+    /// `tan γe` at ŷ = 3 mm.
+    pub tan_gamma_e_3mm: f64,
+    /// `tan γe` at ŷ = 4 mm.
+    pub tan_gamma_e_4mm: f64,
     /// Polach's nonlinearity parameter (1/mm).
     pub nonlinearity_per_mm: f64,
     /// Equilibrium position of the wheelset, where Δr = 0 (mm).
@@ -167,10 +171,14 @@ pub struct Parameters {
     pub flange_contact_right_mm: f64,
     /// Number of contact-point jumps over the sweep (both wheels).
     pub contact_point_jumps: usize,
-    /// Δr at y_ws = +3 mm and -3 mm (mm).
-    pub delta_r_mm: [f64; 2],
-    /// Contact angle difference `γ_left - γ_right` at y_ws = +3 mm and -3 mm (rad).
-    pub contact_angle_difference_rad: [f64; 2],
+    /// Δr at y_ws = +3 mm (mm).
+    pub delta_r_at_plus_3mm_mm: f64,
+    /// Δr at y_ws = -3 mm (mm).
+    pub delta_r_at_minus_3mm_mm: f64,
+    /// Contact angle difference `γ_left - γ_right` at y_ws = +3 mm (rad).
+    pub contact_angle_difference_at_plus_3mm_rad: f64,
+    /// Contact angle difference `γ_left - γ_right` at y_ws = -3 mm (rad).
+    pub contact_angle_difference_at_minus_3mm_rad: f64,
 }
 
 /// One row of the parameter table.
@@ -200,6 +208,26 @@ impl ParameterRow {
 }
 
 impl Parameters {
+    /// Every parameter undefined (NaN, no jumps): the row of a pair that could not be
+    /// assessed.
+    pub fn undefined(method: ConicityMethod) -> Parameters {
+        Parameters {
+            method,
+            tan_gamma_e_2mm: f64::NAN,
+            tan_gamma_e_3mm: f64::NAN,
+            tan_gamma_e_4mm: f64::NAN,
+            nonlinearity_per_mm: f64::NAN,
+            equilibrium_mm: f64::NAN,
+            flange_contact_left_mm: f64::NAN,
+            flange_contact_right_mm: f64::NAN,
+            contact_point_jumps: 0,
+            delta_r_at_plus_3mm_mm: f64::NAN,
+            delta_r_at_minus_3mm_mm: f64::NAN,
+            contact_angle_difference_at_plus_3mm_rad: f64::NAN,
+            contact_angle_difference_at_minus_3mm_rad: f64::NAN,
+        }
+    }
+
     /// The parameters as named rows with units and definitions, in report order.
     pub fn rows(&self) -> Vec<ParameterRow> {
         let m = match self.method {
@@ -210,7 +238,11 @@ impl Parameters {
         };
         let tan = |i: usize, a: &str| ParameterRow {
             name: ["tan_gamma_e_2mm", "tan_gamma_e_3mm", "tan_gamma_e_4mm"][i],
-            value: self.tan_gamma_e[i],
+            value: [
+                self.tan_gamma_e_2mm,
+                self.tan_gamma_e_3mm,
+                self.tan_gamma_e_4mm,
+            ][i],
             unit: "1",
             definition: format!("equivalent conicity at amplitude {a} mm ({m})"),
             undefined: "the motion of this amplitude leaves the swept delta_r or has no period (see the status in equivalent_conicity.csv)",
@@ -256,28 +288,28 @@ impl Parameters {
             },
             ParameterRow {
                 name: "delta_r_at_plus_3mm_mm",
-                value: self.delta_r_mm[0],
+                value: self.delta_r_at_plus_3mm_mm,
                 unit: "mm",
                 definition: "rolling radius difference r_left - r_right at y_ws = +3 mm".into(),
                 undefined: "y_ws = +3 mm is outside the sweep or did not converge",
             },
             ParameterRow {
                 name: "delta_r_at_minus_3mm_mm",
-                value: self.delta_r_mm[1],
+                value: self.delta_r_at_minus_3mm_mm,
                 unit: "mm",
                 definition: "rolling radius difference r_left - r_right at y_ws = -3 mm".into(),
                 undefined: "y_ws = -3 mm is outside the sweep or did not converge",
             },
             ParameterRow {
                 name: "contact_angle_difference_at_plus_3mm_rad",
-                value: self.contact_angle_difference_rad[0],
+                value: self.contact_angle_difference_at_plus_3mm_rad,
                 unit: "rad",
                 definition: "gamma_left - gamma_right at y_ws = +3 mm (track frame, roll included, mirrored per side)".into(),
                 undefined: "y_ws = +3 mm is outside the sweep or did not converge",
             },
             ParameterRow {
                 name: "contact_angle_difference_at_minus_3mm_rad",
-                value: self.contact_angle_difference_rad[1],
+                value: self.contact_angle_difference_at_minus_3mm_rad,
                 unit: "rad",
                 definition: "gamma_left - gamma_right at y_ws = -3 mm".into(),
                 undefined: "y_ws = -3 mm is outside the sweep or did not converge",
@@ -353,7 +385,7 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 /// let scene = Scene::from_toml("[sweep]\nfrom_mm = -10.0\nto_mm = 10.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
 /// let sweep = rigid::search(&pipeline::place(&scene).unwrap(), scene.sweep(), rigid::Solver::default());
 /// let pair = conicity::assess(&sweep, &conicity::ConicitySettings::default());
-/// let tan_gamma_e_3mm = pair.parameters.tan_gamma_e[1];
+/// let tan_gamma_e_3mm = pair.parameters.tan_gamma_e_3mm;
 /// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
 /// ```
 pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
@@ -397,22 +429,28 @@ fn amplitudes(settings: &ConicitySettings, delta_r: &DeltaR) -> Vec<f64> {
 /// The parameters of the pair swept by `sweep`, whose Δr function is `delta_r`.
 fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &ConicitySettings) -> Parameters {
     let at = equivalent_conicity(delta_r, &[2.0, 3.0, 4.0], settings.method);
-    let tan_gamma_e = [0, 1, 2].map(|i| at.points[i].tan_gamma_e);
+    let [t2, t3, t4] = [0, 1, 2].map(|i| at.points[i].tan_gamma_e);
     let [a2, a4] = NONLINEARITY_AMPLITUDES_MM;
+    let delta_r_at = |y: f64| delta_r.at(y).unwrap_or(f64::NAN);
+    let contact_angle_difference_at = |y: f64| {
+        interpolate(sweep, y, |p| {
+            contact_angle(p, Side::Left) - contact_angle(p, Side::Right)
+        })
+    };
     Parameters {
         method: settings.method,
-        tan_gamma_e,
-        nonlinearity_per_mm: (tan_gamma_e[2] - tan_gamma_e[0]) / (a4 - a2),
+        tan_gamma_e_2mm: t2,
+        tan_gamma_e_3mm: t3,
+        tan_gamma_e_4mm: t4,
+        nonlinearity_per_mm: (t4 - t2) / (a4 - a2),
         equilibrium_mm: at.equilibrium_mm,
         flange_contact_left_mm: sweep.flange_contact_mm(Side::Left),
         flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
         contact_point_jumps: sweep.jumps().len(),
-        delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
-        contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| {
-            interpolate(sweep, y, |p| {
-                contact_angle(p, Side::Left) - contact_angle(p, Side::Right)
-            })
-        }),
+        delta_r_at_plus_3mm_mm: delta_r_at(REPORT_SHIFT_MM),
+        delta_r_at_minus_3mm_mm: delta_r_at(-REPORT_SHIFT_MM),
+        contact_angle_difference_at_plus_3mm_rad: contact_angle_difference_at(REPORT_SHIFT_MM),
+        contact_angle_difference_at_minus_3mm_rad: contact_angle_difference_at(-REPORT_SHIFT_MM),
     }
 }
 

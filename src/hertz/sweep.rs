@@ -16,6 +16,7 @@ use super::{Contact, EllipseMethod, PrincipalCurvatures, ellipse, relative_curva
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::rigid::{RigidSweep, Stop};
 use crate::sweep::{Mirror, Mirrored};
+use crate::track::Side;
 
 /// Which contact the ellipses are computed for (the scene's `[hertz] contact`): the stage
 /// graph runs the quasi-elastic search for Hertz only where it is asked for.
@@ -164,6 +165,16 @@ pub struct HertzPosition {
     pub y_ws: f64,
     /// Left and right wheels.
     pub sides: [SideHertz; 2],
+}
+
+impl HertzPosition {
+    /// The result of the wheel of `side`.
+    pub fn side(&self, side: Side) -> &SideHertz {
+        match side {
+            Side::Left => &self.sides[0],
+            Side::Right => &self.sides[1],
+        }
+    }
 }
 
 impl Mirrored for HertzPosition {

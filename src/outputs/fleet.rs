@@ -31,17 +31,8 @@ pub fn columns(fleet: &Fleet) -> Vec<String> {
 
 /// The parameters' rows (names, units, definitions; values of `summary` or NaN).
 fn parameter_rows(summary: Option<&Summary>) -> Vec<crate::conicity::ParameterRow> {
-    let undefined = crate::conicity::Parameters {
-        method: crate::conicity::ConicityMethod::Klingel,
-        tan_gamma_e: [f64::NAN; 3],
-        nonlinearity_per_mm: f64::NAN,
-        equilibrium_mm: f64::NAN,
-        flange_contact_left_mm: f64::NAN,
-        flange_contact_right_mm: f64::NAN,
-        contact_point_jumps: 0,
-        delta_r_mm: [f64::NAN; 2],
-        contact_angle_difference_rad: [f64::NAN; 2],
-    };
+    let undefined =
+        crate::conicity::Parameters::undefined(crate::conicity::ConicityMethod::Klingel);
     summary.map_or(undefined, |s| s.parameters).rows()
 }
 
@@ -170,7 +161,7 @@ fn at3(row: &Row) -> Option<f64> {
     row.outcome
         .as_ref()
         .ok()
-        .map(|s| s.parameters.tan_gamma_e[1])
+        .map(|s| s.parameters.tan_gamma_e_3mm)
         .filter(|v| v.is_finite())
 }
 
@@ -312,7 +303,7 @@ pub fn conicity_functions(rows: &[Row], limit: Option<f64>, method: &str) -> Fig
             Series::line(
                 format!(
                     "worst: {} (tan γe(3 mm) = {:.3})",
-                    w.id, s.parameters.tan_gamma_e[1]
+                    w.id, s.parameters.tan_gamma_e_3mm
                 ),
                 s.conicity.clone(),
             )
@@ -484,7 +475,7 @@ fn listed_table(
             let p = &s.parameters;
             let mut cells = vec![
                 r.id.clone(),
-                number(p.tan_gamma_e[1], 4),
+                number(p.tan_gamma_e_3mm, 4),
                 number(p.nonlinearity_per_mm, 4),
                 format!(
                     "{}, {}",

@@ -14,7 +14,7 @@ pub(crate) fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Figure {
             .collect()
     };
     let method = c.parameters.method;
-    let at3 = c.parameters.tan_gamma_e[1];
+    let at3 = c.parameters.tan_gamma_e_3mm;
     let mut chart = Chart::new(
         "Equivalent conicity (EN 15302)",
         "amplitude of the kinematic motion ŷ (mm)",
@@ -75,7 +75,7 @@ pub(crate) fn delta_r_linearised(c: &crate::conicity::PairConicity) -> Figure {
         .filter(|d| d.is_finite())
         .fold(0.0, f64::max)
         .max(1e-3);
-    let tan = p.tan_gamma_e[1];
+    let tan = p.tan_gamma_e_3mm;
     let mut chart = Chart::new(
         "Rolling radius difference and its equivalent cone at ŷ = 3 mm",
         SHIFT,
