@@ -31,7 +31,11 @@ use crate::sweep::{Mirror, Mirrored};
 use crate::track::{Placement, Side};
 use std::sync::Arc;
 
+mod gauss;
 mod settings;
+mod weight;
+
+use gauss::gauss_region;
 
 pub(crate) use settings::{
     DEFAULT_CUTOFF, DEFAULT_EPSILON_MM, DEFAULT_MAX_STEP_MM, DEFAULT_PANEL_WIDTHS, EPSILON_RANGE_MM,
@@ -272,10 +276,6 @@ pub fn search(
     }
 }
 
-mod gauss;
-mod weight;
-
-use gauss::gauss_region;
 
 /// Number of averaged fields per node (see [`side_average`]).
 const FIELDS: usize = 8;

@@ -94,11 +94,13 @@ impl Solver {
         }
     }
 
-    /// The solver of a scene-file name (the default one with its default settings).
+    /// The solver of a [name](Solver::name) (the default one with its default settings).
+    /// A scene names the level wheelset by its `roll` key, not as a solver.
     pub fn from_name(name: &str) -> Option<Solver> {
         match name {
             "default" => Some(Solver::default()),
             "paper" => Some(Solver::Paper),
+            "no_roll" => Some(Solver::NoRoll),
             _ => None,
         }
     }
@@ -457,5 +459,20 @@ pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSwee
         centre,
         jumps,
         mirror,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every solver's name reads back as that solver (the default one with its default
+    /// settings), and no other name does.
+    #[test]
+    fn solver_names_round_trip() {
+        for solver in [Solver::default(), Solver::Paper, Solver::NoRoll] {
+            assert_eq!(Solver::from_name(solver.name()), Some(solver));
+        }
+        assert_eq!(Solver::from_name("fast"), None);
     }
 }

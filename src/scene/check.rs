@@ -352,12 +352,15 @@ fn outputs(raw: &RawScene) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
 fn rigid_solver(raw: &RawScene) -> Result<Solver, Invalid> {
     let rigid_solver = match raw.rigid.solver.as_deref() {
         None => crate::rigid::Solver::default(),
-        Some(name) => crate::rigid::Solver::from_name(name).ok_or_else(|| {
-            invalid(
+        Some(name @ ("default" | "paper")) => {
+            crate::rigid::Solver::from_name(name).expect("a solver's name")
+        }
+        Some(name) => {
+            return Err(invalid(
                 "rigid.solver",
                 format!("unknown solver {name:?}; expected \"default\" or \"paper\""),
-            )
-        })?,
+            ));
+        }
     };
     let rigid_solver = match raw.rigid.roll.as_deref() {
         None | Some("solved") => rigid_solver,
