@@ -74,10 +74,7 @@ impl SidePose {
     /// Side-frame lateral position and height above the axle of a wheel point.
     #[inline]
     pub fn apply(&self, yw: f64, zw: f64) -> [f64; 2] {
-        [
-            self.delta + self.cos * yw - self.sin * zw,
-            self.sin * yw + self.cos * zw,
-        ]
+        self.apply_to(yw, zw)
     }
 
     /// [`SidePose::apply`] for SIMD lanes of `f64` (or `f64`): the same operations in the

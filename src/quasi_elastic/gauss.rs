@@ -1,7 +1,6 @@
 //! The Gauss-Legendre integration of the weighted averages over one low region: panels of
 //! a few weight widths on the smooth pieces between joints, 8 nodes (4 on short pieces).
 
-use super::weight::exp_neg_x4;
 use super::{Average, BARRIER_EPS, FIELDS, Pass, Work, barrier_maxima, fields_of};
 use crate::gap::{SideGap, SidePose};
 
@@ -239,7 +238,7 @@ impl Gauss<'_, '_> {
                 (z4[i], fields[i], weighted[i]) = (z, fields_of(self.side, &p), true);
             }
         });
-        let weights = exp_neg_x4(z4);
+        let weights = z4.map(|z| (-z).exp());
         for i in 0..4 {
             if weighted[i] {
                 current.add(half_h * quad[i].1 * weights[i], &fields[i]);

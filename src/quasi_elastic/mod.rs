@@ -20,8 +20,6 @@
 //!   order across a joint.
 //! * The integrals are cut where `d - d_min > cutoff * eps` (`DEFAULT_CUTOFF` = 25: the
 //!   weight left out is below 2e-12 of the total for a quadratic gap).
-//! * The Gauss nodes' weights take an inline `exp` within one unit in the last place of
-//!   libm's (`weight.rs`); the trapezoid variant keeps libm's.
 //! * Separate low regions of the gap (tread and flange) are averaged separately: one
 //!   [`Patch`] per local minimum, split where a barrier higher than `eps` separates minima.
 
@@ -33,7 +31,6 @@ use std::sync::Arc;
 
 mod gauss;
 mod settings;
-mod weight;
 
 use gauss::gauss_region;
 
@@ -275,7 +272,6 @@ pub fn search(
         mirror,
     }
 }
-
 
 /// Number of averaged fields per node (see [`side_average`]).
 const FIELDS: usize = 8;
