@@ -3,6 +3,11 @@
 //! it (they never need quotes) instead of one writer call per cell. The test
 //! `matches_the_csv_crate` compares the two on fields that need quotes and on the records
 //! the crate writes specially.
+//!
+//! Measured against the csv crate's writer (one `write_field` per cell): the EN 15302
+//! report in memory (`cargo bench --bench scene -- en15302_delta_r_report_in_memory`, one
+//! thread, 8 alternated runs) 3.62 ms against 3.90 ms (34.3 against 37.3 M instructions);
+//! the paper report's rendering with SVG figures 184.5 against 192.2 M instructions.
 
 /// Appends `field` as the csv crate writes it with `QuoteStyle::Necessary` and `\n` record
 /// terminators: quoted, with its quotes doubled, when it holds a comma, a quote, `\r` or

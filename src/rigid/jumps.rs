@@ -15,7 +15,11 @@ pub(super) struct Refinement {
     /// for one wheel alone.
     pub(super) separable: bool,
     /// Whether the solver certifies its global minima (all but the paper's iteration): the
-    /// positions a refinement steers by may then skip the certificate.
+    /// positions a refinement steers by may then skip the certificate. Measured against
+    /// refinements certified throughout (one thread, 10 alternated runs of `cargo bench
+    /// --bench pipeline -- rigid_default`): the paper sweep 1.02 ms against 1.12 ms (8.57
+    /// against 9.09 M instructions); a sweep of 31 positions in 1 mm steps 8.93 against
+    /// 9.80 M instructions.
     pub(super) certifying: bool,
 }
 
