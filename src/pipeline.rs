@@ -237,21 +237,8 @@ fn run_recorded(
                     .rigid
                     .as_ref()
                     .expect("rigid runs before the sensitivity");
-                let e = record.time(stage, progress, || EpsilonSweeps {
-                    runs: scene
-                        .epsilon_sensitivity_mm
-                        .iter()
-                        .map(|&eps| {
-                            let settings = quasi_elastic::QuasiElasticSettings {
-                                epsilon_mm: eps,
-                                ..scene.quasi_elastic
-                            };
-                            let rigid = Arc::clone(rigid);
-                            let q = quasi_elastic::search(&results.placement, rigid, &settings);
-                            (eps, q)
-                        })
-                        .collect(),
-                });
+                let placement = &results.placement;
+                let e = record.time(stage, progress, || epsilon_sweeps(scene, placement, rigid));
                 results.epsilon = Some(e);
             }
             Stage::Hertz => {
@@ -267,8 +254,7 @@ fn run_recorded(
                 };
                 let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
                 let h = record.time(stage, progress, || {
-                    let load = scene.wheel_load_n;
-                    hertz::sweep(contacts, load, e_star, &scene.hertz)
+                    hertz::sweep(contacts, scene.wheel_load_n, e_star, &scene.hertz)
                 });
                 results.hertz = Some(h);
             }
@@ -287,6 +273,23 @@ fn run_recorded(
         }
     }
     results
+}
+
+/// The quasi-elastic search on `rigid` at each of the scene's sensitivity values of eps.
+fn epsilon_sweeps(scene: &Scene, placement: &Placement, rigid: &Arc<RigidSweep>) -> EpsilonSweeps {
+    let runs = scene
+        .epsilon_sensitivity_mm
+        .iter()
+        .map(|&eps| {
+            let settings = quasi_elastic::QuasiElasticSettings {
+                epsilon_mm: eps,
+                ..scene.quasi_elastic
+            };
+            let q = quasi_elastic::search(placement, Arc::clone(rigid), &settings);
+            (eps, q)
+        })
+        .collect();
+    EpsilonSweeps { runs }
 }
 
 /// Loads the scene's four profiles and places them: [`place_wheels`], [`place_rails`] and
