@@ -166,3 +166,122 @@ fn a_cycle_is_found() {
         ["error"]
     );
 }
+
+/// The functions of `src/` over [`LONG_FUNCTION_LINES`] lines, `(file, line, name, lines)`:
+/// from a line declaring `fn name` to the line closing its body (braces counted outside
+/// comments, strings and character literals).
+fn long_functions() -> Vec<(String, usize, String, usize)> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    rust_files(&src, &mut files);
+    let mut out = Vec::new();
+    for path in files {
+        let text = std::fs::read_to_string(&path).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        for (i, line) in lines.iter().enumerate() {
+            let code = line.trim_start();
+            let Some(name) = declared_fn(code) else {
+                continue;
+            };
+            let (mut depth, mut opened) = (0i64, false);
+            for (j, body) in lines[i..].iter().enumerate() {
+                for c in code_chars(body) {
+                    match c {
+                        '{' => (depth, opened) = (depth + 1, true),
+                        '}' => depth -= 1,
+                        _ => {}
+                    }
+                }
+                if !opened && body.trim_end().ends_with(';') {
+                    break;
+                }
+                if opened && depth == 0 {
+                    if j + 1 > LONG_FUNCTION_LINES {
+                        let file = path.strip_prefix(&src).unwrap().display().to_string();
+                        out.push((file, i + 1, name.to_string(), j + 1));
+                    }
+                    break;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Functions longer than this need a sentence in ARCHITECTURE.md saying why they are whole.
+const LONG_FUNCTION_LINES: usize = 80;
+
+/// The name of the function `code` (a trimmed line) declares, if it declares one.
+fn declared_fn(code: &str) -> Option<&str> {
+    if code.starts_with("//") {
+        return None;
+    }
+    let rest = code.split_once("fn ")?;
+    let before = rest.0.trim();
+    let modifiers = [
+        "",
+        "pub",
+        "pub(crate)",
+        "pub(super)",
+        "const",
+        "pub const",
+        "unsafe",
+    ];
+    if !modifiers.contains(&before) {
+        return None;
+    }
+    let name: &str = rest
+        .1
+        .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .next()?;
+    (!name.is_empty()).then_some(name)
+}
+
+/// The characters of `line` outside its comment, strings and character literals.
+fn code_chars(line: &str) -> Vec<char> {
+    let (mut out, mut in_string, mut prev) = (Vec::new(), false, ' ');
+    let chars: Vec<char> = line.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if in_string {
+            if c == '"' && prev != '\\' {
+                in_string = false;
+            }
+        } else if c == '"' {
+            in_string = true;
+        } else if c == '/' && chars.get(i + 1) == Some(&'/') {
+            break;
+        } else if c == '\'' && chars.get(i + 2) == Some(&'\'') {
+            i += 2;
+        } else {
+            out.push(c);
+        }
+        prev = if prev == '\\' && c == '\\' { ' ' } else { c };
+        i += 1;
+    }
+    out
+}
+
+#[test]
+fn every_long_function_says_why_in_the_architecture() {
+    let architecture =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/ARCHITECTURE.md")).unwrap();
+    let long = long_functions();
+    eprintln!("{} functions over {LONG_FUNCTION_LINES} lines", long.len());
+    // The check reads what it should: the reader's messages are one long match.
+    assert!(
+        long.iter()
+            .any(|(file, _, name, _)| file.ends_with("error.rs") && name == "fmt")
+    );
+    let unexplained: Vec<String> = long
+        .iter()
+        .filter(|(_, _, name, _)| !architecture.contains(&format!("`{name}`")))
+        .map(|(file, line, name, n)| format!("src/{file}:{line}: {name} ({n} lines)"))
+        .collect();
+    assert!(
+        unexplained.is_empty(),
+        "functions over {LONG_FUNCTION_LINES} lines without a sentence in ARCHITECTURE.md \
+         (\"Kept whole\") naming them: {unexplained:#?}"
+    );
+}
