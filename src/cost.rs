@@ -1,9 +1,9 @@
 //! The work a scene asks for, estimated from its keys and profiles before anything runs,
 //! and the budget above which a run needs `--allow-long`.
 //!
-//! The unit of work is one evaluation of the gap between a wheel point and its rail (about
-//! 80 ns on the development machine, one core: the quasi-elastic pass runs 12 million nodes
-//! per second). The estimate is deliberately coarse and errs high: it assumes the weight's
+//! The unit of work is one evaluation of the gap between a wheel point and its rail (tens of
+//! nanoseconds on a current core; `examples/evaluation_counts.rs` counts them per stage).
+//! The estimate is deliberately coarse and errs high: it assumes the weight's
 //! low region is as wide as a nearly flat gap (curvature [`FLAT_GAP_CURVATURE_PER_MM`])
 //! makes it, clipped to the profile, and counts every spline knot in it.
 
@@ -16,10 +16,15 @@ use crate::track::Placement;
 /// 3e8, about 25 s on one core of the development machine, at most a minute on a slow one.
 pub const WORK_BUDGET: f64 = 3e8;
 
-/// Gap evaluations per position and wheel of the default rigid solver: 8 µs per position
-/// (README, Speed) is about 100 evaluations, with margin for the jump refinement.
+/// Gap evaluations per position and wheel of the default rigid solver, an estimate that
+/// errs high: a position takes a coarse scan of cheap samples and a few exact gaps, and the
+/// jump refinement solves a few positions more per jump (`examples/evaluation_counts.rs`
+/// counts them for a scene).
 const RIGID_DEFAULT_PER_WHEEL: f64 = 100.0;
-/// The paper's rigid iteration takes 27 times the default (README, Speed).
+/// The paper's rigid iteration per position, in units of the default solver's work: it
+/// restarts from roll 0 at every position, converges linearly and searches the whole
+/// tabulated wheel at every step (the benchmarks `rigid_paper` and
+/// `rigid_default_unmirrored` compare the two).
 const RIGID_PAPER_FACTOR: f64 = 27.0;
 /// Gap curvature of a nearly flat contact (1/mm) that sizes the low region of the weight:
 /// the tread of a 460 mm wheel on a 300 mm rail crown gives 1.2e-3; worn, conformal

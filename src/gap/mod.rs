@@ -77,11 +77,9 @@ impl SidePose {
         self.apply_to(yw, zw)
     }
 
-    /// [`SidePose::apply`] for SIMD lanes of `f64` (or `f64`): the same operations in the
-    /// same order, so each lane rounds exactly as the scalar form (no fused multiply-add).
-    /// `apply` keeps its own body: calling this generic form from it cost the quasi-elastic
-    /// pass 0.1 M instructions per call (code generation around its inlined callers);
-    /// `gap::tests::block_gaps_are_the_coarse_gaps_to_the_bit` fails if the two differ.
+    /// [`SidePose::apply`] for SIMD lanes of `f64` (or `f64`, which `apply` is): the same
+    /// operations in the same order, so each lane rounds exactly as the scalar form (no
+    /// fused multiply-add).
     #[inline(always)]
     pub(crate) fn apply_to<T>(&self, yw: T, zw: T) -> [T; 2]
     where
