@@ -14,6 +14,9 @@
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
 //!
+//! and beside the contact pipeline, [`maintenance`]: a wheel's flange dimensions Sh, Sd, qR
+//! (EN 15313) against their limits, a rail's wear against its nominal profile.
+//!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
 //!
@@ -93,6 +96,7 @@ pub mod error;
 pub mod fleet;
 pub mod gap;
 pub mod hertz;
+pub mod maintenance;
 #[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
