@@ -305,7 +305,7 @@ mod tests {
             ..LimitOverrides::default()
         };
         let l = Limits::with_overrides(920.0, &o);
-        assert_eq!(l.sd_min.value_mm, 24.0);
+        assert_eq!(l.sd_min.value_mm.to_bits(), 24f64.to_bits());
         assert_eq!(l.sd_min.source, "scene key limits.sd_min_mm");
         assert_eq!(l.sd_max, Limits::standard(920.0).sd_max);
         assert_eq!(l.breaches(&dims(28.0, 23.0, 10.0)).len(), 1);

@@ -138,9 +138,6 @@ impl Upright<'_> {
                 let (mut a, mut b) = (last, u);
                 while (b - a).abs() > BISECTION_TOLERANCE_MM {
                     let mid = 0.5 * (a + b);
-                    if mid == a || mid == b {
-                        break;
-                    }
                     if inside(self.point(mid)) {
                         a = mid;
                     } else {

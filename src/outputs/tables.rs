@@ -669,3 +669,145 @@ pub fn profile_points(
         .text("face", face)
         .build()
 }
+
+/// The definitions of the flange dimensions, as the tables and pages state them.
+pub const FLANGE_DIMENSIONS_TEXT: &str = "flange dimensions (EN 15313, UIC 510-2; TSI WAG Regulation (EU) No 321/2013 4.2.3.6.2 Figure 1): Sh flange height, the flange tip above the profile's point on the taping line (70 mm from the inner face, s = 0); Sd flange thickness, from the inner face (s = -70 mm) to the flank 10 mm above the taping-line point; qR, from the Sd point to the flank 2 mm below the tip";
+
+/// The definitions of the rail wear, as the tables and pages state them.
+pub const RAIL_WEAR_TEXT: &str = "rail wear against the nominal rail, both upright (profile_inclination taken out) in the frame their files give (no fitting): vertical_wear, nominal minus measured height on the centre line (halfway between the nominal head's faces at the gauge-point depth); gauge_face_wear, how far the gauge face lies towards the field side of the nominal's at the gauge-point depth below the nominal top; positive where material is gone";
+
+/// The maintenance view of a placement's profiles: `side, body, profile, dimension,
+/// value_mm, limit_min_mm, limit_max_mm, status`, one row per wheel dimension (Sh, Sd, qR)
+/// and, when the scene names nominal rails, per rail wear (vertical, gauge face).
+///
+/// `status` is `ok`, `below the minimum`, `above the maximum`, `no limit` (rail wear) or
+/// `undefined: ` and why; a limit that does not exist is `NaN`.
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn profile_dimensions(
+    placement: &crate::track::Placement,
+    assessment: &crate::maintenance::Assessment,
+) -> Result<Table, TableError> {
+    use crate::maintenance::limits::{Bound, Dimension};
+    let mut side_col = Vec::new();
+    let mut body = Vec::new();
+    let mut profile = Vec::new();
+    let mut dimension = Vec::new();
+    let mut value = Vec::new();
+    let mut lo = Vec::new();
+    let mut hi = Vec::new();
+    let mut status: Vec<String> = Vec::new();
+    let mut limit_lines = Vec::new();
+    let sides = [
+        (Side::Left, &placement.left),
+        (Side::Right, &placement.right),
+    ];
+    for (k, (side, pair)) in sides.iter().enumerate() {
+        let w = &assessment.wheels[k];
+        let l = &w.limits;
+        let line = format!(
+            "limits of the {} wheel (nominal diameter {} mm): {}",
+            side.name(),
+            2.0 * pair.wheel.nominal_radius_mm(),
+            l.each()
+                .iter()
+                .map(|(key, limit)| format!("{key} = {} ({})", limit.value_mm, limit.source))
+                .collect::<Vec<_>>()
+                .join("; ")
+        );
+        limit_lines.push(line);
+        for (dim, v, min, max) in [
+            (
+                Dimension::Sh,
+                w.dimensions.as_ref().map(|d| d.sh_mm),
+                l.sh_min.value_mm,
+                l.sh_max.value_mm,
+            ),
+            (
+                Dimension::Sd,
+                w.dimensions.as_ref().map(|d| d.sd_mm),
+                l.sd_min.value_mm,
+                l.sd_max.value_mm,
+            ),
+            (
+                Dimension::QR,
+                w.dimensions.as_ref().map(|d| d.qr_mm),
+                l.qr_min.value_mm,
+                f64::NAN,
+            ),
+        ] {
+            side_col.push(side.name());
+            body.push("wheel");
+            profile.push(pair.wheel.profile().name().to_string());
+            dimension.push(dim.symbol());
+            lo.push(min);
+            hi.push(max);
+            match v {
+                Ok(v) => {
+                    value.push(v);
+                    let broken = w.breaches.iter().find(|b| b.dimension == dim);
+                    status.push(match broken.map(|b| b.bound) {
+                        None => "ok".into(),
+                        Some(Bound::Min) => "below the minimum".into(),
+                        Some(Bound::Max) => "above the maximum".into(),
+                    });
+                }
+                Err(e) => {
+                    value.push(f64::NAN);
+                    status.push(format!("undefined: {e}"));
+                }
+            }
+        }
+    }
+    if let Some(rails) = &assessment.rails {
+        for (k, (side, pair)) in sides.iter().enumerate() {
+            for (name, v) in [
+                ("vertical_wear", rails[k].as_ref().map(|w| w.vertical_mm)),
+                (
+                    "gauge_face_wear",
+                    rails[k].as_ref().map(|w| w.gauge_face_mm),
+                ),
+            ] {
+                side_col.push(side.name());
+                body.push("rail");
+                profile.push(pair.rail.profile().name().to_string());
+                dimension.push(name);
+                lo.push(f64::NAN);
+                hi.push(f64::NAN);
+                match v {
+                    Ok(v) => {
+                        value.push(v);
+                        status.push("no limit".into());
+                    }
+                    Err(e) => {
+                        value.push(f64::NAN);
+                        status.push(format!("undefined: {e}"));
+                    }
+                }
+            }
+        }
+    }
+    let mut builder = Table::builder()
+        .comment(FLANGE_DIMENSIONS_TEXT)
+        .comment(format!(
+            "frame: wheel side frame; {WHEEL_SIDE_FRAME}; every value in mm"
+        ));
+    for line in limit_lines {
+        builder = builder.comment(line);
+    }
+    if assessment.rails.is_some() {
+        builder = builder.comment(RAIL_WEAR_TEXT);
+    }
+    builder
+        .comment("status: ok, below the minimum, above the maximum (a limit broken is a result, not an error), no limit (rail wear), or undefined and why (value NaN); a limit that does not exist is NaN")
+        .text("side", side_col)
+        .text("body", body)
+        .text("profile", profile)
+        .text("dimension", dimension)
+        .numeric("value_mm", value)
+        .numeric("limit_min_mm", lo)
+        .numeric("limit_max_mm", hi)
+        .text("status", status)
+        .build()
+}

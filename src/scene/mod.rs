@@ -85,6 +85,10 @@ pub const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
 /// pairs lie far below 1 (limits in use are 0.15 to 0.5); a limit above 2 marks nothing.
 pub const MAX_CONICITY_LIMIT: f64 = 2.0;
 
+/// The largest maintenance limit of a flange dimension accepted (mm): flange heights and
+/// thicknesses are a few tens of millimetres.
+pub const MAX_LIMIT_MM: f64 = 100.0;
+
 /// The sensitivity values of eps of the `qe_epsilon` figure (mm).
 pub const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
 
@@ -214,6 +218,11 @@ pub struct Scene {
     pub(crate) conicity: crate::conicity::Settings,
     /// Settings of `wheelrail fleet` with this scene as its template.
     pub(crate) fleet: FleetSettings,
+    /// `[limits]`: the maintenance limits that override the standard's.
+    pub(crate) limits: crate::maintenance::LimitOverrides,
+    /// Left and right nominal rails the rails' wear is measured against (`rail.nominal_profile`;
+    /// a fleet of rails sets its template's rails); `None`: no rail wear.
+    pub(crate) nominal_rails: Option<[ProfileRef; 2]>,
 }
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
@@ -340,6 +349,16 @@ impl Scene {
     /// Settings of `wheelrail fleet` with this scene as its template (`[fleet]`).
     pub fn fleet(&self) -> &FleetSettings {
         &self.fleet
+    }
+
+    /// The maintenance limits set by `[limits]` (the standard's apply to the others).
+    pub fn limits(&self) -> &crate::maintenance::LimitOverrides {
+        &self.limits
+    }
+
+    /// Left and right nominal rails the rails' wear is measured against, if any.
+    pub fn nominal_rails(&self) -> Option<&[ProfileRef; 2]> {
+        self.nominal_rails.as_ref()
     }
 
     /// The scene with `figures` in place of its own (what a run computes follows them).
