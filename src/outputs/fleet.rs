@@ -452,9 +452,11 @@ pub fn conicity_functions(rows: &[Row], limit: Option<f64>, method: &str) -> Fig
     Figure::single(chart.legend(LegendPosition::Auto))
 }
 
-/// The most wheels over a limit the Sd-against-Sh chart names one by one in its legend;
-/// the others share one entry (the page's table lists them all).
-const MAX_NAMED_OFFENDERS: usize = 8;
+/// The most wheels over a limit the Sd-against-Sh chart names one by one in its legend,
+/// those furthest beyond a limit (one palette colour each, besides the wheels within the
+/// limits, the limit box and the rest); the others share one entry (the page's table and
+/// fleet.csv list them all).
+const MAX_NAMED_OFFENDERS: usize = 5;
 
 /// Each wheel's flange thickness Sd against its flange height Sh, the limit box of the
 /// template's left wheel drawn dashed, the wheels that break a limit (qR included) named.
@@ -464,7 +466,8 @@ pub fn flange_dimensions(
     limits: &crate::maintenance::Limits,
 ) -> Figure {
     let mut within = Vec::new();
-    let mut offenders: Vec<(String, (f64, f64))> = Vec::new();
+    // (label, point, how far beyond its limit in mm, which limits it breaks)
+    let mut offenders: Vec<(String, (f64, f64), f64, String)> = Vec::new();
     for r in rows {
         let Ok(s) = &r.outcome else { continue };
         for &(prefix, k) in wheel_columns(inputs) {
@@ -480,7 +483,17 @@ pub fn flange_dimensions(
                 } else {
                     format!("{} {side}", r.id)
                 };
-                offenders.push((format!("{who}: {}", w.status()), point));
+                let beyond = w
+                    .breaches
+                    .iter()
+                    .map(|b| (b.value_mm - b.limit_mm).abs())
+                    .fold(0.0, f64::max);
+                let kind: String = w
+                    .breaches
+                    .iter()
+                    .map(|b| format!("{:?}{:?}", b.dimension, b.bound))
+                    .collect();
+                offenders.push((format!("{who}: {}", w.status()), point, beyond, kind));
             }
         }
     }
@@ -494,6 +507,19 @@ pub fn flange_dimensions(
         (sh_min, sd_min),
     ];
     let total = within.len() + offenders.len();
+    // The whole box and every wheel, with a margin.
+    let all = within.iter().chain(offenders.iter().map(|o| &o.1));
+    let (x_lo, x_hi, y_lo, y_hi) = all.fold((sh_min, sh_max, sd_min, sd_max), |r, p| {
+        (r.0.min(p.0), r.1.max(p.0), r.2.min(p.1), r.3.max(p.1))
+    });
+    // Furthest beyond a limit first, and the worst of each kind of breach (Sh too low, Sd
+    // too thick, ...) before the rest, so that every kind is named.
+    offenders.sort_by(|a, b| b.2.total_cmp(&a.2));
+    let mut kinds = std::collections::HashSet::new();
+    let (first, rest): (Vec<_>, Vec<_>) = offenders
+        .into_iter()
+        .partition(|o| kinds.insert(o.3.clone()));
+    let offenders = [first, rest].concat();
     let mut chart = Chart::new(
         format!("Flange thickness against flange height, {total} wheels"),
         "flange height Sh (mm)",
@@ -512,8 +538,8 @@ pub fn flange_dimensions(
     )
     .series(Series::markers(format!("within the limits ({})", within.len()), within).color(0));
     let named = offenders.len().min(MAX_NAMED_OFFENDERS);
-    for (i, (label, point)) in offenders.iter().take(named).enumerate() {
-        chart = chart.series(Series::markers(label.clone(), vec![*point]).color(1 + i % 5));
+    for (i, (label, point, _, _)) in offenders.iter().take(named).enumerate() {
+        chart = chart.series(Series::markers(label.clone(), vec![*point]).color(1 + i));
     }
     if offenders.len() > named {
         let rest: Vec<(f64, f64)> = offenders[named..].iter().map(|o| o.1).collect();
@@ -521,13 +547,19 @@ pub fn flange_dimensions(
             Series::markers(format!("{} more wheels over a limit", rest.len()), rest).color(7),
         );
     }
-    Figure::single(chart.legend(LegendPosition::Auto))
+    let margin = 0.5;
+    Figure::single(
+        chart
+            .x_range(x_lo - margin, x_hi + margin)
+            .y_range(y_lo - margin, y_hi + margin)
+            .legend(LegendPosition::Auto),
+    )
 }
 
 /// Name and caption of the flange dimensions figure.
 const FLANGE_FIGURE: (&str, &str) = (
     "fleet_flange_dimensions",
-    "Each wheel's flange thickness Sd against its flange height Sh (EN 15313: Sh the flange tip above the taping-line point, Sd from the inner face to the flank 10 mm above it), the maintenance limits of the template's wheel as a dashed box ([limits], by default the TSI's for its diameter). Wheels that break a limit, qR included, are named with the limits they break (the first eight; fleet.csv's maintenance_status has all). Wheels whose dimensions are undefined are not drawn.",
+    "Each wheel's flange thickness Sd against its flange height Sh (EN 15313: Sh the flange tip above the taping-line point, Sd from the inner face to the flank 10 mm above it), the maintenance limits of the template's wheel as a dashed box ([limits], by default the TSI's for its diameter). Wheels that break a limit, qR included, are named with the limits they break (five: the one furthest beyond a limit of each kind of breach, then the furthest; the table below and fleet.csv's maintenance_status have all). Wheels whose dimensions are undefined are not drawn.",
 );
 
 /// Names and captions of the fleet figures.
