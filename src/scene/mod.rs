@@ -571,6 +571,17 @@ mod tests {
             ("[fleet]\nconicity_limit = -0.3", "fleet.conicity_limit"),
             ("[fleet]\nconicity_limit = nan", "fleet.conicity_limit"),
             ("[fleet]\nconicity_limit = 3.0", "fleet.conicity_limit"),
+            ("[limits]\nqr_min_mm = -1.0", "limits.qr_min_mm"),
+            ("[limits]\nsh_max_mm = 1000.0", "limits.sh_max_mm"),
+            ("[limits]\nsd_min_mm = nan", "limits.sd_min_mm"),
+            // Above the standard's maximum of 33 mm.
+            ("[limits]\nsd_min_mm = 34.0", "limits.sd_min_mm"),
+            // Below the standard's minimum of 27.5 mm for a 920 mm wheel.
+            ("[limits]\nsh_max_mm = 27.0", "limits.sh_max_mm"),
+            (
+                "[limits]\nsd_min_mm = 30.0\nsd_max_mm = 29.0",
+                "limits.sd_min_mm",
+            ),
         ];
         for (text, key) in cases {
             let e = scene(text).unwrap_err().to_string();
@@ -585,6 +596,32 @@ mod tests {
         assert_eq!(scene("").unwrap().fleet.conicity_limit, None);
         let e = scene("[fleet]\nlimit = 0.4").unwrap_err().to_string();
         assert!(e.contains("limit") && e.contains("unknown field"), "{e}");
+    }
+
+    /// `[limits]` overrides the standard's limits one by one, each saying it came from the
+    /// scene; `rail.nominal_profile` names the nominal rail of both sides.
+    #[test]
+    fn limits_and_the_nominal_rail_are_read() {
+        let s = scene("[limits]\nsd_min_mm = 24.5\n[rail]\nnominal_profile = \"UIC60E1\"").unwrap();
+        let l = crate::maintenance::Limits::with_overrides(920.0, s.limits());
+        assert_eq!(l.sd_min.value_mm.to_bits(), 24.5f64.to_bits());
+        assert!(l.sd_min.source.contains("limits.sd_min_mm"), "{l:?}");
+        assert!(l.sd_max.source.contains("321/2013"), "{l:?}");
+        assert_eq!(
+            s.nominal_rails(),
+            Some(&[
+                ProfileRef::BuiltIn("UIC60E1".into()),
+                ProfileRef::BuiltIn("UIC60E1".into())
+            ])
+        );
+        assert!(scene("").unwrap().nominal_rails().is_none());
+        let e = scene("[limits]\nsd_minimum = 24.0")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("sd_minimum") && e.contains("unknown field"),
+            "{e}"
+        );
     }
 
     #[test]
