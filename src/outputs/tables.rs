@@ -680,8 +680,9 @@ pub const RAIL_WEAR_TEXT: &str = "rail wear against the nominal rail, both uprig
 /// value_mm, limit_min_mm, limit_max_mm, status`, one row per wheel dimension (Sh, Sd, qR)
 /// and, when the scene names nominal rails, per rail wear (vertical, gauge face).
 ///
-/// `status` is `ok`, `below the minimum`, `above the maximum`, `no limit` (rail wear) or
-/// `undefined: ` and why; a limit that does not exist is `NaN`.
+/// `status` is `ok` (`ok; no maximum limit` for qR, whose maximum is `NaN`), `below the
+/// minimum`, `above the maximum`, `no limit` (rail wear) or `undefined: ` and why; a limit
+/// that does not exist is `NaN`.
 ///
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
@@ -748,6 +749,8 @@ pub fn profile_dimensions(
                     value.push(v);
                     let broken = w.breaches.iter().find(|b| b.dimension == dim);
                     status.push(match broken.map(|b| b.bound) {
+                        // The NaN maximum of qR is explained in the row, as every NaN is.
+                        None if max.is_nan() => "ok; no maximum limit".into(),
                         None => "ok".into(),
                         Some(Bound::Min) => "below the minimum".into(),
                         Some(Bound::Max) => "above the maximum".into(),
@@ -800,7 +803,7 @@ pub fn profile_dimensions(
         builder = builder.comment(RAIL_WEAR_TEXT);
     }
     builder
-        .comment("status: ok, below the minimum, above the maximum (a limit broken is a result, not an error), no limit (rail wear), or undefined and why (value NaN); a limit that does not exist is NaN")
+        .comment("status: ok (qR: ok; no maximum limit), below the minimum, above the maximum (a limit broken is a result, not an error), no limit (rail wear), or undefined and why (value NaN); a limit that does not exist is NaN")
         .text("side", side_col)
         .text("body", body)
         .text("profile", profile)
