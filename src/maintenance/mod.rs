@@ -103,8 +103,19 @@ pub fn assess(
             wear(&placement.right.rail, &n.profiles[1]),
         ]
     });
+    let left = wheel(&placement.left.wheel);
+    // A wheelset's two equal wheels are one wheel cloned: the same numbers, measured once.
+    let right = if placement
+        .right
+        .wheel
+        .shares_cells_with(&placement.left.wheel)
+    {
+        left.clone()
+    } else {
+        wheel(&placement.right.wheel)
+    };
     Assessment {
-        wheels: [wheel(&placement.left.wheel), wheel(&placement.right.wheel)],
+        wheels: [left, right],
         rails,
     }
 }

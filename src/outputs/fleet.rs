@@ -917,7 +917,7 @@ fn page(
         tables: vec![TableEntry {
             name: "fleet".into(),
             file: "fleet.csv".into(),
-            description: "one row per profile or pair: files, sha256, status, tan γe at 2, 3, 4 mm, nonlinearity, flange contact, jumps (units in the column names)".into(),
+            description: "one row per profile or pair: files, sha256, status, flange dimensions Sh, Sd, qR and the limits broken (or rail wear), tan γe at 2, 3, 4 mm, nonlinearity, flange contact, jumps (units in the column names)".into(),
         }],
         data_tables: [
             maintenance_table(rows, fleet.inputs()),
