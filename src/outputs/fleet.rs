@@ -781,14 +781,10 @@ fn maintenance_summary(rows: &[Row], inputs: Inputs) -> Vec<String> {
         ));
     }
     if inputs.has_rails() {
-        for (name, of) in [
-            (
-                "vertical wear",
-                (|w: &crate::maintenance::RailWear| w.vertical_mm)
-                    as fn(&crate::maintenance::RailWear) -> f64,
-            ),
-            ("gauge-face wear", |w| w.gauge_face_mm),
-        ] {
+        use crate::maintenance::RailWear;
+        let vertical: fn(&RailWear) -> f64 = |w| w.vertical_mm;
+        let gauge_face: fn(&RailWear) -> f64 = |w| w.gauge_face_mm;
+        for (name, of) in [("vertical wear", vertical), ("gauge-face wear", gauge_face)] {
             let largest = rows
                 .iter()
                 .filter_map(|r| {
