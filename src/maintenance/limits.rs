@@ -163,6 +163,15 @@ impl Limits {
         ]
     }
 
+    /// Every limit as `key = value (source)`, joined by `; `: what a table's header states.
+    pub fn describe(&self) -> String {
+        self.each()
+            .iter()
+            .map(|(key, limit)| format!("{key} = {} ({})", limit.value_mm, limit.source))
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+
     /// The limits `dimensions` break, in the order Sh, Sd, qR (none: within limits). A value
     /// on a limit is within it.
     pub fn breaches(&self, dimensions: &FlangeDimensions) -> Vec<Breach> {

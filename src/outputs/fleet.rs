@@ -149,11 +149,7 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
             lines.push(format!(
                 "limits of the {side} wheel (nominal diameter {} mm): {}",
                 2.0 * radius,
-                l.each()
-                    .iter()
-                    .map(|(key, limit)| format!("{key} = {} ({})", limit.value_mm, limit.source))
-                    .collect::<Vec<_>>()
-                    .join("; ")
+                l.describe()
             ));
         }
         lines.push("maintenance_status: ok, or each limit a wheel breaks (value and limit), or why its dimensions are undefined; a limit broken is a result: it does not change the status column or the exit code".into());

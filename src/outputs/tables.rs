@@ -711,11 +711,7 @@ pub fn profile_dimensions(
             "limits of the {} wheel (nominal diameter {} mm): {}",
             side.name(),
             2.0 * pair.wheel.nominal_radius_mm(),
-            l.each()
-                .iter()
-                .map(|(key, limit)| format!("{key} = {} ({})", limit.value_mm, limit.source))
-                .collect::<Vec<_>>()
-                .join("; ")
+            l.describe()
         );
         limit_lines.push(line);
         for (dim, v, min, max) in [
