@@ -91,6 +91,23 @@ fn one_profile_read_and_place(bencher: divan::Bencher) {
     });
 }
 
+/// Its flange dimensions Sh, Sd, qR (`maintenance::flange_dimensions`, part of every
+/// profile's assessment): one fitted wheel measured, the placement made outside the loop.
+#[divan::bench(sample_count = 200)]
+fn one_profile_flange_dimensions(bencher: divan::Bencher) {
+    let (fleet, items) = prepared();
+    let wheels: Vec<_> = items
+        .iter()
+        .take(20)
+        .map(|item| pipeline::place_wheels(&fleet.scene_for(item)).unwrap())
+        .collect();
+    let mut i = 0;
+    bencher.bench_local(|| {
+        i = (i + 1) % wheels.len();
+        wheelrail::maintenance::flange_dimensions(wheels[i][0].profile())
+    });
+}
+
 /// What each profile's placement takes of the shared rails: two reference counts (it was a
 /// copy of both rails' tables, 0.06 ms, before they were shared).
 #[divan::bench(sample_count = 200)]

@@ -15,6 +15,9 @@
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
 //!
+//! and beside the contact pipeline, [`maintenance`]: a wheel's flange dimensions Sh, Sd, qR
+//! (EN 15313) against their limits, a rail's wear against its nominal profile.
+//!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`fleet`] assesses many profiles against one scene. [`prelude`] holds what a
 //! typical use needs; [`Error`] converts from every error type of the crate. With the
@@ -100,6 +103,7 @@ pub mod fleet;
 #[doc(hidden)]
 pub mod gap;
 pub mod hertz;
+pub mod maintenance;
 mod message;
 #[cfg(feature = "cli")]
 pub mod outputs;

@@ -15,6 +15,7 @@
 use crate::cache::{PlacementCache, ProfileKey, RailKey};
 use crate::conicity;
 use crate::hertz;
+use crate::maintenance::{self, NominalRails, WearError};
 use crate::profile::{Profile, ProfileKind};
 use crate::quasi_elastic::{self, QuasiElasticSweep};
 use crate::rigid::{self, RigidSweep};
@@ -67,6 +68,9 @@ pub struct EpsilonSweeps {
 pub struct Results {
     /// Profiles placed on the track (always computed).
     pub placement: Placement,
+    /// The wheels' flange dimensions against their limits, and the rails' wear when the
+    /// scene names nominal rails (always computed, with the profiles).
+    pub maintenance: maintenance::Assessment,
     /// Rigid contact over the sweep (shared with the quasi-elastic results computed on it).
     pub rigid: Option<Arc<RigidSweep>>,
     /// Quasi-elastic contact over the sweep.
@@ -147,9 +151,12 @@ pub(crate) fn run_gated<E: From<SceneError>>(
     progress: Progress,
 ) -> Result<Results, E> {
     let mut record = RunRecord::default();
-    let placement = record.time(Stage::Profiles, &mut |_, _| {}, || match cache {
-        Some(cache) => place_cached(scene, cache),
-        None => place(scene),
+    let (placement, nominal) = record.time(Stage::Profiles, &mut |_, _| {}, || {
+        let placement = match cache {
+            Some(cache) => place_cached(scene, cache),
+            None => place(scene),
+        }?;
+        Ok::<_, SceneError>((placement, nominal_rails(scene)?))
     })?;
     let mut quiet = |_, _| {};
     let progress: Progress = if gate(&placement)? {
@@ -160,10 +167,33 @@ pub(crate) fn run_gated<E: From<SceneError>>(
     Ok(run_recorded(
         scene,
         placement,
+        Ok(nominal),
         &needed_stages(scene),
         record,
         progress,
     ))
+}
+
+/// The scene's nominal rails (`rail.nominal_profile`, or a fleet's template rails) read,
+/// with the inclination in their data; `None` when the scene names none.
+///
+/// # Errors
+/// [`SceneError`] naming `rail.nominal_profile` when a nominal rail cannot be read.
+pub fn nominal_rails(scene: &Scene) -> Result<Option<NominalRails>, SceneError> {
+    let Some(refs) = &scene.nominal_rails else {
+        return Ok(None);
+    };
+    let load = |r: &ProfileRef| scene.load_profile(r, ProfileKind::Rail, "rail.nominal_profile");
+    let left = load(&refs[0])?;
+    let right = if refs[1] == refs[0] {
+        left.clone()
+    } else {
+        load(&refs[1])?
+    };
+    Ok(Some(NominalRails {
+        profiles: [left, right],
+        profile_inclination: scene.rail_profile_inclination,
+    }))
 }
 
 /// Runs `stages` (and the stages they depend on, see `closed_stages`) of `scene` on a
@@ -187,22 +217,50 @@ pub fn run_on(scene: &Scene, placement: Placement, stages: &[Stage]) -> Results 
     run_recorded(
         scene,
         placement,
+        nominal_rails(scene).map_err(|e| e.to_string()),
         &stages,
         RunRecord::default(),
         &mut |_, _| {},
     )
 }
 
-/// Runs `stages` (closed under dependencies, in run order) on `placement`.
+/// The flange dimensions of `placement`'s wheels against the scene's limits, and its rails'
+/// wear against the `nominal` rails (or why those could not be read).
+fn maintenance_of(
+    scene: &Scene,
+    placement: &Placement,
+    nominal: Result<Option<NominalRails>, String>,
+) -> maintenance::Assessment {
+    match nominal {
+        Ok(nominal) => maintenance::assess(placement, &scene.limits, nominal.as_ref()),
+        Err(message) => {
+            let unreadable = || {
+                Err(WearError::NominalUnreadable {
+                    message: message.clone(),
+                })
+            };
+            maintenance::Assessment {
+                rails: Some([unreadable(), unreadable()]),
+                ..maintenance::assess(placement, &scene.limits, None)
+            }
+        }
+    }
+}
+
+/// Runs `stages` (closed under dependencies, in run order) on `placement`, with the
+/// scene's nominal rails read (or the message of why they could not be).
 fn run_recorded(
     scene: &Scene,
     placement: Placement,
+    nominal: Result<Option<NominalRails>, String>,
     stages: &[Stage],
     record: RunRecord,
     progress: Progress,
 ) -> Results {
+    let maintenance = maintenance_of(scene, &placement, nominal);
     let mut results = Results {
         placement,
+        maintenance,
         rigid: None,
         quasi_elastic: None,
         epsilon: None,

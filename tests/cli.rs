@@ -567,3 +567,50 @@ fn paper_conicity_agrees_with_the_cli_on_its_rigid_table() {
         println!("{name}: stage {stage:.5}, cli on rigid.csv {:.5}", cli[i]);
     }
 }
+
+/// A report's `profile_dimensions.csv`: the wheels' Sh, Sd, qR against their limits (a
+/// `[limits]` override taking the place of the TSI's and breaking S1002's Sd, which the
+/// report states and exits 0 on), and with `rail.nominal_profile` the rails' wear: 60E1
+/// planed flat 0.8 mm below its top (a CSV in the rail's frame), vertical wear 0.8 mm.
+#[test]
+fn a_report_has_the_profile_dimensions_and_the_rail_wear() {
+    let dir = common::scratch("report-dimensions");
+    let mut rail = String::from("y_mm,z_mm\n");
+    for r in wheelrail::profile::Profile::uic60e1().sample(0.1) {
+        rail.push_str(&format!("{},{}\n", r[0], r[1].min(-0.8)));
+    }
+    std::fs::write(dir.join("planed.csv"), rail).unwrap();
+    let o = common::report_scene(
+        &dir,
+        "[rail]\nprofile = \"planed.csv\"\nnominal_profile = \"UIC60E1\"\n[limits]\nsd_max_mm = 32.0\n[outputs]\nfigures = [\"profiles\"]\nformats = [\"svg\"]\n",
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", common::stderr(&o));
+    let text = std::fs::read_to_string(dir.join("out/profile_dimensions.csv")).unwrap();
+    assert!(
+        text.contains("sd_max_mm = 32 (scene key limits.sd_max_mm)"),
+        "{text}"
+    );
+    let line = |side: &str, dimension: &str| -> Vec<String> {
+        text.lines()
+            .find(|l| l.starts_with(&format!("{side},")) && l.contains(&format!(",{dimension},")))
+            .unwrap_or_else(|| panic!("no {side} {dimension} row in {text}"))
+            .split(',')
+            .map(str::to_string)
+            .collect()
+    };
+    let sd = line("left", "Sd");
+    assert!(
+        (sd[4].parse::<f64>().unwrap() - 32.5).abs() < 1e-4,
+        "{sd:?}"
+    );
+    assert_eq!(sd[7], "above the maximum");
+    assert_eq!(line("right", "qR")[7], "ok; no maximum limit");
+    for side in ["left", "right"] {
+        let v = line(side, "vertical_wear");
+        assert!((v[4].parse::<f64>().unwrap() - 0.8).abs() < 1e-5, "{v:?}");
+        assert_eq!(v[7], "no limit");
+    }
+    let page = std::fs::read_to_string(dir.join("out/index.html")).unwrap();
+    assert!(page.contains("Sd 32.50 &gt; 32 mm") || page.contains("Sd 32.50 > 32 mm"));
+    assert!(page.contains("vertical wear (left rail)"));
+}

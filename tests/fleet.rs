@@ -355,6 +355,20 @@ fn pairs_and_rails_match_single_reports_and_a_bad_path_is_a_row() {
         got[1]["status"]
     );
     assert!(got[1]["right_wheel_sha256"].is_empty());
+    // Each wheel's flange dimensions: the generated wheels are within the limits.
+    for c in [
+        "left_sh_mm",
+        "left_sd_mm",
+        "left_qr_mm",
+        "right_sh_mm",
+        "right_sd_mm",
+        "right_qr_mm",
+    ] {
+        let v: f64 = got[0][c].parse().unwrap();
+        assert!((5.0..40.0).contains(&v), "{c} = {v}");
+    }
+    assert_eq!(got[0]["maintenance_status"], "ok");
+    assert_eq!(got[1]["left_sd_mm"], "NaN");
     // ws1 against a report with the two wheels.
     let base = read(&scene);
     let template = base.replace(
@@ -678,5 +692,51 @@ fn two_minima_in_one_bracket_of_a_generated_wheel_converge() {
     );
     for p in sweep.positions() {
         assert_eq!(p.stop, wheelrail::Stop::Converged, "y_ws = {}", p.y_ws);
+    }
+}
+
+/// `fleet --rail`: each rail's wear against the template's rail (60E1): the nominal head
+/// sampled every 0.1 mm (no wear), and the same planed flat 1.2 mm below its top (vertical
+/// wear 1.2 mm; the gauge face at 14 mm depth untouched). On the crown the spline through
+/// the samples is the head within 1e-6 mm; the gauge point lies 0.3 mm above the joint of
+/// the R13 arc and the 1:20 flank, where the spline through samples 0.1 mm apart in `y` on
+/// a face this steep errs by about 1e-3 mm in `y` (measured 1.06e-3): 2e-3 mm allowed there. The rows
+/// carry no flange dimensions (the wheels are the template's), and a rail's wear is a
+/// result: exit 0.
+#[test]
+fn a_rail_fleet_reports_the_wear_against_the_template_rail() {
+    let dir = scratch("fleet-rail-wear");
+    let nominal = wheelrail::profile::Profile::uic60e1();
+    let write = |name: &str, planed_mm: f64| {
+        let mut text =
+            String::from("# 60E1 upright, origin on the top of the rail axis\ny_mm,z_mm\n");
+        for r in nominal.sample(0.1) {
+            text.push_str(&format!("{},{}\n", r[0], r[1].min(-planed_mm)));
+        }
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let new = write("new.csv", 0.0);
+    let planed = write("planed.csv", 1.2);
+    let out = dir.join("out");
+    let scene = root().join("reports/fleet/scene.toml");
+    let o = fleet(&scene, &[&new, &planed], &out, &["--rail"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = read(&out.join("fleet.csv"));
+    assert!(
+        text.contains("# vertical_wear_mm, gauge_face_wear_mm"),
+        "{text}"
+    );
+    let got = rows(&text);
+    let value = |r: &HashMap<String, String>, c: &str| -> f64 { r[c].parse().unwrap() };
+    assert!(!got[0].contains_key("sh_mm") && !got[0].contains_key("maintenance_status"));
+    for (row, vertical) in got.iter().zip([0.0, 1.2]) {
+        assert_eq!(row["status"], "ok");
+        assert!(
+            (value(row, "vertical_wear_mm") - vertical).abs() < 1e-5,
+            "{row:?}"
+        );
+        assert!(value(row, "gauge_face_wear_mm").abs() < 2e-3, "{row:?}");
     }
 }

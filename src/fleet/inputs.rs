@@ -45,6 +45,16 @@ impl Inputs {
         }
     }
 
+    /// Whether the items replace the rails (whose wear the fleet reports).
+    pub fn has_rails(self) -> bool {
+        matches!(self, Inputs::Rails | Inputs::Pairs { rails: true })
+    }
+
+    /// Whether the items replace the wheels (whose flange dimensions the fleet reports).
+    pub fn has_wheels(self) -> bool {
+        !matches!(self, Inputs::Rails)
+    }
+
     /// The files of `item` in the order of [`Inputs::roles`] (`None` where the item keeps
     /// the template's profile).
     pub fn files(self, item: &Item) -> Vec<Option<PathBuf>> {

@@ -55,6 +55,9 @@ pub struct Summary {
     pub conicity: Vec<(f64, f64)>,
     /// The largest p0 over the sweep; `None` when Hertz did not run or no ellipse exists.
     pub max_p0: Option<MaxPressure>,
+    /// The wheels' flange dimensions against their limits, the rails' wear against the
+    /// template's rails (a fleet of rails).
+    pub maintenance: crate::maintenance::Assessment,
 }
 
 /// The summary of a run: the equivalent conicity by `settings`' method and the pair's
@@ -105,6 +108,7 @@ pub(crate) fn summarise(
         parameters,
         conicity,
         max_p0,
+        maintenance: results.maintenance.clone(),
     }
 }
 
@@ -210,6 +214,13 @@ impl Fleet {
         }
         let stages = pipeline::closed_stages(&template, &stages);
         let rail_cache = matches!(inputs, Inputs::Pairs { rails: true }).then(PlacementCache::new);
+        let mut template = template;
+        if inputs.has_rails() && template.nominal_rails.is_none() {
+            // A rail's wear is measured against the template's rail on its side; read once
+            // here, so that a template rail that cannot be read stops the fleet.
+            template.nominal_rails = Some(template.rail_profiles.clone());
+        }
+        pipeline::nominal_rails(&template)?;
         Ok(Fleet {
             template,
             inputs,

@@ -4,7 +4,7 @@
 
 use super::{CSV_FORMAT, OutputFile};
 use crate::Error;
-use crate::fleet::{Fleet, Row, Summary};
+use crate::fleet::{Fleet, Inputs, Row, Summary};
 use crate::report::chart::{Chart, Figure, LegendPosition, Series};
 use crate::report::table::format_number;
 use crate::report::{self, FigureEntry, ReportPage, TableEntry};
@@ -21,12 +21,78 @@ pub fn columns(fleet: &Fleet) -> Vec<String> {
         c.push(format!("{role}_sha256"));
     }
     c.push("status".into());
+    c.extend(maintenance_columns(fleet.inputs()));
     c.extend(parameter_rows(None).iter().map(|r| r.name.to_string()));
     if fleet.has_hertz() {
         c.extend(HERTZ_COLUMNS.iter().map(|s| s.to_string()));
     }
     c.push("undefined_status".into());
     c
+}
+
+/// The wheel sides whose flange dimensions a row reports: `("", 0)` for one profile on both
+/// wheels, `("left_", 0), ("right_", 1)` for pairs, none for a fleet of rails.
+fn wheel_columns(inputs: Inputs) -> &'static [(&'static str, usize)] {
+    match inputs {
+        Inputs::Wheels => &[("", 0)],
+        Inputs::Pairs { .. } => &[("left_", 0), ("right_", 1)],
+        Inputs::Rails => &[],
+    }
+}
+
+/// The rail sides whose wear a row reports, as [`wheel_columns`].
+fn rail_columns(inputs: Inputs) -> &'static [(&'static str, usize)] {
+    match inputs {
+        Inputs::Rails => &[("", 0)],
+        Inputs::Pairs { rails: true } => &[("left_", 0), ("right_", 1)],
+        _ => &[],
+    }
+}
+
+/// The flange dimension and rail wear columns of `inputs`, with `maintenance_status` after
+/// the wheels' dimensions.
+fn maintenance_columns(inputs: Inputs) -> Vec<String> {
+    let mut c = Vec::new();
+    for (prefix, _) in wheel_columns(inputs) {
+        c.extend(["sh_mm", "sd_mm", "qr_mm"].map(|n| format!("{prefix}{n}")));
+    }
+    if inputs.has_wheels() {
+        c.push("maintenance_status".into());
+    }
+    for (prefix, _) in rail_columns(inputs) {
+        c.extend(["vertical_wear_mm", "gauge_face_wear_mm"].map(|n| format!("{prefix}{n}")));
+    }
+    c
+}
+
+/// The maintenance status of a row's wheels: `ok`, or each broken limit (`Sd 33.06 > 33
+/// mm`), prefixed by the wheel for pairs, or why the dimensions are undefined.
+pub fn maintenance_status(inputs: Inputs, summary: &Summary) -> String {
+    let wheels = &summary.maintenance.wheels;
+    match inputs {
+        Inputs::Rails => String::new(),
+        Inputs::Wheels => wheels[0].status(),
+        Inputs::Pairs { .. } => {
+            let parts: Vec<String> = ["left", "right"]
+                .iter()
+                .zip(wheels)
+                .filter(|(_, w)| w.status() != "ok")
+                .map(|(side, w)| format!("{side} wheel: {}", w.status()))
+                .collect();
+            if parts.is_empty() {
+                "ok".into()
+            } else {
+                parts.join("; ")
+            }
+        }
+    }
+}
+
+/// Whether a row's wheels break a maintenance limit (their dimensions defined).
+fn breaks_a_limit(row: &Row) -> bool {
+    row.outcome
+        .as_ref()
+        .is_ok_and(|s| s.maintenance.wheels.iter().any(|w| !w.breaches.is_empty()))
 }
 
 /// The parameters' rows (names, units, definitions; values of `summary` or NaN).
@@ -62,6 +128,31 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
         super::tables::conicity_method_text(t.conicity.method).to_string(),
         "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; units in the column names: _mm millimetres, _per_mm 1/mm, _rad radians, _MPa N/mm^2; tan_gamma_e dimensionless; contact_point_jumps a count".into(),
     ];
+    let inputs = fleet.inputs();
+    if inputs.has_wheels() {
+        lines.push(format!(
+            "sh_mm, sd_mm, qr_mm (per wheel for pairs: left_, right_): {} (of the profile as the run fits it: the template's smoothing filter)",
+            super::tables::FLANGE_DIMENSIONS_TEXT
+        ));
+        let radii = t.nominal_radius_mm;
+        for (side, radius) in ["left", "right"].iter().zip(radii) {
+            let l = crate::maintenance::Limits::with_overrides(2.0 * radius, &t.limits);
+            lines.push(format!(
+                "limits of the {side} wheel (nominal diameter {} mm): {}",
+                2.0 * radius,
+                l.describe()
+            ));
+        }
+        lines.push("maintenance_status: ok, or each limit a wheel breaks (value and limit), or why its dimensions are undefined; a limit broken is a result: it does not change the status column or the exit code".into());
+    }
+    if inputs.has_rails() {
+        lines.push(format!(
+            "vertical_wear_mm, gauge_face_wear_mm (per rail for pairs: left_, right_) at the gauge-point depth {} mm: {}; the nominal rails: {}",
+            t.layout.gauge_point_depth_mm,
+            super::tables::RAIL_WEAR_TEXT,
+            t.nominal_rails.as_ref().map_or_else(|| profile_names(&t.rail_profiles), profile_names)
+        ));
+    }
     for r in parameter_rows(None) {
         lines.push(format!("{} ({}): {}", r.name, r.unit, r.definition));
     }
@@ -121,8 +212,33 @@ pub fn csv_line(fleet: &Fleet, row: &Row) -> String {
         Ok(_) => "ok".into(),
         Err(e) => e.to_string(),
     });
-    let rows = parameter_rows(summary);
     let mut notes = Vec::new();
+    let inputs = fleet.inputs();
+    for &(_, k) in wheel_columns(inputs) {
+        let d = summary.and_then(|s| s.maintenance.wheels[k].dimensions.as_ref().ok());
+        for v in [d.map(|d| d.sh_mm), d.map(|d| d.sd_mm), d.map(|d| d.qr_mm)] {
+            cells.push(v.map_or("NaN".into(), number));
+        }
+    }
+    if inputs.has_wheels() {
+        cells.push(summary.map_or_else(String::new, |s| maintenance_status(inputs, s)));
+    }
+    for &(prefix, k) in rail_columns(inputs) {
+        let wear = summary
+            .and_then(|s| s.maintenance.rails.as_ref())
+            .map(|r| &r[k]);
+        match wear {
+            Some(Ok(w)) => cells.extend([number(w.vertical_mm), number(w.gauge_face_mm)]),
+            Some(Err(e)) => {
+                cells.extend(["NaN".into(), "NaN".into()]);
+                notes.push(format!(
+                    "{prefix}vertical_wear_mm, {prefix}gauge_face_wear_mm: {e}"
+                ));
+            }
+            None => cells.extend(["NaN".into(), "NaN".into()]),
+        }
+    }
+    let rows = parameter_rows(summary);
     for r in &rows {
         cells.push(if summary.is_some() {
             if r.unit == "count" {
@@ -323,6 +439,136 @@ pub fn conicity_functions(rows: &[Row], limit: Option<f64>, method: &str) -> Fig
     Figure::single(chart.legend(LegendPosition::Auto))
 }
 
+/// The most wheels over a limit the Sd-against-Sh chart names one by one in its legend,
+/// those furthest beyond a limit (one palette colour each, besides the wheels within the
+/// limits, the limit box and the rest); the others share one entry (the page's table and
+/// fleet.csv list them all).
+const MAX_NAMED_OFFENDERS: usize = 5;
+
+/// Each wheel's flange thickness Sd against its flange height Sh, the limit box of the
+/// template's left wheel drawn dashed, the wheels that break a limit (qR included) named.
+pub fn flange_dimensions(
+    rows: &[Row],
+    inputs: Inputs,
+    limits: &crate::maintenance::Limits,
+) -> Figure {
+    let (within, offenders) = flange_points(rows, inputs);
+    let (sh_min, sh_max) = (limits.sh_min.value_mm, limits.sh_max.value_mm);
+    let (sd_min, sd_max) = (limits.sd_min.value_mm, limits.sd_max.value_mm);
+    let box_points = vec![
+        (sh_min, sd_min),
+        (sh_max, sd_min),
+        (sh_max, sd_max),
+        (sh_min, sd_max),
+        (sh_min, sd_min),
+    ];
+    let total = within.len() + offenders.len();
+    // The whole box and every wheel, with a margin.
+    let all = within.iter().chain(offenders.iter().map(|o| &o.point));
+    let (x_lo, x_hi, y_lo, y_hi) = all.fold((sh_min, sh_max, sd_min, sd_max), |r, p| {
+        (r.0.min(p.0), r.1.max(p.0), r.2.min(p.1), r.3.max(p.1))
+    });
+    let mut chart = Chart::new(
+        format!("Flange thickness against flange height, {total} wheels"),
+        "flange height Sh (mm)",
+        "flange thickness Sd (mm)",
+    )
+    .series(
+        Series::line(
+            format!(
+                "limits Sh {sh_min} to {sh_max} mm, Sd {sd_min} to {sd_max} mm (qR at least {} mm)",
+                limits.qr_min.value_mm
+            ),
+            box_points,
+        )
+        .color(6)
+        .dashed(),
+    )
+    .series(Series::markers(format!("within the limits ({})", within.len()), within).color(0));
+    let named = offenders.len().min(MAX_NAMED_OFFENDERS);
+    for (i, o) in offenders.iter().take(named).enumerate() {
+        chart = chart.series(Series::markers(o.label.clone(), vec![o.point]).color(1 + i));
+    }
+    if offenders.len() > named {
+        let rest: Vec<(f64, f64)> = offenders[named..].iter().map(|o| o.point).collect();
+        chart = chart.series(
+            Series::markers(format!("{} more wheels over a limit", rest.len()), rest).color(7),
+        );
+    }
+    let margin = 0.5;
+    Figure::single(
+        chart
+            .x_range(x_lo - margin, x_hi + margin)
+            .y_range(y_lo - margin, y_hi + margin)
+            .legend(LegendPosition::Auto),
+    )
+}
+
+/// A wheel that breaks a maintenance limit, in the flange chart.
+struct Offender {
+    /// Its name and the limits it breaks.
+    label: String,
+    /// `(Sh, Sd)` (mm).
+    point: (f64, f64),
+    /// How far beyond its limit it lies (mm).
+    beyond: f64,
+    /// Which limits it breaks (the kind of breach).
+    kind: String,
+}
+
+/// The `(Sh, Sd)` of every wheel of the fleet with defined dimensions: those within the
+/// limits, and the offenders, furthest beyond a limit first with the worst of each kind of
+/// breach (Sh too low, Sd too thick, ...) before the rest, so that every kind is named.
+fn flange_points(rows: &[Row], inputs: Inputs) -> (Vec<(f64, f64)>, Vec<Offender>) {
+    let mut within = Vec::new();
+    let mut offenders: Vec<Offender> = Vec::new();
+    for r in rows {
+        let Ok(s) = &r.outcome else { continue };
+        for &(prefix, k) in wheel_columns(inputs) {
+            let w = &s.maintenance.wheels[k];
+            let Ok(d) = &w.dimensions else { continue };
+            let point = (d.sh_mm, d.sd_mm);
+            if w.breaches.is_empty() {
+                within.push(point);
+                continue;
+            }
+            let side = prefix.trim_end_matches('_');
+            let who = if side.is_empty() {
+                r.id.clone()
+            } else {
+                format!("{} {side}", r.id)
+            };
+            offenders.push(Offender {
+                label: format!("{who}: {}", w.status()),
+                point,
+                beyond: w
+                    .breaches
+                    .iter()
+                    .map(|b| (b.value_mm - b.limit_mm).abs())
+                    .fold(0.0, f64::max),
+                kind: w
+                    .breaches
+                    .iter()
+                    .map(|b| format!("{:?}{:?}", b.dimension, b.bound))
+                    .collect(),
+            });
+        }
+    }
+    offenders.sort_by(|a, b| b.beyond.total_cmp(&a.beyond));
+    let mut kinds = std::collections::HashSet::new();
+    let (mut first, rest): (Vec<_>, Vec<_>) = offenders
+        .into_iter()
+        .partition(|o| kinds.insert(o.kind.clone()));
+    first.extend(rest);
+    (within, first)
+}
+
+/// Name and caption of the flange dimensions figure.
+const FLANGE_FIGURE: (&str, &str) = (
+    "fleet_flange_dimensions",
+    "Each wheel's flange thickness Sd against its flange height Sh (EN 15313: Sh the flange tip above the taping-line point, Sd from the inner face to the flank 10 mm above it), the maintenance limits of the template's wheel as a dashed box ([limits], by default the TSI's for its diameter). Wheels that break a limit, qR included, are named with the limits they break (five: the one furthest beyond a limit of each kind of breach, then the furthest; the table below and fleet.csv's maintenance_status have all). Wheels whose dimensions are undefined are not drawn.",
+);
+
 /// Names and captions of the fleet figures.
 const FIGURES: [(&str, &str); 3] = [
     (
@@ -351,14 +597,21 @@ pub fn render(
 ) -> Result<Vec<OutputFile>, Error> {
     let t = fleet.template();
     let limit = t.fleet.conicity_limit;
-    let charts = [
+    let mut charts = vec![
         histogram(rows, limit),
         conicity_against_nonlinearity(rows, limit),
         conicity_functions(rows, limit, t.conicity.method.name()),
     ];
+    let mut names = FIGURES.to_vec();
+    if fleet.inputs().has_wheels() {
+        let limits =
+            crate::maintenance::Limits::with_overrides(2.0 * t.nominal_radius_mm[0], &t.limits);
+        names.insert(0, FLANGE_FIGURE);
+        charts.insert(0, flange_dimensions(rows, fleet.inputs(), &limits));
+    }
     let mut files = Vec::new();
     let mut entries = Vec::new();
-    for ((name, caption), chart) in FIGURES.iter().zip(&charts) {
+    for ((name, caption), chart) in names.iter().zip(&charts) {
         let mut entry = FigureEntry {
             name: (*name).to_string(),
             caption: (*caption).to_string(),
@@ -511,6 +764,94 @@ fn listed_table(
     }
 }
 
+/// The page's lines on the wheels over a maintenance limit and the rails' wear.
+fn maintenance_summary(rows: &[Row], inputs: Inputs) -> Vec<String> {
+    let assessed: Vec<&Summary> = rows
+        .iter()
+        .filter_map(|r| r.outcome.as_ref().ok())
+        .collect();
+    let mut lines = Vec::new();
+    if inputs.has_wheels() {
+        let offenders = rows.iter().filter(|r| breaks_a_limit(r)).count();
+        let undefined = assessed
+            .iter()
+            .filter(|s| s.maintenance.wheels.iter().any(|w| w.dimensions.is_err()))
+            .count();
+        lines.push(format!(
+            "{offenders} of {} assessed rows have a wheel over a maintenance limit (Sh, Sd, qR; maintenance_status in fleet.csv){}; a limit broken is a result and leaves the row's status and the exit code as they are.",
+            assessed.len(),
+            if undefined > 0 {
+                format!(", {undefined} with flange dimensions undefined")
+            } else {
+                String::new()
+            }
+        ));
+    }
+    if inputs.has_rails() {
+        use crate::maintenance::RailWear;
+        let vertical: fn(&RailWear) -> f64 = |w| w.vertical_mm;
+        let gauge_face: fn(&RailWear) -> f64 = |w| w.gauge_face_mm;
+        for (name, of) in [("vertical wear", vertical), ("gauge-face wear", gauge_face)] {
+            let largest = rows
+                .iter()
+                .filter_map(|r| {
+                    let s = r.outcome.as_ref().ok()?;
+                    let rails = s.maintenance.rails.as_ref()?;
+                    let v = rails
+                        .iter()
+                        .filter_map(|w| w.as_ref().ok())
+                        .map(of)
+                        .fold(f64::NAN, f64::max);
+                    v.is_finite().then_some((v, r.id.as_str()))
+                })
+                .max_by(|a, b| a.0.total_cmp(&b.0));
+            if let Some((v, id)) = largest {
+                lines.push(format!("Largest {name}: {v:.2} mm ({id})."));
+            }
+        }
+    }
+    lines
+}
+
+/// The table of the wheels over a maintenance limit (none for a fleet of rails).
+fn maintenance_table(rows: &[Row], inputs: Inputs) -> Vec<report::DataTable> {
+    if !inputs.has_wheels() {
+        return Vec::new();
+    }
+    let table_rows: Vec<Vec<String>> = rows
+        .iter()
+        .filter(|r| breaks_a_limit(r))
+        .take(MAX_LISTED)
+        .filter_map(|r| {
+            let s = r.outcome.as_ref().ok()?;
+            let mut cells = vec![r.id.clone()];
+            for &(_, k) in wheel_columns(inputs) {
+                let d = s.maintenance.wheels[k].dimensions.as_ref().ok();
+                cells.push(d.map_or("—".into(), |d| {
+                    format!("{:.2}, {:.2}, {:.2}", d.sh_mm, d.sd_mm, d.qr_mm)
+                }));
+            }
+            cells.push(maintenance_status(inputs, s));
+            Some(cells)
+        })
+        .collect();
+    let mut header = vec!["id".to_string()];
+    for (prefix, _) in wheel_columns(inputs) {
+        let side = prefix.trim_end_matches('_');
+        header.push(if side.is_empty() {
+            "Sh, Sd, qR (mm)".into()
+        } else {
+            format!("{side} wheel Sh, Sd, qR (mm)")
+        });
+    }
+    header.push("limits broken".into());
+    vec![report::DataTable {
+        title: "Wheels over a maintenance limit".into(),
+        header,
+        rows: table_rows,
+    }]
+}
+
 /// The most failed rows the page names (the CSV holds them all).
 const MAX_FAILED_LISTED: usize = 50;
 
@@ -551,7 +892,11 @@ fn page(
     let failed: Vec<&Row> = rows.iter().filter(|r| r.outcome.is_err()).collect();
     ReportPage {
         title: format!("Fleet assessment: {}", t.title),
-        summary: summary(rows, failed.len(), limit),
+        summary: [
+            maintenance_summary(rows, fleet.inputs()),
+            summary(rows, failed.len(), limit),
+        ]
+        .concat(),
         parameters: vec![
             ("template scene".into(), template_path.to_string()),
             (
@@ -578,9 +923,13 @@ fn page(
         tables: vec![TableEntry {
             name: "fleet".into(),
             file: "fleet.csv".into(),
-            description: "one row per profile or pair: files, sha256, status, tan γe at 2, 3, 4 mm, nonlinearity, flange contact, jumps (units in the column names)".into(),
+            description: "one row per profile or pair: files, sha256, status, flange dimensions Sh, Sd, qR and the limits broken (or rail wear), tan γe at 2, 3, 4 mm, nonlinearity, flange contact, jumps (units in the column names)".into(),
         }],
-        data_tables: vec![listed_table(rows, limit, fleet.has_hertz(), reports)],
+        data_tables: [
+            maintenance_table(rows, fleet.inputs()),
+            vec![listed_table(rows, limit, fleet.has_hertz(), reports)],
+        ]
+        .concat(),
         notes: failed_notes(&failed),
         ..ReportPage::default()
     }

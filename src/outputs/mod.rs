@@ -82,6 +82,11 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
             tables::rail_profile(&p.right.rail, Side::Right).map_err(table_error)?,
         );
     }
+    push(
+        "profile_dimensions.csv",
+        "flange dimensions Sh, Sd, qR of the wheels against their limits; rail wear against the nominal rail",
+        tables::profile_dimensions(p, &results.maintenance).map_err(table_error)?,
+    );
     if let Some(r) = &results.rigid {
         push(
             "rigid.csv",

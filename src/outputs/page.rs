@@ -18,7 +18,7 @@ pub(super) fn report_page(
     let (summary, notes) = summary_and_notes(scene, results);
     ReportPage {
         title: scene.title.clone(),
-        key_results: key_results(results),
+        key_results: [maintenance_results(results), key_results(results)].concat(),
         summary,
         parameters: parameters(scene),
         provenance: provenance(results),
@@ -211,4 +211,113 @@ fn key_results(results: &Results) -> Vec<[String; 4]> {
             })
             .collect()
     })
+}
+
+/// The wheels' flange dimensions with their limits and the rails' wear, as key-result rows
+/// `[name, value, unit, definition]`: once for a wheelset of equal wheels, per wheel
+/// otherwise.
+fn maintenance_results(results: &Results) -> Vec<[String; 4]> {
+    let m = &results.maintenance;
+    let p = &results.placement;
+    let equal = m.wheels[0] == m.wheels[1];
+    let mut rows = Vec::new();
+    for (k, side) in ["left", "right"].into_iter().enumerate() {
+        if equal && k == 1 {
+            break;
+        }
+        let whose = if equal {
+            "both wheels".to_string()
+        } else {
+            format!("{side} wheel")
+        };
+        let wheel = if k == 0 {
+            &p.left.wheel
+        } else {
+            &p.right.wheel
+        };
+        rows.extend(wheel_rows(&m.wheels[k], &whose, wheel.profile().name()));
+    }
+    if let Some(rails) = &m.rails {
+        for (k, side) in ["left", "right"].into_iter().enumerate() {
+            let (vertical, face) = match &rails[k] {
+                Ok(w) => (three_places(w.vertical_mm), three_places(w.gauge_face_mm)),
+                Err(e) => (format!("— ({e})"), "—".into()),
+            };
+            rows.push([
+                format!("vertical wear ({side} rail)"),
+                vertical,
+                "mm".into(),
+                tables::RAIL_WEAR_TEXT.into(),
+            ]);
+            rows.push([
+                format!("gauge-face wear ({side} rail)"),
+                face,
+                "mm".into(),
+                "see vertical wear".into(),
+            ]);
+        }
+    }
+    rows
+}
+
+/// A length in mm to three decimals.
+fn three_places(v: f64) -> String {
+    format!("{v:.3}")
+}
+
+/// The key-result rows of one wheel's flange dimensions (`whose`: which wheels they are,
+/// `profile` its name) and its limits' status.
+fn wheel_rows(
+    w: &crate::maintenance::WheelAssessment,
+    whose: &str,
+    profile: &str,
+) -> Vec<[String; 4]> {
+    let l = &w.limits;
+    let defined = w.dimensions.as_ref().ok();
+    let mut rows: Vec<[String; 4]> = [
+        (
+            "Sh",
+            defined.map(|d| d.sh_mm),
+            format!(
+                "flange height: the tip above the taping-line point; limits {} to {} mm",
+                l.sh_min.value_mm, l.sh_max.value_mm
+            ),
+        ),
+        (
+            "Sd",
+            defined.map(|d| d.sd_mm),
+            format!(
+                "flange thickness: inner face to the flank 10 mm above the taping-line point; limits {} to {} mm",
+                l.sd_min.value_mm, l.sd_max.value_mm
+            ),
+        ),
+        (
+            "qR",
+            defined.map(|d| d.qr_mm),
+            format!(
+                "Sd point to the flank 2 mm below the tip; at least {} mm",
+                l.qr_min.value_mm
+            ),
+        ),
+    ]
+    .into_iter()
+    .map(|(name, value, definition)| {
+        [
+            format!("{name} ({whose}, {profile})"),
+            value.map_or("—".into(), three_places),
+            "mm".into(),
+            definition,
+        ]
+    })
+    .collect();
+    rows.push([
+        format!("maintenance limits ({whose})"),
+        w.status(),
+        String::new(),
+        format!(
+            "{} (sources: profile_dimensions.csv)",
+            tables::FLANGE_DIMENSIONS_TEXT
+        ),
+    ]);
+    rows
 }

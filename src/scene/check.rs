@@ -1,17 +1,19 @@
 //! Checking a scene file's keys: one function per section of the file, each returning the
 //! checked values or the offending key (as the user wrote it) and a message.
 
-use super::raw::{RawConicity, RawFleet, RawQuasiElastic, RawScene, RawSweep};
+use super::raw::{RawConicity, RawFleet, RawLimits, RawQuasiElastic, RawScene, RawSweep};
 use super::{
     DEFAULT_EPSILON_SENSITIVITY_MM, DEFAULT_INCLINATION, DEFAULT_NOMINAL_RADIUS_MM,
     DEFAULT_POISSON, DEFAULT_RAIL_PROFILE, DEFAULT_RAIL_PROFILE_INCLINATION,
     DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_SWEEP_MM, DEFAULT_SWEEP_STEP_MM,
     DEFAULT_WHEEL_LOAD_KN, DEFAULT_WHEEL_PROFILE, DEFAULT_YOUNG_GPA, FleetSettings, ImageFormat,
-    MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_SMOOTHING_WAVELENGTH_MM, MAX_WHEEL_LOAD_N,
-    MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene, YOUNG_RANGE_GPA,
+    MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_LIMIT_MM, MAX_SMOOTHING_WAVELENGTH_MM,
+    MAX_WHEEL_LOAD_N, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene,
+    YOUNG_RANGE_GPA,
 };
 use crate::hertz::Material;
 use crate::hertz::{ContactSource, HertzSettings};
+use crate::maintenance::{LimitOverrides, Limits};
 use crate::message::Number;
 use crate::profile::Profile;
 use crate::quasi_elastic::{
@@ -73,6 +75,11 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let (hertz, hertz_contact) = hertz(raw)?;
     let conicity = conicity_settings(&raw.conicity)?;
     let fleet = fleet_settings(&raw.fleet)?;
+    let limits = limits(&raw.limits, nominal_radius_mm)?;
+    let nominal_rails = raw.rail.nominal_profile.as_deref().map(|text| {
+        let r = profile_ref(text, dir);
+        [r.clone(), r]
+    });
     Ok(Scene {
         path: origin.to_string(),
         name,
@@ -102,18 +109,78 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         hertz_contact,
         conicity,
         fleet,
+        limits,
+        nominal_rails,
     })
+}
+
+/// A profile named in a scene: a built-in name, or a path relative to the scene's folder.
+fn profile_ref(text: &str, dir: &Path) -> ProfileRef {
+    if Profile::built_in(text).is_some() {
+        ProfileRef::BuiltIn(text.to_string())
+    } else {
+        ProfileRef::File(dir.join(text))
+    }
+}
+
+/// The overrides of `[limits]`: each above 0 and at most [`MAX_LIMIT_MM`], and every
+/// minimum below the maximum it meets (set or the standard's for the wheels' diameters).
+fn limits(raw: &RawLimits, nominal_radius_mm: [f64; 2]) -> Result<LimitOverrides, Invalid> {
+    let checked = |key: &'static str, v: Option<f64>| -> Result<Option<f64>, Invalid> {
+        match v {
+            Some(v) if !(v.is_finite() && v > 0.0 && v <= MAX_LIMIT_MM) => Err(invalid(
+                key,
+                format!(
+                    "{} must be above 0 and at most {MAX_LIMIT_MM} mm (a flange dimension)",
+                    Number(v)
+                ),
+            )),
+            v => Ok(v),
+        }
+    };
+    let overrides = LimitOverrides {
+        sh_min_mm: checked("limits.sh_min_mm", raw.sh_min_mm)?,
+        sh_max_mm: checked("limits.sh_max_mm", raw.sh_max_mm)?,
+        sd_min_mm: checked("limits.sd_min_mm", raw.sd_min_mm)?,
+        sd_max_mm: checked("limits.sd_max_mm", raw.sd_max_mm)?,
+        qr_min_mm: checked("limits.qr_min_mm", raw.qr_min_mm)?,
+    };
+    for radius in nominal_radius_mm {
+        let l = Limits::with_overrides(2.0 * radius, &overrides);
+        for (min, max, min_key, max_key, set_min) in [
+            (
+                &l.sh_min,
+                &l.sh_max,
+                "limits.sh_min_mm",
+                "limits.sh_max_mm",
+                overrides.sh_min_mm,
+            ),
+            (
+                &l.sd_min,
+                &l.sd_max,
+                "limits.sd_min_mm",
+                "limits.sd_max_mm",
+                overrides.sd_min_mm,
+            ),
+        ] {
+            if min.value_mm >= max.value_mm {
+                let key = if set_min.is_some() { min_key } else { max_key };
+                return Err(invalid(
+                    key,
+                    format!(
+                        "the minimum {} mm ({}) must be below the maximum {} mm ({})",
+                        min.value_mm, min.source, max.value_mm, max.source
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(overrides)
 }
 
 /// The four profile references and the keys they were written under.
 fn profile_refs(raw: &RawScene, dir: &Path) -> ProfileRefs {
-    let profile_ref = |text: &str| -> ProfileRef {
-        if Profile::built_in(text).is_some() {
-            ProfileRef::BuiltIn(text.to_string())
-        } else {
-            ProfileRef::File(dir.join(text))
-        }
-    };
+    let profile_ref = |text: &str| profile_ref(text, dir);
     let wheel = raw
         .wheel
         .profile

@@ -76,6 +76,10 @@ pub(crate) const DEFAULT_SMOOTHING_WAVELENGTH_MM: f64 = 0.0;
 /// pairs lie far below 1 (limits in use are 0.15 to 0.5); a limit above 2 marks nothing.
 pub(crate) const MAX_CONICITY_LIMIT: f64 = 2.0;
 
+/// The largest maintenance limit of a flange dimension accepted (mm): flange heights and
+/// thicknesses are a few tens of millimetres.
+pub const MAX_LIMIT_MM: f64 = 100.0;
+
 /// The sensitivity values of eps of the `qe_epsilon` figure (mm).
 pub(crate) const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
 
@@ -207,6 +211,11 @@ pub struct Scene {
     pub(crate) conicity: crate::conicity::ConicitySettings,
     /// Settings of `wheelrail fleet` with this scene as its template.
     pub(crate) fleet: FleetSettings,
+    /// `[limits]`: the maintenance limits that override the standard's.
+    pub(crate) limits: crate::maintenance::LimitOverrides,
+    /// Left and right nominal rails the rails' wear is measured against (`rail.nominal_profile`;
+    /// a fleet of rails sets its template's rails); `None`: no rail wear.
+    pub(crate) nominal_rails: Option<[ProfileRef; 2]>,
 }
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
@@ -344,6 +353,16 @@ impl Scene {
     /// Settings of `wheelrail fleet` with this scene as its template (`[fleet]`).
     pub fn fleet(&self) -> &FleetSettings {
         &self.fleet
+    }
+
+    /// The maintenance limits set by `[limits]` (the standard's apply to the others).
+    pub fn limits(&self) -> &crate::maintenance::LimitOverrides {
+        &self.limits
+    }
+
+    /// Left and right nominal rails the rails' wear is measured against, if any.
+    pub fn nominal_rails(&self) -> Option<&[ProfileRef; 2]> {
+        self.nominal_rails.as_ref()
     }
 
     /// The scene with `figures` in place of its own (what a run computes follows them).
@@ -565,12 +584,59 @@ mod tests {
     }
 
     #[test]
+    fn limit_errors_name_the_key() {
+        let cases = [
+            ("[limits]\nqr_min_mm = -1.0", "limits.qr_min_mm"),
+            ("[limits]\nsh_max_mm = 1000.0", "limits.sh_max_mm"),
+            ("[limits]\nsd_min_mm = nan", "limits.sd_min_mm"),
+            // Above the standard's maximum of 33 mm.
+            ("[limits]\nsd_min_mm = 34.0", "limits.sd_min_mm"),
+            // Below the standard's minimum of 27.5 mm for a 920 mm wheel.
+            ("[limits]\nsh_max_mm = 27.0", "limits.sh_max_mm"),
+            (
+                "[limits]\nsd_min_mm = 30.0\nsd_max_mm = 29.0",
+                "limits.sd_min_mm",
+            ),
+        ];
+        for (text, key) in cases {
+            let e = scene(text).unwrap_err().to_string();
+            assert!(e.contains(key), "{text:?} gave {e}");
+        }
+    }
+
+    #[test]
     fn the_fleet_limit_is_read() {
         let s = scene("[fleet]\nconicity_limit = 0.4").unwrap();
         assert_eq!(s.fleet.conicity_limit, Some(0.4));
         assert_eq!(scene("").unwrap().fleet.conicity_limit, None);
         let e = scene("[fleet]\nlimit = 0.4").unwrap_err().to_string();
         assert!(e.contains("limit") && e.contains("unknown field"), "{e}");
+    }
+
+    /// `[limits]` overrides the standard's limits one by one, each saying it came from the
+    /// scene; `rail.nominal_profile` names the nominal rail of both sides.
+    #[test]
+    fn limits_and_the_nominal_rail_are_read() {
+        let s = scene("[limits]\nsd_min_mm = 24.5\n[rail]\nnominal_profile = \"UIC60E1\"").unwrap();
+        let l = crate::maintenance::Limits::with_overrides(920.0, s.limits());
+        assert_eq!(l.sd_min.value_mm.to_bits(), 24.5f64.to_bits());
+        assert!(l.sd_min.source.contains("limits.sd_min_mm"), "{l:?}");
+        assert!(l.sd_max.source.contains("321/2013"), "{l:?}");
+        assert_eq!(
+            s.nominal_rails(),
+            Some(&[
+                ProfileRef::BuiltIn("UIC60E1".into()),
+                ProfileRef::BuiltIn("UIC60E1".into())
+            ])
+        );
+        assert!(scene("").unwrap().nominal_rails().is_none());
+        let e = scene("[limits]\nsd_minimum = 24.0")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("sd_minimum") && e.contains("unknown field"),
+            "{e}"
+        );
     }
 
     #[test]

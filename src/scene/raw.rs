@@ -52,6 +52,26 @@ pub struct RawScene {
     /// `[fleet]`.
     #[serde(default)]
     pub fleet: RawFleet,
+    /// `[limits]`.
+    #[serde(default)]
+    pub limits: RawLimits,
+}
+
+/// `[limits]`: maintenance limits of the flange dimensions (mm), each overriding the
+/// standard's value for the wheel's diameter ([`crate::maintenance::Limits`]).
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawLimits {
+    /// Least flange height Sh.
+    pub sh_min_mm: Option<f64>,
+    /// Greatest flange height Sh.
+    pub sh_max_mm: Option<f64>,
+    /// Least flange thickness Sd.
+    pub sd_min_mm: Option<f64>,
+    /// Greatest flange thickness Sd.
+    pub sd_max_mm: Option<f64>,
+    /// Least qR.
+    pub qr_min_mm: Option<f64>,
 }
 
 /// `[fleet]`: settings of `wheelrail fleet` when this scene is its template.
@@ -150,6 +170,8 @@ pub struct RawRail {
     pub inclination: Option<String>,
     /// Inclination already contained in the profile data (default "vertical": upright).
     pub profile_inclination: Option<String>,
+    /// The nominal profile the rails' wear is measured against (built-in name or path).
+    pub nominal_profile: Option<String>,
     /// Filter wavelength of the spline through rail profiles read from files (0: none).
     pub smoothing_wavelength_mm: Option<f64>,
     /// Drop measured points that step back (MiniProf fold-backs) instead of refusing them.

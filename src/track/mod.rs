@@ -23,7 +23,10 @@ mod sparse;
 mod wheel;
 
 pub(crate) use heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
-pub(crate) use layout::{GAUGE_POINT_DEPTH_MM, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM};
+pub(crate) use layout::{
+    GAUGE_POINT_DEPTH_MM, STANDARD_FLANGE_BACK_MM, STANDARD_GAUGE_MM,
+    TAPING_LINE_FROM_INNER_FACE_MM,
+};
 pub use layout::{Inclination, LayoutError, TrackLayout};
 pub(crate) use rail::SurfaceBounds;
 pub use rail::{PlacedRail, RailPoint};
