@@ -89,6 +89,7 @@ pub mod conicity;
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
+pub mod delimited;
 pub mod error;
 pub mod fleet;
 pub mod gap;
@@ -96,6 +97,7 @@ pub mod hertz;
 #[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
+pub mod plausible;
 pub mod profile;
 pub mod quasi_elastic;
 pub mod report;

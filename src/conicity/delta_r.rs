@@ -111,40 +111,59 @@ impl DeltaR {
 
     /// Parses a CSV table holding the columns `y_mm` (or `y_ws_mm`, as in `rigid.csv`) and
     /// `delta_r_mm`, found by their header names; `#` comments and blank lines are skipped,
-    /// other columns ignored.
+    /// other columns ignored. Fields are separated by commas, semicolons or tabs, as the
+    /// header's are ([`crate::delimited::Separator`]); with semicolons or tabs a number may
+    /// have a decimal comma.
     ///
     /// # Errors
-    /// A message naming `origin` and the line.
+    /// A message naming `origin` and the line (and the separators, where a row holds
+    /// another than its header).
     pub fn parse_csv(text: &str, origin: &str) -> Result<DeltaR, String> {
+        let separator = crate::delimited::Separator::of_text(text);
         let mut y = Vec::new();
         let mut dr = Vec::new();
         let mut lines = Vec::new();
         let mut columns: Option<(usize, usize)> = None;
         for (k, raw) in text.lines().enumerate() {
             let line_no = k + 1;
-            let line = raw.trim();
-            if line.is_empty() || line.starts_with('#') {
+            let line = raw.trim_matches(|c: char| c.is_whitespace() && c != separator.char());
+            if line.trim().is_empty() || line.starts_with('#') {
                 continue;
             }
-            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            let cells: Vec<&str> = line.split(separator.char()).map(str::trim).collect();
             let Some((cy, cd)) = columns else {
                 let find = |names: &[&str]| cells.iter().position(|c| names.contains(c));
                 match (find(&["y_mm", "y_ws_mm"]), find(&["delta_r_mm"])) {
                     (Some(cy), Some(cd)) => columns = Some((cy, cd)),
                     _ => {
                         return Err(format!(
-                            "{origin}:{line_no}: expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, found {line:?}"
+                            "{origin}:{line_no}: expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, separated by commas, semicolons or tabs, found {line:?}"
                         ));
                     }
                 }
                 continue;
             };
+            let mixed = || {
+                separator.other_in(line).map_or(String::new(), |found| {
+                    format!(
+                        " (this row separates its fields by {}, the header by {}: a file takes one separator)",
+                        found.plural(),
+                        separator.plural()
+                    )
+                })
+            };
             let cell = |i: usize, column: &str| -> Result<f64, String> {
                 let text = cells.get(i).ok_or_else(|| {
-                    format!("{origin}:{line_no}: no value in column {column} in {line:?}")
+                    format!(
+                        "{origin}:{line_no}: no value in column {column} in {line:?}{}",
+                        mixed()
+                    )
                 })?;
-                let v: f64 = text.parse().map_err(|_| {
-                    format!("{origin}:{line_no}: {column} {text:?} is not a number")
+                let v: f64 = separator.number_text(text).parse().map_err(|_| {
+                    format!(
+                        "{origin}:{line_no}: {column} {text:?} is not a number{}",
+                        mixed()
+                    )
                 })?;
                 if v.is_finite() {
                     Ok(v)
@@ -260,6 +279,33 @@ impl DeltaR {
 #[cfg(test)]
 mod tests {
     use super::DeltaR;
+
+    /// A Δr table exported with semicolons or tabs (decimal commas or points) reads as the
+    /// one with commas; a row with another separator than its header is named so.
+    #[test]
+    fn semicolons_and_tabs_read_as_commas() {
+        let commas = "# rigid\ny_mm,delta_r_mm\n-1,-0.25\n0,0\n1.5,0.375\n";
+        let want = DeltaR::parse_csv(commas, "c.csv").unwrap();
+        for text in [
+            "# rigid\ny_mm;delta_r_mm\n-1;-0,25\n0;0\n1,5;0.375\n",
+            "# rigid\r\ny_mm\tdelta_r_mm\r\n-1\t-0,25\r\n0\t0\r\n1.5\t0.375\r\n",
+        ] {
+            let got = DeltaR::parse_csv(text, "e.csv").unwrap();
+            assert_eq!(
+                got.points().collect::<Vec<_>>(),
+                want.points().collect::<Vec<_>>(),
+                "{text:?}"
+            );
+        }
+        let e = DeltaR::parse_csv("y_mm;delta_r_mm\n-1;0\n0.5,0.1\n", "e.csv").unwrap_err();
+        assert!(
+            e.starts_with("e.csv:3:")
+                && e.contains("this row separates its fields by commas, the header by semicolons"),
+            "{e}"
+        );
+        let e = DeltaR::parse_csv("y_mm,delta_r_mm\n-1;0\n", "e.csv").unwrap_err();
+        assert!(e.contains("by semicolons, the header by commas"), "{e}");
+    }
 
     /// An odd Δr falling through 0 (unstable) between two stable crossings at ±2 mm, as a
     /// symmetric wheelset may give it: of the two equally near equilibria, the positive one.

@@ -52,19 +52,8 @@ const MPA_PER_GPA: f64 = 1000.0;
 /// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
 pub const MAX_SWEEP_POSITIONS: usize = 100_001;
 
-/// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
-pub const MAX_WHEEL_LOAD_N: f64 = 1e6;
-/// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
-/// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
-pub const MIN_WHEEL_LOAD_N: f64 = 1.0;
-/// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
-/// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
-pub const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
-/// Poisson's ratios accepted, `[0, 0.5)`: the mathematical range is `(-1, 0.5)`, but no
-/// wheel or rail material has a negative ratio (steels 0.27 to 0.30, polymers up to 0.45;
-/// negative ratios belong to auxetic foams), and near -1 the combined modulus `E/(1-ν²)`
-/// grows without bound. 0.5 (incompressible) is excluded by Hertz's formula itself.
-pub const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
+// The ranges of the wheel load and the materials are in `crate::plausible`, shared with
+// `wheelrail hertz`.
 /// The longest filter wavelength of the profile spline (mm): longer than a wheel's tread
 /// and flange together, the filter flattens the profile itself.
 pub const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
