@@ -170,3 +170,47 @@ fn the_committed_reports_regenerate() {
     }
     assert!(compared > 100, "only {compared} files compared");
 }
+
+/// The committed pages describe their own scene (issue 32): "Paper Fig." only where the
+/// scene is the paper's case, each profile's file named without `..` segments and its hash
+/// given once, and no chart quoting the capped slope of a vertical face (-1e6) as data.
+#[test]
+fn committed_pages_cite_the_paper_only_for_its_case() {
+    let root = common::root();
+    let mut pages = 0;
+    for entry in std::fs::read_dir(root.join("reports")).unwrap() {
+        let dir = entry.unwrap().path();
+        let (scene, page) = (dir.join("scene.toml"), dir.join("index.html"));
+        let name = dir.file_name().unwrap().to_string_lossy().into_owned();
+        if !scene.exists() || !page.exists() || name == "fleet" {
+            continue; // the fleet's page has no figure of the paper
+        }
+        let paper_case = wheelrail::scene::Scene::load(&scene)
+            .unwrap()
+            .is_paper_case();
+        let html = std::fs::read_to_string(&page).unwrap();
+        assert_eq!(
+            html.contains("Paper Fig."),
+            paper_case,
+            "reports/{name}: paper case {paper_case}"
+        );
+        for row in html.lines().filter(|l| l.contains("sha256")) {
+            assert_eq!(row.matches("sha256").count(), 1, "reports/{name}: {row}");
+            assert!(!row.contains("/../"), "reports/{name}: {row}");
+        }
+        for file in std::fs::read_dir(&dir).unwrap() {
+            let path = file.unwrap().path();
+            if path.extension().is_some_and(|e| e == "svg") {
+                let svg = std::fs::read_to_string(&path).unwrap();
+                assert!(!svg.contains("-1e6"), "{}", path.display());
+            }
+        }
+        pages += 1;
+    }
+    assert!(pages >= 7, "only {pages} pages");
+    // The paper's own folder is the paper's case; the EN 15302 ones are not.
+    let load =
+        |n: &str| wheelrail::scene::Scene::load(&root.join(format!("reports/{n}/scene.toml")));
+    assert!(load("paper").unwrap().is_paper_case());
+    assert!(!load("en15302_e1").unwrap().is_paper_case());
+}

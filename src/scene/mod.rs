@@ -214,6 +214,35 @@ pub struct FleetSettings {
 }
 
 impl Scene {
+    /// Whether the scene is the paper's case (Onat, Voltr & Lata 2014): S1002 wheels of
+    /// 460 mm on UIC60 rails inclined 1:40, standard gauge and wheelset, 70 kN, steel; that
+    /// is, every key that changes the numbers of a figure at its default (the sweep and the
+    /// numerical settings may differ). The report cites the paper's figures only then.
+    pub fn is_paper_case(&self) -> bool {
+        let paper = Scene::from_toml("", "paper", Path::new("")).expect("the defaults are valid");
+        let built_in = |r: &ProfileRef, name: &str| match r {
+            ProfileRef::BuiltIn(n) => {
+                Profile::built_in(n).map(|p| p.name().to_owned())
+                    == Profile::built_in(name).map(|p| p.name().to_owned())
+            }
+            ProfileRef::File(_) => false,
+        };
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        self.wheel_profiles
+            .iter()
+            .all(|r| built_in(r, DEFAULT_WHEEL_PROFILE))
+            && self
+                .rail_profiles
+                .iter()
+                .all(|r| built_in(r, DEFAULT_RAIL_PROFILE))
+            && bits(&self.nominal_radius_mm) == bits(&paper.nominal_radius_mm)
+            && self.layout == paper.layout
+            && self.rail_profile_inclination == paper.rail_profile_inclination
+            && self.wheel_load_n.to_bits() == paper.wheel_load_n.to_bits()
+            && self.wheel_material == paper.wheel_material
+            && self.rail_material == paper.rail_material
+    }
+
     /// Whether both wheels are one: the same profile at the same radius (placed once and
     /// cloned, a mirror-symmetric wheelset with [`Scene::same_rails`]).
     pub(crate) fn same_wheels(&self) -> bool {
@@ -469,6 +498,30 @@ mod tests {
         assert!(s.sweep_mm[150].abs() < 1e-15 && (s.sweep_mm[300] - 15.0).abs() < 1e-12);
         assert!((s.wheel_load_n - 70_000.0).abs() < 1e-9);
         assert!((s.wheel_material.young_mpa - 210_000.0).abs() < 1e-9);
+        assert!(s.is_paper_case());
+    }
+
+    /// The paper's case: its physical keys at their defaults, written or not; the sweep and
+    /// the solvers free.
+    #[test]
+    fn the_paper_case_is_the_paper_geometry_load_and_material() {
+        for same in [
+            "[wheel]\nprofile = \"s1002\"\n[rail]\nprofile = \"60E1\"\ninclination = \"1:40\"",
+            "[sweep]\nfrom_mm = -5.0\nto_mm = 5.0\n[rigid]\nsolver = \"paper\"",
+            "[load]\nwheel_load_kN = 70.0\n[material]\npoisson = 0.3",
+        ] {
+            assert!(scene(same).unwrap().is_paper_case(), "{same}");
+        }
+        for other in [
+            "[rail]\ninclination = \"1:20\"",
+            "[wheel]\nright_nominal_radius_mm = 450.0",
+            "[load]\nwheel_load_kN = 100.0",
+            "[material]\nrail_poisson = 0.28",
+            "[track]\ngauge_mm = 1000.0\n[wheelset]\nflange_back_mm = 920.0",
+            "[wheel]\nprofile = \"tests/data/en15302/R-UIC519A.csv\"",
+        ] {
+            assert!(!scene(other).unwrap().is_paper_case(), "{other}");
+        }
     }
 
     #[test]
