@@ -345,14 +345,28 @@ pub fn tradeoff_files(
     m: &[crate::tradeoff::Measurement],
     formats: &[ImageFormat],
 ) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
+    let csv = tables::tradeoff(m)
+        .map_err(table_error)?
+        .to_csv_with(CSV_FORMAT);
+    let points: Vec<crate::tradeoff::ChartPoint> = m.iter().map(Into::into).collect();
+    tradeoff_chart_files(csv, &points, formats)
+}
+
+/// `tradeoff.csv` as `csv` and the chart of its `points` in `formats` (to draw the chart
+/// again from a committed table, `wheelrail tradeoff --replot`), and the page entry.
+///
+/// # Errors
+/// [`Error::Other`] when the chart cannot be rendered.
+pub fn tradeoff_chart_files(
+    csv: String,
+    points: &[crate::tradeoff::ChartPoint],
+    formats: &[ImageFormat],
+) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
     let mut files = vec![OutputFile {
         name: "tradeoff.csv".into(),
-        bytes: tables::tradeoff(m)
-            .map_err(table_error)?
-            .to_csv_with(CSV_FORMAT)
-            .into_bytes(),
+        bytes: csv.into_bytes(),
     }];
-    let chart = figures::tradeoff(m);
+    let chart = tradeoff_chart(points);
     for f in formats {
         files.push(match f {
             ImageFormat::Svg => OutputFile {
@@ -370,11 +384,16 @@ pub fn tradeoff_files(
     Ok((files, tradeoff_entry()))
 }
 
+/// The chart of the tradeoff study's `points`.
+pub fn tradeoff_chart(points: &[crate::tradeoff::ChartPoint]) -> report::Figure {
+    figures::tradeoff(points)
+}
+
 /// The report entry of the tradeoff chart.
 pub fn tradeoff_entry() -> FigureEntry {
     FigureEntry {
         name: "tradeoff".into(),
-        caption: "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it; tradeoff.csv lists every setting).".into(),
+        caption: "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it). Each point is a setting, numbered as in the key below the chart (tradeoff.csv has every measurement); the Pareto front, the settings no other beats in both time and error, is the staircase that bounds what they dominate. Errors of exactly 0, settings that reproduce the reference to the last bit, are drawn in the shaded band 'exact (0)' at the foot of a panel, below the decades of the others.".into(),
         svg: "tradeoff.svg".into(),
         png: "tradeoff.png".into(),
     }
