@@ -208,6 +208,25 @@ fn committed_pages_cite_the_paper_only_for_its_case() {
         pages += 1;
     }
     assert!(pages >= 7, "only {pages} pages");
+    // The conicity caption's remarks only where they apply: the S1002 of the paper has
+    // section joints and a vertical flange back; the measured wheel (a spline) has neither.
+    let caption = |n: &str| {
+        let html = std::fs::read_to_string(root.join(format!("reports/{n}/index.html"))).unwrap();
+        let at = html
+            .find("<strong>conicity.</strong>")
+            .expect("a conicity figure");
+        html[at..at + html[at..].find("</figcaption>").unwrap()].to_string()
+    };
+    let paper = caption("paper");
+    assert!(
+        paper.contains("section joints") && paper.contains("vertical"),
+        "{paper}"
+    );
+    let measured = caption("measured_car7216");
+    assert!(
+        !measured.contains("section joints") && !measured.contains("vertical"),
+        "{measured}"
+    );
     // The paper's own folder is the paper's case; the EN 15302 ones are not.
     let load =
         |n: &str| wheelrail::scene::Scene::load(&root.join(format!("reports/{n}/scene.toml")));

@@ -127,18 +127,14 @@ pub(crate) fn conicity_caption(placement: &Placement) -> String {
         text += &format!("; the wheel is broken {}", breaks.join(" and "));
     }
     text += ". The y axis runs over contact angles from -45° to 74° (tan γ from -1 to 3.5)";
-    let off: Vec<&str> = [
-        leaves(0).then_some("the wheel's curve"),
-        leaves(1).then_some("the rail's curve"),
-    ]
-    .into_iter()
-    .flatten()
-    .collect();
-    if !off.is_empty() {
-        text += &format!(
-            "; triangles at the frame mark where {} leaves it",
-            off.join(" and where ")
-        );
+    let off = match (leaves(0), leaves(1)) {
+        (true, true) => Some("the wheel's and the rail's curves leave"),
+        (true, false) => Some("the wheel's curve leaves"),
+        (false, true) => Some("the rail's curve leaves"),
+        (false, false) => None,
+    };
+    if let Some(off) = off {
+        text += &format!("; triangles at the frame mark where {off} it");
     }
     text + "."
 }
