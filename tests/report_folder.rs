@@ -233,3 +233,49 @@ fn committed_pages_cite_the_paper_only_for_its_case() {
     assert!(load("paper").unwrap().is_paper_case());
     assert!(!load("en15302_e1").unwrap().is_paper_case());
 }
+
+/// The committed tradeoff chart is what `wheelrail tradeoff --replot` draws from the
+/// committed `tradeoff.csv` (its measurements are not re-run: they are timings), and its
+/// SVG names every setting (issue 32: the chart is read without the CSV).
+#[test]
+fn the_committed_tradeoff_chart_redraws_from_its_table_and_names_every_setting() {
+    let root = common::root();
+    let paper = root.join("reports/paper");
+    let out = scratch("tradeoff_replot");
+    std::fs::copy(paper.join("tradeoff.csv"), out.join("tradeoff.csv")).unwrap();
+    let o = bin()
+        .args(["tradeoff", "reports/paper/scene.toml", "--replot", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for file in ["tradeoff.csv", "tradeoff.svg", "tradeoff.png"] {
+        assert!(
+            std::fs::read(out.join(file)).unwrap() == std::fs::read(paper.join(file)).unwrap(),
+            "reports/paper/{file} differs from the chart redrawn from its table: wheelrail tradeoff reports/paper/scene.toml --replot"
+        );
+    }
+    let csv = std::fs::read_to_string(paper.join("tradeoff.csv")).unwrap();
+    let points = wheelrail::tradeoff::chart_points(&csv, "tradeoff.csv").unwrap();
+    assert!(points.len() >= 10, "{points:?}");
+    let svg = std::fs::read_to_string(paper.join("tradeoff.svg")).unwrap();
+    for (i, p) in points.iter().enumerate() {
+        let entry = format!(">\n{}  {}\n<", i + 1, p.label);
+        assert!(
+            svg.contains(&entry),
+            "no key entry {entry:?} in tradeoff.svg"
+        );
+    }
+    assert!(
+        svg.contains(">\nexact (0)\n<"),
+        "the band of exact zeros is named"
+    );
+    // A table that is not a tradeoff.csv is refused, naming it.
+    std::fs::write(out.join("tradeoff.csv"), "a,b\n1,2\n").unwrap();
+    let o = bin()
+        .args(["tradeoff", "reports/paper/scene.toml", "--replot", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    common::assert_clean_failure(&o, 2, &["tradeoff.csv", "not a tradeoff.csv"]);
+}
