@@ -8,7 +8,7 @@ use plotters::prelude::*;
 use super::super::geometry::{AxisMap, Frame};
 use super::super::text::{Align, Place, TextMode, TextSpec, draw_text};
 use super::super::ticks::Ticks;
-use super::super::{Chart, ChartError, drawing_error};
+use super::super::{Chart, ChartError, HBand, drawing_error};
 use super::panel::PanelPlan;
 use super::{AXIS_TITLE_GAP_PX, AXIS_TITLE_PX, Ctx, PxRect, TICK_GAP_PX, TICK_PX};
 
@@ -73,6 +73,14 @@ impl ValueFormatter<f64> for TickAxis {
 /// The fill of a horizontal band: a light grey, between the grid's two greys.
 const BAND: RGBColor = RGBColor(0xE6, 0xE6, 0xE6);
 
+/// The band `b` on the y axis in transformed units, clipped to the frame; `None` where
+/// nothing of it is within the frame.
+fn band_span(b: &HBand, ymap: AxisMap, frame: &Frame) -> Option<(f64, f64)> {
+    let (lo, hi) = (ymap.forward(b.from), ymap.forward(b.to));
+    let (lo, hi) = (lo.min(hi).max(frame.y.0), hi.max(lo).min(frame.y.1));
+    (lo.is_finite() && hi.is_finite() && lo < hi).then_some((lo, hi))
+}
+
 /// The chart's bands in pixel rows `(top, bottom)` of the plot, clipped to the frame, with
 /// their labels.
 fn band_rows<'c, DB: DrawingBackend>(
@@ -85,9 +93,7 @@ fn band_rows<'c, DB: DrawingBackend>(
         .hbands
         .iter()
         .filter_map(|b| {
-            let (lo, hi) = (ymap.forward(b.from), ymap.forward(b.to));
-            let (lo, hi) = (lo.min(hi).max(frame.y.0), hi.max(lo).min(frame.y.1));
-            (lo.is_finite() && hi.is_finite() && lo < hi).then(|| {
+            band_span(b, ymap, frame).map(|(lo, hi)| {
                 let (_, top) = ctx.backend_coord(&(frame.x.0, hi));
                 let (_, bottom) = ctx.backend_coord(&(frame.x.0, lo));
                 (top, bottom, b.label.as_str())
@@ -103,16 +109,16 @@ pub(super) fn draw_hbands<DB: DrawingBackend>(
     ymap: AxisMap,
     frame: &Frame,
 ) -> Result<(), ChartError> {
-    for b in &chart.hbands {
-        let (lo, hi) = (ymap.forward(b.from), ymap.forward(b.to));
-        let (lo, hi) = (lo.min(hi).max(frame.y.0), hi.max(lo).min(frame.y.1));
-        if lo.is_finite() && hi.is_finite() && lo < hi {
-            ctx.draw_series(std::iter::once(Rectangle::new(
-                [(frame.x.0, lo), (frame.x.1, hi)],
-                BAND.filled(),
-            )))
-            .map_err(drawing_error)?;
-        }
+    for (lo, hi) in chart
+        .hbands
+        .iter()
+        .filter_map(|b| band_span(b, ymap, frame))
+    {
+        ctx.draw_series(std::iter::once(Rectangle::new(
+            [(frame.x.0, lo), (frame.x.1, hi)],
+            BAND.filled(),
+        )))
+        .map_err(drawing_error)?;
     }
     Ok(())
 }
