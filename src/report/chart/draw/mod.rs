@@ -1,18 +1,19 @@
 //! Drawing a [`Figure`] on any plotters backend.
 //!
 //! plotters draws the grid, ticks, frame and data; all text (titles, tick labels, axis titles,
-//! legend, marker-line labels) goes through [`text::draw_text`] so bitmaps get correctly spaced
-//! glyphs. The legend is our own so that its box can be placed where it hides no data: an
-//! occupancy grid of everything drawn in the plot (lines, markers, marker lines and their
-//! labels, off-chart marks) finds a free place nearest a corner, and when there is none the
-//! plot gives up room for it, right of it or below the x-axis title, whichever takes the
-//! smaller share of the plot.
-
+//! legend, labels, the figure's key) goes through [`text::draw_text`] so bitmaps get correctly
+//! spaced glyphs. Labels and the legend are our own so that they can be placed where they
+//! hide no data: an occupancy grid of everything drawn in the plot (lines, markers, marker
+//! lines, off-chart marks) finds each label of a marker line a free place beside its line
+//! and each label of a point a free place near it, then the legend a free place nearest a
+//! corner; when there is none for the legend the plot gives up room for it, right of it or
+//! below the x-axis title, whichever takes the smaller share of the plot.
 //!
 //! The parts: [`panel`] lays out one chart (title, plot, axis areas, where the legend goes),
-//! [`axes`] the coordinate system with our own ticks and labels, [`series`] the data,
-//! [`annotations`] marker lines and the marks where data leaves the chart, [`legend`] the
-//! legend box and [`occupancy`] the grid that finds it a free place.
+//! [`axes`] the coordinate system with our own ticks and labels and the shaded bands,
+//! [`series`] the data thinned to its pixels, [`annotations`] marker lines and the marks
+//! where data leaves the chart, [`labels`] the labels of marker lines and points, [`legend`]
+//! the legend box and [`occupancy`] the grid that finds them free places.
 
 mod annotations;
 mod axes;
