@@ -1,5 +1,5 @@
-//! The work a scene asks for, estimated from its keys and profiles before anything runs,
-//! and the budget above which a run needs `--allow-long`.
+//! The work a scene asks for and the bytes it will write, estimated from its keys and
+//! profiles before anything runs, and the budgets above which a run needs `--allow-long`.
 //!
 //! The unit of work is one evaluation of the gap between a wheel point and its rail (tens of
 //! nanoseconds on a current core; `examples/evaluation_counts.rs` counts them per stage).
@@ -15,6 +15,29 @@ use crate::track::Placement;
 /// The largest estimated work a run may take without `--allow-long` (gap evaluations):
 /// 3e8, about 25 s on one core of the development machine, at most a minute on a slow one.
 pub const WORK_BUDGET: f64 = 3e8;
+
+/// The most bytes a run may write without `--allow-long`: 1e8 (100 MB). The tables grow
+/// with the sweep (a 100,001-position sweep with every figure writes 115 MB of CSV); the
+/// charts do not (they are drawn at their resolution).
+pub const WRITE_BUDGET_BYTES: f64 = 1e8;
+
+/// Bytes of one value in a CSV row: 10 significant digits in scientific form with sign,
+/// exponent and separator are 13 to 17 (`-1.234567890e-10,`); a status column counts alike.
+const CSV_BYTES_PER_VALUE: f64 = 15.0;
+/// Values per row of the tables that have one row per position (`outputs::tables`: the
+/// column counts of `rigid.csv`, `quasi_elastic.csv`, `hertz.csv`; `qe_epsilon.csv` has
+/// 4 plus 2 per value of eps). A 100,001-position run measured 418, 315, 226 and 191 (5
+/// values of eps) bytes a row: the estimate errs high by 3 to 19 %.
+const RIGID_VALUES: f64 = 30.0;
+const QUASI_ELASTIC_VALUES: f64 = 25.0;
+const HERTZ_VALUES: f64 = 17.0;
+/// Bytes of the files that do not grow with the sweep: up to four profile tables (90 kB
+/// each at most), the conicity and accuracy tables, the page.
+const FIXED_BYTES: f64 = 5e5;
+/// Bytes of one figure in one format: a PNG of the default size is about 90 kB, an SVG
+/// drawn at its resolution mostly less (the contact map of quasi-elastic patches over
+/// 100,001 positions, the largest, 680 kB).
+const IMAGE_BYTES: f64 = 2e5;
 
 /// Gap evaluations per position and wheel of the default rigid solver, an estimate that
 /// errs high: a position takes a coarse scan of cheap samples and a few exact gaps, and the
@@ -36,23 +59,31 @@ const GAUSS_NODES_PER_PANEL: f64 = 16.0;
 /// pieces cost one gap evaluation.
 const CONICITY_PIECES_PER_EVALUATION: f64 = 25.0;
 
-/// The estimated work of a scene and what drives it.
+/// The estimated work of a scene, the bytes it will write and what drives them.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Estimate {
     /// Estimated gap evaluations.
     pub evaluations: f64,
+    /// Estimated bytes of the files a report of the scene writes (tables, figures, page).
+    pub bytes: f64,
     /// The scene keys that drive the estimate, with their values as text, largest factor
     /// first.
     pub drivers: Vec<(&'static str, String)>,
 }
 
 impl Estimate {
-    /// Whether the estimate is within [`WORK_BUDGET`].
+    /// Whether the estimate is within [`WORK_BUDGET`] and [`WRITE_BUDGET_BYTES`].
     pub fn within_budget(&self) -> bool {
+        self.within_work_budget() && self.bytes <= WRITE_BUDGET_BYTES
+    }
+
+    /// Whether the estimated work is within [`WORK_BUDGET`] (a run that writes no report of
+    /// the scene, such as a fleet's row, counts no bytes).
+    pub fn within_work_budget(&self) -> bool {
         self.evaluations <= WORK_BUDGET
     }
 
-    /// One line for messages: the estimate, the budget and the keys that drive it.
+    /// One line for messages: the estimates, the budgets and the keys that drive them.
     pub fn describe(&self) -> String {
         let drivers: Vec<String> = self
             .drivers
@@ -60,15 +91,19 @@ impl Estimate {
             .map(|(k, v)| format!("{k} = {v}"))
             .collect();
         format!(
-            "estimated {:.2e} gap evaluations (budget {WORK_BUDGET:.0e}, about 25 s on one core), driven by {}",
+            "estimated {:.2e} gap evaluations (budget {WORK_BUDGET:.0e}, about 25 s on one core) and {:.0} MB of files (budget {:.0} MB), driven by {}",
             self.evaluations,
+            (self.bytes / 1e6).ceil(),
+            WRITE_BUDGET_BYTES / 1e6,
             drivers.join(", ")
         )
     }
 }
 
 /// Estimates the work of `scene`: positions × wheels × (rigid iterations + quadrature
-/// nodes of every quasi-elastic pass) + the conicity's amplitudes × pieces. The profiles
+/// nodes of every quasi-elastic pass) + the conicity's amplitudes × pieces; and the bytes
+/// of its report: positions × the values of its per-position tables, the fixed tables,
+/// and each figure in each format. The profiles
 /// come from the run's own `placement` (the profile stage, which every run does first), so
 /// that the knots of splines are counted without reading the files again.
 ///
@@ -83,9 +118,12 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     let stages = pipeline::needed_stages(scene);
     let positions = scene.sweep.len() as f64;
     let mut drivers: Vec<(&'static str, String)> = Vec::new();
+    let images = (scene.figures.len() * scene.formats.len()) as f64;
+    let bytes = written_bytes(scene, &stages) + images * IMAGE_BYTES;
     if !stages.contains(&Stage::Rigid) {
         return Estimate {
             evaluations: 0.0,
+            bytes,
             drivers,
         };
     }
@@ -140,10 +178,39 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
             drivers.push(("conicity.amplitudes_mm", format!("{amplitudes} amplitudes")));
         }
     }
+    if images * IMAGE_BYTES > 0.1 * bytes {
+        drivers.push((
+            "outputs.figures",
+            format!(
+                "{} figures in {} formats",
+                scene.figures.len(),
+                scene.formats.len()
+            ),
+        ));
+    }
     Estimate {
         evaluations,
+        bytes,
         drivers,
     }
+}
+
+/// Bytes of the tables of a run of `stages`, and its page.
+fn written_bytes(scene: &Scene, stages: &[Stage]) -> f64 {
+    let mut values = 0.0;
+    if stages.contains(&Stage::Rigid) {
+        values += RIGID_VALUES;
+    }
+    if stages.contains(&Stage::QuasiElastic) {
+        values += QUASI_ELASTIC_VALUES;
+    }
+    if stages.contains(&Stage::Hertz) {
+        values += HERTZ_VALUES;
+    }
+    if stages.contains(&Stage::EpsilonSensitivity) {
+        values += 4.0 + 2.0 * scene.epsilon_sensitivity_mm.len() as f64;
+    }
+    FIXED_BYTES + scene.sweep().len() as f64 * values * CSV_BYTES_PER_VALUE
 }
 
 /// Quadrature nodes of one quasi-elastic pass, one wheel, one position.

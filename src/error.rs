@@ -79,6 +79,9 @@ pub enum Error {
     /// A chart that cannot be rendered (its name and why).
     #[cfg(feature = "cli")]
     Chart(String, crate::report::ChartError),
+    /// Arguments of `wheelrail hertz` outside what a wheel and rail can be.
+    #[cfg(feature = "cli")]
+    HertzArgs(crate::hertz::cli::RunError),
 }
 
 impl fmt::Display for Error {
@@ -114,6 +117,8 @@ impl fmt::Display for Error {
             Error::Table(e) => write!(f, "internal error building a table: {e}"),
             #[cfg(feature = "cli")]
             Error::Chart(name, e) => write!(f, "figure {name}: {e}"),
+            #[cfg(feature = "cli")]
+            Error::HertzArgs(e) => write!(f, "{e}"),
         }
     }
 }
@@ -159,4 +164,5 @@ from! {
 #[cfg(feature = "cli")]
 from! {
     Table(crate::report::TableError),
+    HertzArgs(crate::hertz::cli::RunError),
 }

@@ -96,6 +96,7 @@ pub mod conicity;
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
+pub mod delimited;
 mod error;
 pub mod fleet;
 // The gap of a wheel over its rail: public for the reference tests' brute-force searches
@@ -108,6 +109,7 @@ mod message;
 #[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
+pub mod plausible;
 pub mod prelude;
 pub mod profile;
 pub mod quasi_elastic;

@@ -300,20 +300,8 @@ fn run_recorded(
                 results.epsilon = Some(e);
             }
             Stage::Hertz => {
-                let contacts = match scene.hertz_contact {
-                    hertz::ContactSource::Rigid => {
-                        let rigid = results.rigid.as_ref().expect("rigid runs before Hertz");
-                        hertz::Contacts::Rigid(rigid)
-                    }
-                    hertz::ContactSource::QuasiElastic => {
-                        let qe = results.quasi_elastic.as_ref();
-                        hertz::Contacts::QuasiElastic(qe.expect("its contacts run first"))
-                    }
-                };
-                let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
-                let h = record.time(stage, progress, || {
-                    hertz::sweep(contacts, scene.wheel_load_n, e_star, &scene.hertz)
-                });
+                let (rigid, qe) = (results.rigid.as_ref(), results.quasi_elastic.as_ref());
+                let h = record.time(stage, progress, || hertz_sweep(scene, rigid, qe));
                 results.hertz = Some(h);
             }
             Stage::EquivalentConicity => {
@@ -331,6 +319,25 @@ fn run_recorded(
         }
     }
     results
+}
+
+/// The Hertz ellipses of the scene's contacts (`[hertz] contact`: the rigid ones or the
+/// quasi-elastic ones, which run before).
+fn hertz_sweep(
+    scene: &Scene,
+    rigid: Option<&Arc<RigidSweep>>,
+    quasi_elastic: Option<&QuasiElasticSweep>,
+) -> hertz::HertzSweep {
+    let contacts = match scene.hertz_contact {
+        hertz::ContactSource::Rigid => {
+            hertz::Contacts::Rigid(rigid.expect("rigid runs before Hertz"))
+        }
+        hertz::ContactSource::QuasiElastic => {
+            hertz::Contacts::QuasiElastic(quasi_elastic.expect("its contacts run first"))
+        }
+    };
+    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+    hertz::sweep(contacts, scene.wheel_load_n, e_star, &scene.hertz)
 }
 
 /// The quasi-elastic search on `rigid` at each of the scene's sensitivity values of eps.

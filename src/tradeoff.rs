@@ -393,20 +393,109 @@ fn errors(reference: &Run, run: &Run) -> Errors {
 }
 
 /// The settings on the Pareto front of (time, error): no other setting is at least as fast
-/// and at least as accurate and better in one of them. Indices into `m`.
+/// and at least as accurate and better in one of them. Indices into `m`, fastest first.
 pub fn pareto_front(m: &[Measurement], error: impl Fn(&Errors) -> f64) -> Vec<usize> {
-    let mut idx: Vec<usize> = (0..m.len()).collect();
-    idx.sort_by(|&a, &b| m[a].median_s.total_cmp(&m[b].median_s));
+    let points: Vec<(f64, f64)> = m.iter().map(|x| (x.median_s, error(&x.errors))).collect();
+    pareto_indices(&points)
+}
+
+/// The Pareto front of `(time, error)` points: indices of those no other point beats in
+/// both, fastest first (errors falling).
+pub fn pareto_indices(points: &[(f64, f64)]) -> Vec<usize> {
+    let mut idx: Vec<usize> = (0..points.len()).collect();
+    idx.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0));
     let mut front = Vec::new();
     let mut best = f64::INFINITY;
     for i in idx {
-        let e = error(&m[i].errors);
+        let e = points[i].1;
         if e < best {
             best = e;
             front.push(i);
         }
     }
     front
+}
+
+/// What the tradeoff chart shows of one setting: its label, median time and the two errors
+/// it plots. From a [`Measurement`], or from a row of `tradeoff.csv` ([`chart_points`]), so
+/// that the chart can be drawn again without measuring again.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChartPoint {
+    /// The setting's label.
+    pub label: String,
+    /// Median run time, ms.
+    pub median_ms: f64,
+    /// Rigid contact position error, mm.
+    pub contact_mm: f64,
+    /// The larger relative error of the semi-axes a and b.
+    pub ellipse_rel: f64,
+}
+
+impl From<&Measurement> for ChartPoint {
+    fn from(m: &Measurement) -> ChartPoint {
+        ChartPoint {
+            label: m.setting.label.clone(),
+            median_ms: 1e3 * m.median_s,
+            contact_mm: m.errors.contact_mm,
+            ellipse_rel: m.errors.a_rel.max(m.errors.b_rel),
+        }
+    }
+}
+
+/// Why a text is no `tradeoff.csv` ([`chart_points`]).
+#[derive(Debug, Clone, PartialEq)]
+pub enum TradeoffCsvError {
+    /// The text is no CSV table (the file, why).
+    Table(String, crate::report::TableError),
+    /// A column the chart needs is missing (the file, the column).
+    NoColumn(String, &'static str),
+}
+
+impl std::fmt::Display for TradeoffCsvError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            TradeoffCsvError::Table(origin, e) => write!(f, "{origin}: {e}"),
+            TradeoffCsvError::NoColumn(origin, name) => {
+                write!(f, "{origin}: no column {name:?}: not a tradeoff.csv")
+            }
+        }
+    }
+}
+
+impl std::error::Error for TradeoffCsvError {}
+
+/// The chart points of a `tradeoff.csv` as `wheelrail tradeoff` writes it.
+///
+/// # Errors
+/// [`TradeoffCsvError`] naming `origin` when the text is no such table (a column missing,
+/// a row without a number where one is needed).
+pub fn chart_points(text: &str, origin: &str) -> Result<Vec<ChartPoint>, TradeoffCsvError> {
+    let table = crate::report::Table::parse_csv(text)
+        .map_err(|e| TradeoffCsvError::Table(origin.to_string(), e))?;
+    let number = |name: &'static str| {
+        table
+            .numeric(name)
+            .ok_or_else(|| TradeoffCsvError::NoColumn(origin.to_string(), name))
+    };
+    let labels = table
+        .text("setting")
+        .ok_or_else(|| TradeoffCsvError::NoColumn(origin.to_string(), "setting"))?;
+    let (median, contact, a, b) = (
+        number("median_ms")?,
+        number("contact_error_mm")?,
+        number("a_rel_error")?,
+        number("b_rel_error")?,
+    );
+    Ok(labels
+        .iter()
+        .enumerate()
+        .map(|(i, label)| ChartPoint {
+            label: label.to_string(),
+            median_ms: median[i],
+            contact_mm: contact[i],
+            ellipse_rel: a[i].max(b[i]),
+        })
+        .collect())
 }
 
 #[cfg(test)]

@@ -1,8 +1,10 @@
 //! Chart layout against the pixels actually drawn: every figure of every committed report
-//! scene (`reports/*/scene.toml`) is rendered once without its legends (laid out but not
-//! drawn) and each legend box must then hold only background: white or the grey of the grid.
-//! Whatever a legend would cover (a curve, a marker, a marker line, a label, an off-chart
-//! mark) shows in those pixels, whichever code decided the placement.
+//! scene (`reports/*/scene.toml`) is rendered once without its legends and labels (laid out
+//! but not drawn) and each legend box and each label box (of marker lines and points) must
+//! then hold only background: white or the grey of the grid. Whatever a legend or a label
+//! would cover (a curve, a marker, a marker line, an off-chart mark) shows in those pixels,
+//! whichever code decided the placement; labels and legends are checked against each
+//! other by their boxes.
 
 use std::path::{Path, PathBuf};
 
@@ -33,12 +35,22 @@ fn ink_inside(pixels: &[u8], width: u32, b: PxBox) -> Vec<(i32, i32)> {
     ink
 }
 
-/// Legends of `figure` that cover ink, as readable messages.
+/// Whether two pixel boxes share a pixel.
+fn overlap(a: PxBox, b: PxBox) -> bool {
+    a.left <= b.right && b.left <= a.right && a.top <= b.bottom && b.top <= a.bottom
+}
+
+/// Legends and labels of `figure` that cover ink or each other, as readable messages.
 fn covered_legends(figure: &Figure) -> Vec<String> {
     let bare = render_rgb(figure, false).unwrap();
     let mut problems = Vec::new();
     for (i, panel) in layout(figure).unwrap().iter().enumerate() {
-        if let Some(b) = panel.legend {
+        let boxes = panel
+            .legend
+            .iter()
+            .map(|b| ("legend", *b))
+            .chain(panel.labels.iter().map(|b| ("label", *b)));
+        for (k, (what, b)) in boxes.clone().enumerate() {
             assert!(b.left >= 0 && b.top >= 0, "{b:?}");
             assert!(
                 b.right < figure.width as i32 && b.bottom < figure.height as i32,
@@ -47,10 +59,15 @@ fn covered_legends(figure: &Figure) -> Vec<String> {
             let ink = ink_inside(&bare, figure.width, b);
             if !ink.is_empty() {
                 problems.push(format!(
-                    "panel {i} legend {b:?} covers {} drawn pixels, first {:?}",
+                    "panel {i} {what} {b:?} covers {} drawn pixels, first {:?}",
                     ink.len(),
                     ink[0]
                 ));
+            }
+            for (other, c) in boxes.clone().skip(k + 1) {
+                if overlap(b, c) {
+                    problems.push(format!("panel {i} {what} {b:?} overlaps {other} {c:?}"));
+                }
             }
         }
     }
@@ -69,28 +86,77 @@ fn report_scenes() -> Vec<PathBuf> {
 }
 
 #[test]
-fn no_legend_of_a_committed_report_covers_data_or_labels() {
+fn no_legend_or_label_of_a_committed_report_covers_data_or_labels() {
     let scenes = report_scenes();
     assert!(scenes.len() >= 7, "{scenes:?}");
-    let mut checked = 0;
+    let (mut legends, mut labels) = (0, 0);
     let mut problems = Vec::new();
     for path in &scenes {
         let scene = Scene::load(path).unwrap();
         let results = pipeline::run(&scene).unwrap();
         for &fig in scene.figures() {
             let figure = outputs::figure(fig, &results).unwrap();
-            checked += layout(&figure)
-                .unwrap()
-                .iter()
-                .filter(|p| p.legend.is_some())
-                .count();
+            for panel in layout(&figure).unwrap() {
+                legends += usize::from(panel.legend.is_some());
+                labels += panel.labels.len();
+            }
             for p in covered_legends(&figure) {
                 problems.push(format!("{} {}: {p}", path.display(), fig.name()));
             }
         }
     }
-    assert!(checked >= 50, "only {checked} legends checked");
+    // The committed tradeoff chart, drawn from its table: a numbered label per point.
+    let csv = root_file("reports/paper/tradeoff.csv");
+    let points = wheelrail::tradeoff::chart_points(&csv, "tradeoff.csv").unwrap();
+    let tradeoff = outputs::tradeoff_chart(&points);
+    for panel in layout(&tradeoff).unwrap() {
+        assert_eq!(panel.labels.len(), points.len(), "a label per point");
+        labels += panel.labels.len();
+    }
+    problems.extend(
+        covered_legends(&tradeoff)
+            .into_iter()
+            .map(|p| format!("tradeoff: {p}")),
+    );
+    assert!(legends >= 50, "only {legends} legends checked");
+    assert!(labels >= 60, "only {labels} labels checked");
     assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+fn root_file(path: &str) -> String {
+    std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(path)).unwrap()
+}
+
+/// Labels of points find a free place near their point, and those of marker lines beside
+/// their line, where curves pass right where the first choice would put them: each label
+/// covers nothing, and the check sees ink where a label is drawn.
+#[test]
+fn labels_move_off_curves_and_the_check_sees_them() {
+    // A curve through the top of the marker line (where its label went before) and a
+    // cluster of points on one row.
+    let curve: Vec<(f64, f64)> = (0..=200)
+        .map(|i| {
+            let x = f64::from(i) / 20.0;
+            (x, 9.6 - 0.02 * (x - 3.0).powi(2))
+        })
+        .collect();
+    let cluster: Vec<(f64, f64)> = (0..8).map(|i| (6.0 + 0.08 * f64::from(i), 2.0)).collect();
+    let mut chart = Chart::new("t", "x (mm)", "y (mm)")
+        .series(Series::line("curve", curve))
+        .series(Series::markers("cluster", cluster.clone()))
+        .y_range(0.0, 10.0)
+        .vline(3.0, "marker line");
+    for (i, &(x, y)) in cluster.iter().enumerate() {
+        chart = chart.label(x, y, format!("{}", i + 1));
+    }
+    let figure = Figure::single(chart);
+    let panel = &layout(&figure).unwrap()[0];
+    assert_eq!(panel.labels.len(), 9);
+    assert_eq!(covered_legends(&figure), Vec::<String>::new());
+    let drawn = render_rgb(&figure, true).unwrap();
+    for b in &panel.labels {
+        assert!(!ink_inside(&drawn, figure.width, *b).is_empty(), "{b:?}");
+    }
 }
 
 /// The check sees ink: drawn with its legends, a figure's legend boxes are not blank.

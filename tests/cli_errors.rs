@@ -137,6 +137,55 @@ fn hertz_takes_negative_exponents_and_explains_a_non_hertzian_case() {
     assert!(!out.contains("not Hertzian"), "{out}");
 }
 
+/// The inputs of issue 32 that `wheelrail hertz` took: radii in metres, a modulus in MPa,
+/// an auxetic and an incompressible Poisson's ratio. Each is refused (exit 2, nothing on
+/// standard output) naming the flag, the range of the scene's key and the likely unit.
+#[test]
+fn hertz_refuses_what_no_wheel_and_rail_can_be_naming_the_unit() {
+    let flat_a_b = ["--A", "0.001", "--B", "0.002", "--load", "70000"];
+    let cases: [(Vec<&str>, &[&str]); 5] = [
+        (
+            vec![
+                "--r1x", "0.46", "--r1y", "inf", "--r2x", "inf", "--r2y", "0.3", "--load", "70",
+            ],
+            &[
+                "--r1x: 0.46 mm is not a principal radius",
+                "expected |r| >= 1 mm",
+                "likely a unit mistake: 0.46 m = 460 mm",
+            ],
+        ),
+        (
+            [&flat_a_b[..], &["--young-gpa", "210000"]].concat(),
+            &[
+                "--young-gpa: 210000 GPa",
+                "expected 1 to 1000 GPa",
+                "likely a unit mistake: 210000 MPa = 210 GPa",
+            ],
+        ),
+        (
+            [&flat_a_b[..], &["--poisson", "-0.5"]].concat(),
+            &["--poisson: -0.5", "expected 0 <= poisson < 0.5"],
+        ),
+        (
+            [&flat_a_b[..], &["--poisson", "0.5"]].concat(),
+            &["--poisson: 0.5", "expected 0 <= poisson < 0.5"],
+        ),
+        (
+            vec!["--A", "1.087", "--B", "1.667", "--load", "70000"],
+            &[
+                "--A: 1.087 1/mm",
+                "likely a unit mistake: 1.087 1/m = 0.001087 1/mm",
+            ],
+        ),
+    ];
+    for (args, must) in cases {
+        let o = bin().arg("hertz").args(&args).output().unwrap();
+        assert_clean_failure(&o, 2, must);
+        assert!(o.stdout.is_empty(), "{args:?} printed a row");
+        assert!(!stderr(&o).contains("(-1, 0.5)"), "{}", stderr(&o));
+    }
+}
+
 #[test]
 fn help_texts_read_as_text() {
     let o = bin().args(["hertz", "--help"]).output().unwrap();

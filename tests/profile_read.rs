@@ -788,3 +788,46 @@ proptest! {
         }
     }
 }
+
+/// A real wheel file (EN 15302's R-UIC519A) as a European spreadsheet exports it:
+/// semicolons with decimal commas, tabs with decimal commas, semicolons with points, each
+/// read to the same points as the file with commas (issue 32: `s_mm;F_mm` used to give
+/// "missing value in column 2").
+#[test]
+fn spreadsheet_exports_with_semicolons_and_tabs_read_as_the_csv() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/en15302/R-UIC519A.csv");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let want = parse_str(&text, ProfileFormat::Csv, Wheel, "commas.csv")
+        .unwrap()
+        .columns();
+    let export = |separator: &str, decimal: &str| -> String {
+        text.lines()
+            .map(|l| {
+                if l.starts_with('#') {
+                    l.to_string()
+                } else {
+                    l.split(',')
+                        .map(|f| f.replace('.', decimal))
+                        .collect::<Vec<_>>()
+                        .join(separator)
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\r\n")
+    };
+    for (separator, decimal) in [(";", ","), ("\t", ","), (";", ".")] {
+        let exported = export(separator, decimal);
+        let got = parse_str(&exported, ProfileFormat::Csv, Wheel, "export.csv")
+            .unwrap_or_else(|e| panic!("{separator:?} {decimal:?}: {e}"))
+            .columns();
+        assert_eq!(got, want, "{separator:?} with {decimal:?}");
+    }
+    // A file whose rows switch to semicolons under a header of commas is refused naming both.
+    let mixed = text.replacen("\n-69.86500,", "\n-69.86500;", 1);
+    let e = parse_str(&mixed, ProfileFormat::Csv, Wheel, "mixed.csv").unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("separates its fields by semicolons, but the header by commas"),
+        "{e}"
+    );
+}

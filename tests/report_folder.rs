@@ -170,3 +170,112 @@ fn the_committed_reports_regenerate() {
     }
     assert!(compared > 100, "only {compared} files compared");
 }
+
+/// The committed pages describe their own scene (issue 32): "Paper Fig." only where the
+/// scene is the paper's case, each profile's file named without `..` segments and its hash
+/// given once, and no chart quoting the capped slope of a vertical face (-1e6) as data.
+#[test]
+fn committed_pages_cite_the_paper_only_for_its_case() {
+    let root = common::root();
+    let mut pages = 0;
+    for entry in std::fs::read_dir(root.join("reports")).unwrap() {
+        let dir = entry.unwrap().path();
+        let (scene, page) = (dir.join("scene.toml"), dir.join("index.html"));
+        let name = dir.file_name().unwrap().to_string_lossy().into_owned();
+        if !scene.exists() || !page.exists() || name == "fleet" {
+            continue; // the fleet's page has no figure of the paper
+        }
+        let paper_case = wheelrail::scene::Scene::load(&scene)
+            .unwrap()
+            .is_paper_case();
+        let html = std::fs::read_to_string(&page).unwrap();
+        assert_eq!(
+            html.contains("Paper Fig."),
+            paper_case,
+            "reports/{name}: paper case {paper_case}"
+        );
+        for row in html.lines().filter(|l| l.contains("sha256")) {
+            assert_eq!(row.matches("sha256").count(), 1, "reports/{name}: {row}");
+            assert!(!row.contains("/../"), "reports/{name}: {row}");
+        }
+        for file in std::fs::read_dir(&dir).unwrap() {
+            let path = file.unwrap().path();
+            if path.extension().is_some_and(|e| e == "svg") {
+                let svg = std::fs::read_to_string(&path).unwrap();
+                assert!(!svg.contains("-1e6"), "{}", path.display());
+            }
+        }
+        pages += 1;
+    }
+    assert!(pages >= 7, "only {pages} pages");
+    // The conicity caption's remarks only where they apply: the S1002 of the paper has
+    // section joints and a vertical flange back; the measured wheel (a spline) has neither.
+    let caption = |n: &str| {
+        let html = std::fs::read_to_string(root.join(format!("reports/{n}/index.html"))).unwrap();
+        let at = html
+            .find("<strong>conicity.</strong>")
+            .expect("a conicity figure");
+        html[at..at + html[at..].find("</figcaption>").unwrap()].to_string()
+    };
+    let paper = caption("paper");
+    assert!(
+        paper.contains("section joints") && paper.contains("vertical"),
+        "{paper}"
+    );
+    let measured = caption("measured_car7216");
+    assert!(
+        !measured.contains("section joints") && !measured.contains("vertical"),
+        "{measured}"
+    );
+    // The paper's own folder is the paper's case; the EN 15302 ones are not.
+    let load =
+        |n: &str| wheelrail::scene::Scene::load(&root.join(format!("reports/{n}/scene.toml")));
+    assert!(load("paper").unwrap().is_paper_case());
+    assert!(!load("en15302_e1").unwrap().is_paper_case());
+}
+
+/// The committed tradeoff chart is what `wheelrail tradeoff --replot` draws from the
+/// committed `tradeoff.csv` (its measurements are not re-run: they are timings), and its
+/// SVG names every setting (issue 32: the chart is read without the CSV).
+#[test]
+fn the_committed_tradeoff_chart_redraws_from_its_table_and_names_every_setting() {
+    let root = common::root();
+    let paper = root.join("reports/paper");
+    let out = scratch("tradeoff_replot");
+    std::fs::copy(paper.join("tradeoff.csv"), out.join("tradeoff.csv")).unwrap();
+    let o = bin()
+        .args(["tradeoff", "reports/paper/scene.toml", "--replot", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for file in ["tradeoff.csv", "tradeoff.svg", "tradeoff.png"] {
+        assert!(
+            std::fs::read(out.join(file)).unwrap() == std::fs::read(paper.join(file)).unwrap(),
+            "reports/paper/{file} differs from the chart redrawn from its table: wheelrail tradeoff reports/paper/scene.toml --replot"
+        );
+    }
+    let csv = std::fs::read_to_string(paper.join("tradeoff.csv")).unwrap();
+    let points = wheelrail::tradeoff::chart_points(&csv, "tradeoff.csv").unwrap();
+    assert!(points.len() >= 10, "{points:?}");
+    let svg = std::fs::read_to_string(paper.join("tradeoff.svg")).unwrap();
+    for (i, p) in points.iter().enumerate() {
+        let entry = format!(">\n{}  {}\n<", i + 1, p.label);
+        assert!(
+            svg.contains(&entry),
+            "no key entry {entry:?} in tradeoff.svg"
+        );
+    }
+    assert!(
+        svg.contains(">\nexact (0)\n<"),
+        "the band of exact zeros is named"
+    );
+    // A table that is not a tradeoff.csv is refused, naming it.
+    std::fs::write(out.join("tradeoff.csv"), "a,b\n1,2\n").unwrap();
+    let o = bin()
+        .args(["tradeoff", "reports/paper/scene.toml", "--replot", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    common::assert_clean_failure(&o, 2, &["tradeoff.csv", "not a tradeoff.csv"]);
+}

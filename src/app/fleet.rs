@@ -39,7 +39,8 @@ pub struct FleetArgs {
     #[arg(long, value_name = "K/N")]
     pub shard: Option<String>,
     /// Run a template whose estimated work per pair exceeds the budget of a report
-    /// (`cost::WORK_BUDGET`).
+    /// (`cost::WORK_BUDGET`; with --reports also the bytes of each report,
+    /// `cost::WRITE_BUDGET_BYTES`).
     #[arg(long)]
     pub allow_long: bool,
     /// Also write each pair's full report (the template's figures) into DIR/ID/ (ID the row's id).
@@ -97,11 +98,22 @@ fn items(args: &FleetArgs) -> Result<(Vec<Item>, Inputs), Error> {
 }
 
 /// Each pair computes at most what a report of the template would: refused as a report
-/// would be (estimated on the template's own profiles, when they can be placed).
-fn within_budget(fleet: &Fleet, template_path: &str, allow_long: bool) -> Result<(), Error> {
+/// would be (estimated on the template's own profiles, when they can be placed), its bytes
+/// counted only when each pair writes its `reports`.
+fn within_budget(
+    fleet: &Fleet,
+    template_path: &str,
+    allow_long: bool,
+    reports: bool,
+) -> Result<(), Error> {
     if let Ok(placement) = crate::pipeline::place(fleet.template()) {
         let estimate = crate::cost::estimate(fleet.template(), &placement);
-        if !estimate.within_budget() && !allow_long {
+        let within = if reports {
+            estimate.within_budget()
+        } else {
+            estimate.within_work_budget()
+        };
+        if !within && !allow_long {
             return Err(Error::WorkBudget {
                 scene: format!("{template_path}: each pair"),
                 estimate: estimate.describe(),
@@ -136,7 +148,7 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
     let (items, inputs) = items(args)?;
     let template_path = args.scene.display().to_string();
     let fleet = Fleet::new(template, inputs, &items, args.reports)?;
-    within_budget(&fleet, &template_path, args.allow_long)?;
+    within_budget(&fleet, &template_path, args.allow_long, args.reports)?;
     let dir = &args.out;
     output_folder(dir)?;
     let partial = dir.join(PARTIAL_CSV);

@@ -56,8 +56,8 @@ pub enum Command {
         /// Print the stages run and their times to stderr.
         #[arg(long)]
         timings: bool,
-        /// Run scenes whose estimated work exceeds the budget (`cost::WORK_BUDGET`),
-        /// printing each stage as it runs.
+        /// Run scenes whose estimated work or output exceeds its budget
+        /// (`cost::WORK_BUDGET`, `cost::WRITE_BUDGET_BYTES`), printing each stage as it runs.
         #[arg(long)]
         allow_long: bool,
     },
@@ -114,6 +114,10 @@ pub enum Command {
         /// warm-up round (the median and the fastest and slowest run are reported).
         #[arg(long, default_value_t = 5)]
         repeats: usize,
+        /// Measure nothing: draw the chart again from the output folder's tradeoff.csv (after
+        /// a change of the chart, keeping the measurements).
+        #[arg(long, conflicts_with = "repeats")]
+        replot: bool,
     },
 }
 
@@ -170,9 +174,14 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             scene,
             out,
             repeats,
+            replot,
         }) => {
             let scene = scene.unwrap_or_else(|| PathBuf::from(PAPER_SCENE));
-            tradeoff(&scene, out.as_deref(), repeats)
+            if replot {
+                tradeoff_replot(&scene, out.as_deref())
+            } else {
+                tradeoff(&scene, out.as_deref(), repeats)
+            }
         }
         Some(Command::Conicity {
             delta_r,
@@ -353,6 +362,27 @@ pub fn golden_policy() -> TolerancePolicy {
     .key_column("y_ws_mm")
 }
 
+/// `wheelrail tradeoff --replot`: the chart drawn again from the folder's `tradeoff.csv`,
+/// which is written back as it was (the study's files are one group of the folder).
+fn tradeoff_replot(scene_path: &Path, out: Option<&Path>) -> Result<ExitCode, Error> {
+    let scene = Scene::load(scene_path)?;
+    let dir = out.map_or_else(
+        || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
+        Path::to_path_buf,
+    );
+    let path = dir.join("tradeoff.csv");
+    let csv = std::fs::read_to_string(&path).map_err(|source| Error::Io {
+        path: path.clone(),
+        source,
+    })?;
+    let points = crate::tradeoff::chart_points(&csv, &path.display().to_string())
+        .map_err(|e| Error::Usage(format!("--replot: {e}")))?;
+    let (files, _) = outputs::tradeoff_chart_files(csv, &points, &scene.formats)?;
+    write_folder(&dir, Group::Tradeoff, &files)?;
+    eprintln!("redrew the chart of {}", path.display());
+    Ok(ExitCode::SUCCESS)
+}
+
 fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<ExitCode, Error> {
     if !(1..=1000).contains(&repeats) {
         return Err(Error::Usage(format!(
@@ -406,8 +436,9 @@ fn print_progress(stage: pipeline::Stage, seconds: Option<f64>) {
     }
 }
 
-/// Refuses a scene whose estimated work exceeds [`crate::cost::WORK_BUDGET`] unless
-/// `allow_long`; returns whether to show progress (a long run that was allowed).
+/// Refuses a scene whose estimated work or bytes exceed [`crate::cost::WORK_BUDGET`] or
+/// [`crate::cost::WRITE_BUDGET_BYTES`] unless `allow_long`; returns whether to show
+/// progress (a long run that was allowed).
 fn within_budget(
     scene: &Scene,
     placement: &crate::track::Placement,

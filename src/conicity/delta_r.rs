@@ -58,6 +58,9 @@ pub struct DeltaRCsvError {
     pub line: Option<usize>,
     /// What is wrong.
     pub problem: CsvProblem,
+    /// Where the row separates its fields otherwise than the header: `(the row's
+    /// separator, the header's)`, in words (`"semicolons"`).
+    pub mixed: Option<(&'static str, &'static str)>,
 }
 
 /// What is wrong with a Δr table's text.
@@ -97,7 +100,7 @@ impl fmt::Display for DeltaRCsvError {
         match &self.problem {
             CsvProblem::NoHeader(line) => write!(
                 f,
-                "expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, found {line:?}"
+                "expected a header with columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`, separated by commas, semicolons or tabs, found {line:?}"
             ),
             CsvProblem::NoValue(column, line) => {
                 write!(f, "no value in column {column} in {line:?}")
@@ -120,6 +123,13 @@ impl fmt::Display for DeltaRCsvError {
             ),
             CsvProblem::NonFinite => f.write_str("value not finite"),
             CsvProblem::Table(e) => write!(f, "{e}"),
+        }?;
+        match self.mixed {
+            Some((row, header)) => write!(
+                f,
+                " (this row separates its fields by {row}, the header by {header}: a file takes one separator)"
+            ),
+            None => Ok(()),
         }
     }
 }
@@ -189,11 +199,15 @@ impl DeltaR {
 
     /// Parses a CSV table holding the columns `y_mm` (or `y_ws_mm`, as in `rigid.csv`) and
     /// `delta_r_mm`, found by their header names; `#` comments and blank lines are skipped,
-    /// other columns ignored.
+    /// other columns ignored. Fields are separated by commas, semicolons or tabs, as the
+    /// header's are ([`crate::delimited::Separator`]); with semicolons or tabs a number may
+    /// have a decimal comma.
     ///
     /// # Errors
-    /// [`DeltaRCsvError`], naming `origin` and the line.
+    /// [`DeltaRCsvError`], naming `origin` and the line (and the separators, where a row
+    /// holds another than its header).
     pub fn parse_csv(text: &str, origin: &str) -> Result<DeltaR, DeltaRCsvError> {
+        let separator = crate::delimited::Separator::of_text(text);
         let mut y = Vec::new();
         let mut dr = Vec::new();
         let mut lines = Vec::new();
@@ -202,14 +216,15 @@ impl DeltaR {
             origin: origin.to_string(),
             line,
             problem,
+            mixed: None,
         };
         for (k, raw) in text.lines().enumerate() {
             let line_no = k + 1;
-            let line = raw.trim();
-            if line.is_empty() || line.starts_with('#') {
+            let line = raw.trim_matches(|c: char| c.is_whitespace() && c != separator.char());
+            if line.trim().is_empty() || line.starts_with('#') {
                 continue;
             }
-            let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+            let cells: Vec<&str> = line.split(separator.char()).map(str::trim).collect();
             let Some((cy, cd)) = columns else {
                 let find = |names: &[&str]| cells.iter().position(|c| names.contains(c));
                 match (find(&["y_mm", "y_ws_mm"]), find(&["delta_r_mm"])) {
@@ -218,14 +233,22 @@ impl DeltaR {
                 }
                 continue;
             };
+            let mixed = separator
+                .other_in(line)
+                .map(|found| (found.plural(), separator.plural()));
             let cell = |i: usize, column: &'static str| -> Result<f64, DeltaRCsvError> {
                 let at = |problem| error(Some(line_no), problem);
-                let text = cells
-                    .get(i)
-                    .ok_or_else(|| at(CsvProblem::NoValue(column, line.into())))?;
-                let v: f64 = text
+                let text = cells.get(i).ok_or_else(|| DeltaRCsvError {
+                    mixed,
+                    ..at(CsvProblem::NoValue(column, line.into()))
+                })?;
+                let v: f64 = separator
+                    .number_text(text)
                     .parse()
-                    .map_err(|_| at(CsvProblem::NotANumber(column, text.to_string())))?;
+                    .map_err(|_| DeltaRCsvError {
+                        mixed,
+                        ..at(CsvProblem::NotANumber(column, text.to_string()))
+                    })?;
                 if v.is_finite() {
                     Ok(v)
                 } else {
@@ -351,5 +374,36 @@ mod tests {
         nearer[2] = -1.5;
         let d = DeltaR::new(nearer, dr).unwrap();
         assert_eq!(d.equilibrium(), Some((-1.5, -1.5)));
+    }
+
+    /// A Δr table exported with semicolons or tabs (decimal commas or points) reads as the
+    /// one with commas; a row with another separator than its header is named so.
+    #[test]
+    fn semicolons_and_tabs_read_as_commas() {
+        let commas = "# rigid\ny_mm,delta_r_mm\n-1,-0.25\n0,0\n1.5,0.375\n";
+        let want = DeltaR::parse_csv(commas, "c.csv").unwrap();
+        for text in [
+            "# rigid\ny_mm;delta_r_mm\n-1;-0,25\n0;0\n1,5;0.375\n",
+            "# rigid\r\ny_mm\tdelta_r_mm\r\n-1\t-0,25\r\n0\t0\r\n1.5\t0.375\r\n",
+        ] {
+            let got = DeltaR::parse_csv(text, "e.csv").unwrap();
+            assert_eq!(
+                got.points().collect::<Vec<_>>(),
+                want.points().collect::<Vec<_>>(),
+                "{text:?}"
+            );
+        }
+        let e = DeltaR::parse_csv("y_mm;delta_r_mm\n-1;0\n0.5,0.1\n", "e.csv")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("e.csv:3:")
+                && e.contains("this row separates its fields by commas, the header by semicolons"),
+            "{e}"
+        );
+        let e = DeltaR::parse_csv("y_mm,delta_r_mm\n-1;0\n", "e.csv")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("by semicolons, the header by commas"), "{e}");
     }
 }

@@ -247,7 +247,8 @@ impl std::error::Error for FleetError {}
 
 /// Reads a pairs file: CSV with the columns `id,left_wheel,right_wheel` and optionally
 /// `left_rail,right_rail` (both or neither), `#` comment lines allowed; paths relative to
-/// `dir` (the file's folder). A row with both rail cells empty keeps the template's rails.
+/// `dir` (the file's folder). Fields are separated by commas, semicolons or tabs, as the
+/// header's are ([`crate::delimited::Separator::of_text`]). A row with both rail cells empty keeps the template's rails.
 /// `origin` names the file in messages.
 ///
 /// # Errors
@@ -271,6 +272,7 @@ pub fn parse_pairs(
 ) -> Result<(Vec<Item>, Inputs), FleetError> {
     let mut reader = csv::ReaderBuilder::new()
         .comment(Some(b'#'))
+        .delimiter(crate::delimited::Separator::of_text(text).byte())
         .trim(csv::Trim::All)
         .flexible(false)
         .from_reader(text.as_bytes());
@@ -435,6 +437,23 @@ mod tests {
             items[1].rails,
             Some([PathBuf::from("d/r.ban"), PathBuf::from("d/s.ban")])
         );
+    }
+
+    /// A spreadsheet's export with semicolons or tabs reads as one with commas.
+    #[test]
+    fn pairs_files_take_semicolons_and_tabs() {
+        let commas = parse_pairs(
+            "id,left_wheel,right_wheel\nws1,a.whl,b.whl\n",
+            "p.csv",
+            Path::new("d"),
+        );
+        for sep in [";", "\t"] {
+            let text = format!(
+                "# export\nid{sep}left_wheel{sep}right_wheel\r\nws1{sep}a.whl{sep}b.whl\r\n"
+            );
+            let other = parse_pairs(&text, "p.csv", Path::new("d"));
+            assert_eq!(other, commas, "{text:?}");
+        }
     }
 
     #[test]

@@ -23,13 +23,18 @@
 //! to standard error), and the exit code is 0. This follows
 //! the crate's CSV convention (a row that could not be computed carries NaN and a status; it
 //! is never dropped) and lets a script loop over cases without treating geometry as failure.
-//! Invalid input (non-positive load, Poisson's ratio out of range, a zero radius, ...) is an
-//! error.
+//! Input outside what a wheel and a rail can be is an error naming the flag, the range and
+//! the likely unit mistake: the ranges are those of the scene's keys
+//! ([`crate::plausible`]: loads 1 N to 1 MN, `E` 1 to 1000 GPa, `0 <= poisson < 0.5`), and
+//! radii of at least 1 mm and curvatures of at most 1/mm in magnitude (a smaller radius or a
+//! larger curvature reads as metres).
 
 use super::{
     Contact, EllipseMethod, HertzError, Material, PrincipalCurvatures, effective_modulus, ellipse,
     relative_curvatures,
 };
+use crate::plausible::{self, Implausible, Range};
+use std::fmt;
 
 /// Arguments of `wheelrail hertz`.
 #[derive(Debug, Clone, PartialEq, clap::Args)]
@@ -98,6 +103,44 @@ pub struct Solved {
 /// MPa per GPa: the one unit conversion of this command.
 const MPA_PER_GPA: f64 = 1e3;
 
+/// Why [`run`] refused its arguments.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RunError {
+    /// An argument is outside what a wheel and a rail can be.
+    Implausible {
+        /// The flag, as typed (`--young-gpa`).
+        flag: &'static str,
+        /// The value and its range.
+        problem: Implausible,
+    },
+    /// The Hertz solution itself failed ([`HertzError::NonFiniteResult`]).
+    Hertz(HertzError),
+}
+
+impl fmt::Display for RunError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RunError::Implausible { flag, problem } => write!(f, "{flag}: {problem}"),
+            RunError::Hertz(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for RunError {}
+
+impl From<HertzError> for RunError {
+    fn from(e: HertzError) -> Self {
+        RunError::Hertz(e)
+    }
+}
+
+/// `value` of `flag` checked against `range`.
+fn checked(flag: &'static str, range: &'static Range, value: f64) -> Result<f64, RunError> {
+    range
+        .check(value)
+        .map_err(|problem| RunError::Implausible { flag, problem })
+}
+
 /// Solves the case described by `args` and returns the text to print (header and one row,
 /// newline-terminated) and, for a non-Hertzian case, the reason.
 ///
@@ -107,9 +150,10 @@ const MPA_PER_GPA: f64 = 1e3;
 ///
 /// # Errors
 ///
-/// The [`HertzError`] of [`Material::new`] or [`ellipse`] for invalid input,
-/// [`HertzError::ZeroRadius`] for a radius of 0, [`HertzError::NonFinite`] for a NaN radius.
-/// A non-Hertzian geometry is **not** an error (see the module docs).
+/// [`RunError::Implausible`] for an argument outside its range in [`crate::plausible`]
+/// (a radius left out by a library caller is NaN, and refused so), [`RunError::Hertz`] when
+/// the solution overflows. A non-Hertzian geometry is **not** an error (see the module
+/// docs).
 ///
 /// # Example
 ///
@@ -125,36 +169,39 @@ const MPA_PER_GPA: f64 = 1e3;
 /// let out = run(&cli.hertz)?.csv;
 /// assert!(out.starts_with("a_mm,b_mm,p0_MPa,approach_mm,e,method,iterations,stop\n"));
 /// assert!(out.lines().nth(1).unwrap().ends_with(",exact,0,converged"));
-/// # Ok::<(), wheelrail::hertz::HertzError>(())
+/// // Radii in metres are refused, naming the flag and the likely mistake.
+/// let metres = Cli::parse_from(["hertz", "--r1x", "0.46", "--r1y", "inf", "--r2x", "inf", "--r2y", "0.3", "--load", "7e4"]);
+/// let e = run(&metres.hertz).unwrap_err().to_string();
+/// assert!(e.starts_with("--r1x: 0.46 mm is not") && e.ends_with("0.46 m = 460 mm"), "{e}");
+/// # Ok::<(), wheelrail::hertz::cli::RunError>(())
 /// ```
-pub fn run(args: &HertzArgs) -> Result<Solved, HertzError> {
-    let material = Material::new(args.young_gpa * MPA_PER_GPA, args.poisson)?;
+pub fn run(args: &HertzArgs) -> Result<Solved, RunError> {
+    let load = checked("--load", &plausible::NORMAL_LOAD_N, args.load)?;
+    let young_gpa = checked("--young-gpa", &plausible::YOUNG_GPA, args.young_gpa)?;
+    let poisson = checked("--poisson", &plausible::POISSON, args.poisson)?;
+    let material = Material::new(young_gpa * MPA_PER_GPA, poisson)?;
     let e_star = effective_modulus(&material, &material);
     let (a, b) = match (args.a, args.b) {
-        (Some(a), Some(b)) => (a, b),
+        (Some(a), Some(b)) => (
+            checked("--A", &plausible::CURVATURE_PER_MM, a)?,
+            checked("--B", &plausible::CURVATURE_PER_MM, b)?,
+        ),
         _ => {
             // clap guarantees all four radii when A and B are absent; a library caller that
-            // builds HertzArgs by hand and leaves one out gets NaN, reported as NonFinite.
-            let curvature = |quantity: &'static str, r: Option<f64>| -> Result<f64, HertzError> {
-                let r = r.unwrap_or(f64::NAN);
-                if r.is_nan() {
-                    return Err(HertzError::NonFinite { quantity, value: r });
-                }
-                if r == 0.0 {
-                    return Err(HertzError::ZeroRadius { quantity });
-                }
-                Ok(1.0 / r)
+            // builds HertzArgs by hand and leaves one out gets NaN, which is refused.
+            let curvature = |flag: &'static str, r: Option<f64>| -> Result<f64, RunError> {
+                Ok(1.0 / checked(flag, &plausible::RADIUS_MM, r.unwrap_or(f64::NAN))?)
             };
             let k = PrincipalCurvatures {
-                wheel_rolling: curvature("r1x", args.r1x)?,
-                wheel_lateral: curvature("r1y", args.r1y)?,
-                rail_rolling: curvature("r2x", args.r2x)?,
-                rail_lateral: curvature("r2y", args.r2y)?,
+                wheel_rolling: curvature("--r1x", args.r1x)?,
+                wheel_lateral: curvature("--r1y", args.r1y)?,
+                rail_rolling: curvature("--r2x", args.r2x)?,
+                rail_lateral: curvature("--r2y", args.r2y)?,
             };
             relative_curvatures(&k, 0.0)
         }
     };
-    let (row, note) = match ellipse(a, b, args.load, e_star, args.method)? {
+    let (row, note) = match ellipse(a, b, load, e_star, args.method)? {
         Contact::Hertzian(c) => (
             format!(
                 "{:e},{:e},{:e},{:e},{:e},{},{},{}",
@@ -295,26 +342,61 @@ mod tests {
         );
     }
 
+    /// The flag and the message of `args`' refusal.
+    fn refusal(args: &[&str]) -> (&'static str, String) {
+        match run(&parse(args).unwrap()) {
+            Err(RunError::Implausible { flag, problem }) => (flag, problem.to_string()),
+            other => panic!("{args:?} gave {other:?}"),
+        }
+    }
+
     #[test]
-    fn invalid_inputs_are_errors() {
-        let zero_radius = parse(&[
-            "--r1x", "0", "--r1y", "inf", "--r2x", "inf", "--r2y", "300", "--load", "1",
-        ])
-        .unwrap();
+    fn implausible_inputs_name_their_flag_and_range() {
+        let radii = |r1x: &'static str| {
+            [
+                "--r1x", r1x, "--r1y", "inf", "--r2x", "inf", "--r2y", "300", "--load", "1",
+            ]
+        };
+        let (flag, m) = refusal(&radii("0"));
+        assert_eq!(flag, "--r1x");
+        assert!(m.starts_with("0 mm is not a principal radius"), "{m}");
+        let (flag, m) = refusal(&["--A", "1", "--B", "1", "--load", "-1"]);
+        assert_eq!(flag, "--load");
+        assert!(m.contains("expected 1 to 1000000 N"), "{m}");
+        let (flag, m) = refusal(&["--A", "0.001", "--B", "2.5", "--load", "1"]);
+        assert_eq!(flag, "--B");
+        assert!(m.ends_with("2.5 1/m = 0.0025 1/mm"), "{m}");
+    }
+
+    /// `--poisson`, `--young-gpa` and `--load` get the verdict and the words of the scene's
+    /// keys (one table, `crate::plausible`).
+    #[test]
+    fn the_scene_and_the_command_refuse_alike() {
+        use crate::scene::{Scene, SceneError};
+        let scene_message = |toml: &str| match Scene::from_toml(toml, "t.toml", ".".as_ref()) {
+            Err(SceneError::Invalid { message, .. }) => message,
+            other => panic!("{toml}: {other:?}"),
+        };
+        let base = ["--A", "0.001", "--B", "0.002", "--load", "7e4"];
+        for (flag, value, toml) in [
+            ("--poisson", "0.5", "[material]\npoisson = 0.5"),
+            ("--poisson", "-0.5", "[material]\npoisson = -0.5"),
+            ("--young-gpa", "210000", "[material]\nyoung_GPa = 210000.0"),
+            ("--young-gpa", "0.5", "[material]\nyoung_GPa = 0.5"),
+        ] {
+            let mut args = base.to_vec();
+            args.extend([flag, value]);
+            let (f, m) = refusal(&args);
+            assert_eq!(f, flag);
+            assert_eq!(m, scene_message(toml));
+        }
+        // The load in N against the scene's kN: the same range, each in its unit.
+        let (_, m) = refusal(&["--A", "0.001", "--B", "0.002", "--load", "2e6"]);
+        assert_eq!(m, "2000000 N is not a wheel load; expected 1 to 1000000 N");
         assert_eq!(
-            run(&zero_radius),
-            Err(HertzError::ZeroRadius { quantity: "r1x" })
+            scene_message("[load]\nwheel_load_kN = 2000.0"),
+            "2000 kN is not a wheel load; expected 0.001 to 1000 kN; likely a unit mistake: 2000 N = 2 kN"
         );
-        let negative_load = parse(&["--A", "1", "--B", "1", "--load", "-1"]).unwrap();
-        assert!(matches!(
-            run(&negative_load),
-            Err(HertzError::NonPositiveLoad { .. })
-        ));
-        let bad_poisson = parse(&["--A", "1", "--B", "1", "--load", "1", "--poisson", "0.5"]);
-        assert!(matches!(
-            run(&bad_poisson.unwrap()),
-            Err(HertzError::PoissonOutOfRange { .. })
-        ));
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //!
 //! EN 15313 (in-service wheelset maintenance) and UIC 510-2 measure a wheel's flange from
 //! two references: the **inner face** of the wheel and the **taping line** (the measuring
-//! circle), 70 mm from the inner face ([`TAPING_LINE_FROM_INNER_FACE_MM`]; `s = 0` of the
+//! circle), 70 mm from the inner face (`TAPING_LINE_FROM_INNER_FACE_MM`; `s = 0` of the
 //! wheel side frame). The TSI for freight wagons draws the same three dimensions (Regulation
 //! (EU) No 321/2013, 4.2.3.6.2, Figure 1, with their limits in Table 3; the German EBO,
 //! Anlage 6, and the Austrian EisbBBV, Anlage 2, tabulate the same symbols):

@@ -200,30 +200,67 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
     })
 }
 
-/// The caption of a figure in the report.
-pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
-    match fig {
-        Figure::Profiles => "Paper Fig. 1: wheel and rail of the left side in their placed positions (centred wheelset resting on the rail, no roll), track frame.".into(),
-        Figure::Conicity => "Paper Fig. 1: tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position; the wheel is broken at its section joints. The y axis runs over contact angles from -45° to 74° (tan γ from -1 to 3.5); triangles at the frame mark where the flange back's vertical face and the rail's flanks leave it.".into(),
-        Figure::Curvature => "Lateral curvature of the profiles, convex positive. The S1002 curvature jumps at every section joint, as its definition does.".into(),
-        Figure::ContactPoints => "Paper Fig. 2: rigid contact points on the wheel (profile coordinate) and on the rail (from the top of rail) against the lateral shift. Jumps of a contact point are gaps, not lines.".into(),
-        Figure::RollingRadius => "Paper Fig. 2: rolling radius difference r_left - r_right of the rigid contact.".into(),
-        Figure::ContactAngles => "Paper Fig. 2: contact angles of the rigid contact in the track frame, roll included, mirrored per side.".into(),
-        Figure::Roll => "Paper Fig. 2: roll angle of the wheelset solved with the contact (paper Eqs. 2-5).".into(),
-        Figure::ContactAngleParameter => "Paper Fig. 2: Wickens' contact angle parameter; undefined at y_ws = 0.".into(),
-        Figure::ContactMap => "Contact map: each rigid contact point of the sweep on the wheel (drawn 8 mm above its resting place) linked to its point on the rail; where contact lives and where it jumps.".into(),
-        Figure::QuasiElasticPoints => format!("Paper Fig. 4: rigid and quasi-elastic contact points (eps = {} mm); the quasi-elastic heaviest patch as a line, a second patch as markers.", scene.quasi_elastic.epsilon_mm),
-        Figure::QuasiElasticMap => "Paper Fig. 5: contact map with rigid and quasi-elastic contact points.".into(),
-        Figure::EpsilonSensitivity => "Sensitivity of the quasi-elastic contact location to the regularisation parameter eps; as eps decreases it tends to the rigid solution.".into(),
+/// The figure of the paper (Onat, Voltr & Lata 2014) that `fig` redraws, if any.
+fn paper_figure(fig: Figure) -> Option<&'static str> {
+    Some(match fig {
+        Figure::Profiles | Figure::Conicity => "Fig. 1",
+        Figure::ContactPoints
+        | Figure::RollingRadius
+        | Figure::ContactAngles
+        | Figure::Roll
+        | Figure::ContactAngleParameter => "Fig. 2",
+        Figure::QuasiElasticPoints => "Fig. 4",
+        Figure::QuasiElasticMap => "Fig. 5",
+        Figure::SemiAxes => "Fig. 6",
+        _ => return None,
+    })
+}
+
+/// The caption of a figure in the report: "Paper Fig. N: " before it only where the scene
+/// is the paper's case ([`Scene::is_paper_case`]), remarks only where the figure shows what
+/// they describe.
+pub(crate) fn caption(fig: Figure, scene: &Scene, results: &Results) -> String {
+    let text = match fig {
+        Figure::Profiles => "wheel and rail of the left side in their placed positions (centred wheelset resting on the rail, no roll), track frame.".into(),
+        Figure::Conicity => figures::conicity_caption(&results.placement),
+        Figure::Curvature => {
+            let joints = if results.placement.left.wheel.profile().joints().is_empty() {
+                ""
+            } else {
+                " The wheel's curvature jumps at every section joint of its definition."
+            };
+            format!("lateral curvature of the profiles, convex positive.{joints}")
+        }
+        Figure::ContactPoints => "rigid contact points on the wheel (profile coordinate) and on the rail (from the top of rail) against the lateral shift. Jumps of a contact point are gaps, not lines.".into(),
+        Figure::RollingRadius => "rolling radius difference r_left - r_right of the rigid contact.".into(),
+        Figure::ContactAngles => "contact angles of the rigid contact in the track frame, roll included, mirrored per side.".into(),
+        Figure::Roll => "roll angle of the wheelset solved with the contact (paper Eqs. 2-5).".into(),
+        Figure::ContactAngleParameter => "Wickens' contact angle parameter; undefined at y_ws = 0.".into(),
+        Figure::ContactMap => "contact map: each rigid contact point of the sweep on the wheel (drawn 8 mm above its resting place) linked to its point on the rail; where contact lives and where it jumps.".into(),
+        Figure::QuasiElasticPoints => format!("rigid and quasi-elastic contact points (eps = {} mm); the quasi-elastic heaviest patch as a line, a second patch as markers.", scene.quasi_elastic.epsilon_mm),
+        Figure::QuasiElasticMap => "contact map with rigid and quasi-elastic contact points.".into(),
+        Figure::EpsilonSensitivity => "sensitivity of the quasi-elastic contact location to the regularisation parameter eps; as eps decreases it tends to the rigid solution.".into(),
         Figure::SemiAxes => format!(
-            "Paper Fig. 6: semi-axes of the Hertz contact ellipses ({} method, {} contact, normal load {}, vertical wheel load {} kN).",
+            "semi-axes of the Hertz contact ellipses ({} method, {} contact, normal load {}, vertical wheel load {} kN).",
             scene.hertz.method, scene.hertz_contact.name(), scene.hertz.normal_load.name(), scene.wheel_load_n / 1000.0
         ),
-        Figure::Pressure => "Maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
-        Figure::EquivalentConicity => format!("Equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),
-        Figure::DeltaRLinearised => "Rolling radius difference of the rigid sweep (jumps as steps) and the linear function 2 tan γe(3 mm) (y - y_eq) of the equivalent cone over the motion y_eq ± 3 mm.".into(),
-        Figure::HertzAccuracy => "Accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
+        Figure::Pressure => "maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
+        Figure::EquivalentConicity => format!("equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),
+        Figure::DeltaRLinearised => "rolling radius difference of the rigid sweep (jumps as steps) and the linear function 2 tan γe(3 mm) (y - y_eq) of the equivalent cone over the motion y_eq ± 3 mm.".into(),
+        Figure::HertzAccuracy => "accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
+    };
+    match paper_figure(fig) {
+        Some(n) if scene.is_paper_case() => format!("Paper {n}: {text}"),
+        _ => capitalised(&text),
     }
+}
+
+/// `text` with its first letter in upper case.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
 /// Every output file of a scene: tables, figures in the scene's formats, and `index.html`.
@@ -277,7 +314,7 @@ fn figure_files(
         let chart = figure(fig, results)?;
         let mut entry = FigureEntry {
             name: fig.name().to_string(),
-            caption: caption(fig, scene),
+            caption: caption(fig, scene, results),
             svg: String::new(),
             png: String::new(),
         };
@@ -314,14 +351,28 @@ pub fn tradeoff_files(
     m: &[crate::tradeoff::Measurement],
     formats: &[ImageFormat],
 ) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
+    let csv = tables::tradeoff(m)
+        .map_err(table_error)?
+        .to_csv_with(CSV_FORMAT);
+    let points: Vec<crate::tradeoff::ChartPoint> = m.iter().map(Into::into).collect();
+    tradeoff_chart_files(csv, &points, formats)
+}
+
+/// `tradeoff.csv` as `csv` and the chart of its `points` in `formats` (to draw the chart
+/// again from a committed table, `wheelrail tradeoff --replot`), and the page entry.
+///
+/// # Errors
+/// [`Error::Chart`] when the chart cannot be rendered.
+pub fn tradeoff_chart_files(
+    csv: String,
+    points: &[crate::tradeoff::ChartPoint],
+    formats: &[ImageFormat],
+) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
     let mut files = vec![OutputFile {
         name: "tradeoff.csv".into(),
-        bytes: tables::tradeoff(m)
-            .map_err(table_error)?
-            .to_csv_with(CSV_FORMAT)
-            .into_bytes(),
+        bytes: csv.into_bytes(),
     }];
-    let chart = figures::tradeoff(m);
+    let chart = tradeoff_chart(points);
     for f in formats {
         files.push(match f {
             ImageFormat::Svg => OutputFile {
@@ -340,11 +391,16 @@ pub fn tradeoff_files(
     Ok((files, tradeoff_entry()))
 }
 
+/// The chart of the tradeoff study's `points`.
+pub fn tradeoff_chart(points: &[crate::tradeoff::ChartPoint]) -> report::Figure {
+    figures::tradeoff(points)
+}
+
 /// The report entry of the tradeoff chart.
 pub fn tradeoff_entry() -> FigureEntry {
     FigureEntry {
         name: "tradeoff".into(),
-        caption: "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it; tradeoff.csv lists every setting).".into(),
+        caption: "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it). Each point is a setting, numbered as in the key below the chart (tradeoff.csv has every measurement); the Pareto front, the settings no other beats in both time and error, is the staircase that bounds what they dominate. Errors of exactly 0, settings that reproduce the reference to the last bit, are drawn in the shaded band 'exact (0)' at the foot of a panel, below the decades of the others.".into(),
         svg: "tradeoff.svg".into(),
         png: "tradeoff.png".into(),
     }

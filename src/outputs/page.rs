@@ -155,26 +155,30 @@ fn parameters(scene: &Scene) -> Vec<(String, String)> {
 }
 
 /// The program's version and where each profile came from, with the sha256 of its file (or
-/// of the sampled table of a built-in profile), as `(name, value)`.
+/// of the sampled table of a built-in profile), once, as `(name, value)`. File paths are
+/// written without `.` and `..` segments (`reports/x/../../tests/a.csv` is
+/// `tests/a.csv`).
 fn provenance(results: &Results) -> Vec<(String, String)> {
     let p = &results.placement;
     let profile_row = |label: &str, profile: &Profile| -> (String, String) {
-        let hash = match profile.source() {
-            crate::profile::Source::File { sha256, .. } => sha256.clone(),
-            crate::profile::Source::Definition(_) => {
+        let value = match profile.source() {
+            crate::profile::Source::File { path, sha256 } => {
+                format!("{} — sha256 {sha256}", lexically_normal(path))
+            }
+            crate::profile::Source::Definition(definition) => {
                 // Built-in: the hash of its sampled table, which changes with the definition.
                 let rows = profile.sample(tables::PROFILE_TABLE_STEP_MM);
                 let text: String = rows
                     .iter()
                     .map(|r| format!("{:.12e},{:.12e}\n", r[0], r[1]))
                     .collect();
-                format!("{} (of the sampled profile)", sha256_hex(text.as_bytes()))
+                format!(
+                    "{definition} — sha256 {} (of the sampled profile)",
+                    sha256_hex(text.as_bytes())
+                )
             }
         };
-        (
-            label.to_string(),
-            format!("{} — sha256 {hash}", profile.source()),
-        )
+        (label.to_string(), value)
     };
     vec![
         (
@@ -190,6 +194,30 @@ fn provenance(results: &Results) -> Vec<(String, String)> {
             "mm, N, MPa, rad; track frame y left, z up; see every CSV header".into(),
         ),
     ]
+}
+
+/// `path` with its `.` segments dropped and each `..` taking away the folder before it
+/// (where there is one to take: a leading `..` stays), as text with `/`. Lexical only: for
+/// display, where the path's folders are those of the checkout.
+fn lexically_normal(path: &str) -> String {
+    use std::path::Component;
+    let mut parts: Vec<String> = Vec::new();
+    for c in std::path::Path::new(path).components() {
+        match c {
+            Component::CurDir => {}
+            // Above the root is the root.
+            Component::ParentDir if parts.last().is_some_and(String::is_empty) => {}
+            Component::ParentDir if parts.last().is_some_and(|l| l != "..") => {
+                parts.pop();
+            }
+            Component::RootDir => parts.push(String::new()),
+            c => parts.push(c.as_os_str().to_string_lossy().into_owned()),
+        }
+    }
+    if parts == [String::new()] {
+        return "/".into();
+    }
+    parts.join("/")
 }
 
 /// The pair's parameters (from the conicity stage) as rows `[name, value, unit, definition]`;
@@ -320,4 +348,25 @@ fn wheel_rows(
         ),
     ]);
     rows
+}
+
+#[cfg(test)]
+mod tests {
+    use super::lexically_normal;
+
+    #[test]
+    fn paths_lose_their_dot_segments() {
+        for (path, normal) in [
+            (
+                "reports/en15302_e1/../../tests/data/en15302/R-UIC519A.csv",
+                "tests/data/en15302/R-UIC519A.csv",
+            ),
+            ("./a/./b.csv", "a/b.csv"),
+            ("../a/../../b.csv", "../../b.csv"),
+            ("/x/../y.csv", "/y.csv"),
+            ("/../y.csv", "/y.csv"),
+        ] {
+            assert_eq!(lexically_normal(path), normal, "{path}");
+        }
+    }
 }

@@ -47,7 +47,8 @@ pub mod table;
 
 #[cfg(feature = "cli")]
 pub use chart::{
-    Chart, ChartError, Figure, LegendPosition, Series, SeriesStyle, VLine, render_png, render_svg,
+    Chart, ChartError, Figure, HBand, LegendPosition, PointLabel, Series, SeriesStyle, VLine,
+    render_png, render_svg,
 };
 pub use golden::{
     ColumnDiff, Comparison, FileOutcome, FilesComparison, Tolerance, TolerancePolicy, compare,

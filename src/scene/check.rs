@@ -8,13 +8,13 @@ use super::{
     DEFAULT_SMOOTHING_WAVELENGTH_MM, DEFAULT_SWEEP_MM, DEFAULT_SWEEP_STEP_MM,
     DEFAULT_WHEEL_LOAD_KN, DEFAULT_WHEEL_PROFILE, DEFAULT_YOUNG_GPA, FleetSettings, ImageFormat,
     MAX_CONICITY_LIMIT, MAX_EPSILON_SENSITIVITY, MAX_LIMIT_MM, MAX_SMOOTHING_WAVELENGTH_MM,
-    MAX_WHEEL_LOAD_N, MIN_WHEEL_LOAD_N, MPA_PER_GPA, N_PER_KN, POISSON_RANGE, ProfileRef, Scene,
-    YOUNG_RANGE_GPA,
+    MPA_PER_GPA, N_PER_KN, ProfileRef, Scene,
 };
 use crate::hertz::Material;
 use crate::hertz::{ContactSource, HertzSettings};
 use crate::maintenance::{LimitOverrides, Limits};
 use crate::message::Number;
+use crate::plausible;
 use crate::profile::Profile;
 use crate::quasi_elastic::{
     EPSILON_RANGE_MM, Quadrature, QuasiElasticSettings as QeSettings, QuasiElasticSettingsError,
@@ -309,46 +309,28 @@ fn track(raw: &RawScene) -> Result<(TrackLayout, Inclination, [f64; 2]), Invalid
     Ok((layout, rail_profile_inclination, smoothing_wavelength_mm))
 }
 
-/// The vertical wheel load (N) and the materials of wheel and rail.
+/// The vertical wheel load (N) and the materials of wheel and rail, each checked against
+/// its range in [`crate::plausible`] (shared with `wheelrail hertz`).
 fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Invalid> {
     let wheel_load_n = N_PER_KN
-        * within(
-            raw.load.wheel_load_kN.unwrap_or(DEFAULT_WHEEL_LOAD_KN),
-            (MIN_WHEEL_LOAD_N / N_PER_KN, MAX_WHEEL_LOAD_N / N_PER_KN),
-            "kN",
-            "not a wheel load",
-        )
-        .map_err(|m| invalid("load.wheel_load_kN", m))?;
+        * plausible::WHEEL_LOAD_KN
+            .check(raw.load.wheel_load_kN.unwrap_or(DEFAULT_WHEEL_LOAD_KN))
+            .map_err(|e| invalid("load.wheel_load_kN", e.to_string()))?;
 
     let m = &raw.material;
     // Per-body keys override the shared ones; errors name the key that was written.
     let young = |own_key: &'static str, own: Option<f64>| -> Result<f64, Invalid> {
         let (key, v) = written(own_key, own, "material.young_GPa", m.young_GPa);
-        let e = within(
-            v.unwrap_or(DEFAULT_YOUNG_GPA),
-            YOUNG_RANGE_GPA,
-            "GPa",
-            "not the Young's modulus of a wheel or rail material",
-        )
-        .map_err(|msg| invalid(key, msg))?;
+        let e = plausible::YOUNG_GPA
+            .check(v.unwrap_or(DEFAULT_YOUNG_GPA))
+            .map_err(|e| invalid(key, e.to_string()))?;
         Ok(MPA_PER_GPA * e)
     };
     let poisson = |own_key: &'static str, own: Option<f64>| -> Result<f64, Invalid> {
         let (key, v) = written(own_key, own, "material.poisson", m.poisson);
-        let nu = v.unwrap_or(DEFAULT_POISSON);
-        if nu.is_finite() && nu >= POISSON_RANGE.0 && nu < POISSON_RANGE.1 {
-            Ok(nu)
-        } else {
-            Err(invalid(
-                key,
-                format!(
-                    "{} is not the Poisson's ratio of a wheel or rail material; expected {} <= poisson < {} (negative ratios are auxetic foams, 0.5 is incompressible)",
-                    Number(nu),
-                    POISSON_RANGE.0,
-                    POISSON_RANGE.1
-                ),
-            ))
-        }
+        plausible::POISSON
+            .check(v.unwrap_or(DEFAULT_POISSON))
+            .map_err(|e| invalid(key, e.to_string()))
     };
     let material = |young_key: &'static str, nu_key: &'static str, e: f64, nu: f64| {
         crate::hertz::Material::new(e, nu).map_err(|err| {

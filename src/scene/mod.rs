@@ -47,19 +47,8 @@ const N_PER_KN: f64 = 1000.0;
 /// Megapascals per gigapascal (the scene gives moduli in GPa, the numerics take MPa).
 const MPA_PER_GPA: f64 = 1000.0;
 
-/// The largest wheel load accepted (N): 1 MN, ten times the heaviest axle loads.
-pub(crate) const MAX_WHEEL_LOAD_N: f64 = 1e6;
-/// The smallest wheel load accepted (N): 1 N, the lower end of the loads the Hertz solution
-/// is tested at (`tests/stress.rs`); a lighter wheel only touches its rail.
-pub(crate) const MIN_WHEEL_LOAD_N: f64 = 1.0;
-/// Young's moduli accepted (GPa): polymers used on model rigs (a few GPa) to tungsten
-/// carbide (about 700 GPa), with margin; railway steels are about 210 GPa.
-pub(crate) const YOUNG_RANGE_GPA: (f64, f64) = (1.0, 1000.0);
-/// Poisson's ratios accepted, `[0, 0.5)`: the mathematical range is `(-1, 0.5)`, but no
-/// wheel or rail material has a negative ratio (steels 0.27 to 0.30, polymers up to 0.45;
-/// negative ratios belong to auxetic foams), and near -1 the combined modulus `E/(1-ν²)`
-/// grows without bound. 0.5 (incompressible) is excluded by Hertz's formula itself.
-pub(crate) const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
+// The ranges of the wheel load and the materials are in `crate::plausible`, shared with
+// `wheelrail hertz`.
 /// The longest filter wavelength of the profile spline (mm): longer than a wheel's tread
 /// and flange together, the filter flattens the profile itself.
 pub(crate) const MAX_SMOOTHING_WAVELENGTH_MM: f64 = 100.0;
@@ -233,6 +222,35 @@ impl FleetSettings {
 }
 
 impl Scene {
+    /// Whether the scene is the paper's case (Onat, Voltr & Lata 2014): S1002 wheels of
+    /// 460 mm on UIC60 rails inclined 1:40, standard gauge and wheelset, 70 kN, steel; that
+    /// is, every key that changes the numbers of a figure at its default (the sweep and the
+    /// numerical settings may differ). The report cites the paper's figures only then.
+    pub fn is_paper_case(&self) -> bool {
+        let paper = Scene::from_toml("", "paper", Path::new("")).expect("the defaults are valid");
+        let built_in = |r: &ProfileRef, name: &str| match r {
+            ProfileRef::BuiltIn(n) => {
+                Profile::built_in(n).map(|p| p.name().to_owned())
+                    == Profile::built_in(name).map(|p| p.name().to_owned())
+            }
+            ProfileRef::File(_) => false,
+        };
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        self.wheel_profiles
+            .iter()
+            .all(|r| built_in(r, DEFAULT_WHEEL_PROFILE))
+            && self
+                .rail_profiles
+                .iter()
+                .all(|r| built_in(r, DEFAULT_RAIL_PROFILE))
+            && bits(&self.nominal_radius_mm) == bits(&paper.nominal_radius_mm)
+            && self.layout == paper.layout
+            && self.rail_profile_inclination == paper.rail_profile_inclination
+            && self.wheel_load_n.to_bits() == paper.wheel_load_n.to_bits()
+            && self.wheel_material == paper.wheel_material
+            && self.rail_material == paper.rail_material
+    }
+
     /// Whether both wheels are one: the same profile at the same radius (placed once and
     /// cloned, a mirror-symmetric wheelset with [`Scene::same_rails`]).
     pub(crate) fn same_wheels(&self) -> bool {
@@ -504,6 +522,30 @@ mod tests {
         assert!(sweep[150].abs() < 1e-15 && (sweep[300] - 15.0).abs() < 1e-12);
         assert!((s.wheel_load_n - 70_000.0).abs() < 1e-9);
         assert!((s.wheel_material.young_mpa - 210_000.0).abs() < 1e-9);
+        assert!(s.is_paper_case());
+    }
+
+    /// The paper's case: its physical keys at their defaults, written or not; the sweep and
+    /// the solvers free.
+    #[test]
+    fn the_paper_case_is_the_paper_geometry_load_and_material() {
+        for same in [
+            "[wheel]\nprofile = \"s1002\"\n[rail]\nprofile = \"60E1\"\ninclination = \"1:40\"",
+            "[sweep]\nfrom_mm = -5.0\nto_mm = 5.0\n[rigid]\nsolver = \"paper\"",
+            "[load]\nwheel_load_kN = 70.0\n[material]\npoisson = 0.3",
+        ] {
+            assert!(scene(same).unwrap().is_paper_case(), "{same}");
+        }
+        for other in [
+            "[rail]\ninclination = \"1:20\"",
+            "[wheel]\nright_nominal_radius_mm = 450.0",
+            "[load]\nwheel_load_kN = 100.0",
+            "[material]\nrail_poisson = 0.28",
+            "[track]\ngauge_mm = 1000.0\n[wheelset]\nflange_back_mm = 920.0",
+            "[wheel]\nprofile = \"tests/data/en15302/R-UIC519A.csv\"",
+        ] {
+            assert!(!scene(other).unwrap().is_paper_case(), "{other}");
+        }
     }
 
     #[test]

@@ -17,7 +17,7 @@ mod tradeoff;
 
 pub(crate) use conicity::{delta_r_linearised, equivalent_conicity};
 pub(crate) use hertz::{hertz_accuracy, pressure, semi_axes};
-pub(crate) use profiles::{conicity, curvature, profiles};
+pub(crate) use profiles::{conicity, conicity_caption, curvature, profiles};
 pub(crate) use quasi_elastic::{epsilon_sensitivity, quasi_elastic_map, quasi_elastic_points};
 pub(crate) use rigid::{
     contact_angle_parameter, contact_angles, contact_map, contact_points, flange_onsets, roll,

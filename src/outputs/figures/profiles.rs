@@ -1,6 +1,7 @@
 //! Figures of the profiles stage: the placed profiles, their slope and curvature.
 
 use super::Line;
+use crate::outputs::tables::VERTICAL_TAN_GAMMA;
 use crate::report::{Chart, Figure, LegendPosition, Series};
 use crate::track::{Placement, Side};
 
@@ -64,24 +65,78 @@ pub(crate) fn profiles(placement: &Placement) -> Figure {
 
 /// The stated y range of the conicity chart: contact angles from -45° to 74°, the contact
 /// angles a wheel and a rail can meet at (the S1002 flange reaches 70°, worn flanges a
-/// little more). The flange back's vertical face, the rail's gauge corner and field-side
-/// flank leave it; the chart marks where and says how far.
+/// little more). The flange back, the rail's gauge corner and field-side flank may leave
+/// it; the chart marks where and says how far.
 pub(crate) const CONICITY_RANGE: (f64, f64) = (-1.0, 3.5);
 
+/// tan(gamma) of the wheel at `u`, `NaN` on a vertical face (the S1002 flange back), as the
+/// profile table writes it ([`VERTICAL_TAN_GAMMA`]): the profiles evaluate a vertical
+/// tangent with a capped root (`-1e6`), which is no slope to draw or to quote.
+fn wheel_tan_gamma(p: &crate::profile::Profile, u: f64) -> f64 {
+    let t = p.tan_gamma(u);
+    if t.abs() > VERTICAL_TAN_GAMMA {
+        f64::NAN
+    } else {
+        t
+    }
+}
+
 /// tan(gamma) of wheel and rail against the lateral position (paper Fig. 1, right), over
-/// [`CONICITY_RANGE`].
+/// [`CONICITY_RANGE`]; the wheel's vertical faces are gaps.
 pub(crate) fn conicity(placement: &Placement) -> Figure {
     let mut figure = profile_property(
         placement,
         "Conicity: tan(gamma) of wheel and rail, left side",
         "tan(gamma) (-)",
-        |p, u| p.tan_gamma(u),
+        wheel_tan_gamma,
         |r, y| r.at(y).map_or(f64::NAN, |q| q.slope),
     );
     for chart in &mut figure.panels {
         chart.y_range = Some(CONICITY_RANGE);
     }
     figure
+}
+
+/// The caption of [`conicity`] (after "Paper Fig. 1: " on the paper's case), its remarks
+/// only where they apply: section joints where the wheel has them, a vertical face where
+/// it has one, which curves leave the chart where any does.
+pub(crate) fn conicity_caption(placement: &Placement) -> String {
+    let figure = conicity(placement);
+    let chart = &figure.panels[0];
+    let (lo, hi) = CONICITY_RANGE;
+    let leaves = |series: usize| {
+        chart.series[series]
+            .points
+            .iter()
+            .any(|&(x, y)| x.is_finite() && y.is_finite() && !(lo..=hi).contains(&y))
+    };
+    let wheel = placement.left.wheel.profile();
+    let vertical_face = wheel
+        .sample(0.05)
+        .iter()
+        .any(|r| wheel_tan_gamma(wheel, r[0]).is_nan());
+    let mut text = "tangent of the profile angle (conicity angle, paper Eq. 1) of wheel and rail against the lateral position".to_string();
+    let breaks: Vec<&str> = [
+        (!wheel.joints().is_empty()).then_some("at its section joints"),
+        vertical_face.then_some("where its face is vertical (the flange back: no slope)"),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    if !breaks.is_empty() {
+        text += &format!("; the wheel is broken {}", breaks.join(" and "));
+    }
+    text += ". The y axis runs over contact angles from -45° to 74° (tan γ from -1 to 3.5)";
+    let off = match (leaves(0), leaves(1)) {
+        (true, true) => Some("the wheel's and the rail's curves leave"),
+        (true, false) => Some("the wheel's curve leaves"),
+        (false, true) => Some("the rail's curve leaves"),
+        (false, false) => None,
+    };
+    if let Some(off) = off {
+        text += &format!("; triangles at the frame mark where {off} it");
+    }
+    text + "."
 }
 
 /// Lateral curvature of wheel and rail against the lateral position.

@@ -2,47 +2,132 @@
 
 use super::{LEFT, QE, RIGHT};
 use crate::report::{Chart, Figure, Series};
+use crate::tradeoff::{ChartPoint, pareto_indices};
 
-/// Run time against error (log-log): one point per setting, the Pareto front as a line, the
-/// default and the paper's settings as their own series. Errors of exactly zero (the
-/// reference's own settings) are drawn at 1e-17.
-pub(crate) fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Figure {
-    let panel = |title: &str, y_label: &str, error: fn(&crate::tradeoff::Errors) -> f64| {
-        let point =
-            |x: &crate::tradeoff::Measurement| (1e3 * x.median_s, error(&x.errors).max(1e-17));
-        let front: Vec<(f64, f64)> = crate::tradeoff::pareto_front(m, error)
-            .into_iter()
-            .map(|i| point(&m[i]))
-            .collect();
-        let pick = |label: &str| {
-            m.iter()
-                .filter(|x| x.setting.label == label)
-                .map(point)
-                .collect::<Vec<_>>()
+/// Height of the figure's two panels (pixels): taller than a default grid, so that the
+/// numbers of clustered points find room.
+const PANEL_HEIGHT_PX: u32 = 560;
+/// Decades of the "exact" band at the foot of a panel with errors of exactly 0, and the
+/// decades between it and the smallest error that is not 0.
+const BAND_DECADES: f64 = 1.0;
+const BAND_GAP_DECADES: f64 = 1.0;
+
+/// Run time against error (log-log), one panel for the contact position and one for the
+/// ellipse: each setting a point numbered as in the key below the panels, the default and
+/// the paper's settings in their own colours, the Pareto front as the staircase that
+/// bounds what it dominates. Errors of exactly 0 (settings that reproduce the reference to
+/// the last bit) are drawn in a shaded band "exact (0)" at the foot of the panel, below the
+/// decades of the errors that are not.
+pub(crate) fn tradeoff(points: &[ChartPoint]) -> Figure {
+    let times: Vec<f64> = points.iter().map(|p| p.median_ms).collect();
+    let (t_lo, t_hi) = log_span(&times);
+    let x_range = (t_lo / 1.3, t_hi * 1.3);
+    let panel = |title: &str, y_label: &str, error: fn(&ChartPoint) -> f64| {
+        let errors: Vec<f64> = points.iter().map(error).collect();
+        let nonzero: Vec<f64> = errors.iter().copied().filter(|e| *e > 0.0).collect();
+        let (e_lo, e_hi) = log_span(&nonzero);
+        let exact = errors.contains(&0.0);
+        // The band's middle stands in for 0: the band lies BAND_GAP_DECADES below the
+        // decade of the smallest error that is not 0.
+        let band_top = 10f64.powf(e_lo.log10().floor() - BAND_GAP_DECADES);
+        let band = (band_top / 10f64.powf(BAND_DECADES), band_top);
+        let zero = (band.0 * band.1).sqrt();
+        let y_range = (if exact { band.0 } else { e_lo / 3.0 }, e_hi * 3.0);
+        // Errors not computed stay NaN: left out of the chart, not drawn as exact.
+        let y = |e: f64| if e == 0.0 { zero } else { e };
+        let at = |i: usize| (points[i].median_ms, y(errors[i]));
+        let front = pareto_indices(
+            &points
+                .iter()
+                .map(|p| (p.median_ms, error(p)))
+                .collect::<Vec<_>>(),
+        );
+        let pick = |keep: &dyn Fn(&str) -> bool| -> Vec<(f64, f64)> {
+            (0..points.len())
+                .filter(|&i| keep(&points[i].label))
+                .map(at)
+                .collect()
         };
-        let others = m
-            .iter()
-            .filter(|x| x.setting.label != "default" && x.setting.label != "paper")
-            .map(point)
-            .collect();
-        Chart::new(title, "median run time (ms, log)", y_label)
-            .series(Series::line("Pareto front", front).color(QE))
-            .series(Series::markers("other settings", others).color(6))
-            .series(Series::markers("default", pick("default")).color(LEFT))
-            .series(Series::markers("paper", pick("paper")).color(RIGHT))
+        let mut chart = Chart::new(title, "median run time (ms, log)", y_label)
+            .series(
+                Series::line("Pareto front", staircase(&front, &at, x_range, y_range)).color(QE),
+            )
+            .series(
+                Series::markers("other settings", pick(&|l| l != "default" && l != "paper"))
+                    .color(6),
+            )
+            .series(Series::markers("default", pick(&|l| l == "default")).color(LEFT))
+            .series(Series::markers("paper", pick(&|l| l == "paper")).color(RIGHT))
+            .x_range(x_range.0, x_range.1)
+            .y_range(y_range.0, y_range.1)
             .x_log()
-            .y_log()
+            .y_log();
+        if exact {
+            chart = chart.hband(band.0, band.1, "exact (0)");
+        }
+        for i in 0..points.len() {
+            let (x, y) = at(i);
+            chart = chart.label(x, y, format!("{}", i + 1));
+        }
+        chart
     };
-    Figure::grid(
-        "Run time against error (each point a setting; see tradeoff.csv for the labels)",
+    let figure = Figure::grid(
+        "Run time against error: each point a setting, numbered as in the key below",
         vec![
-            panel("Contact position", "max rigid contact error (mm)", |e| {
-                e.contact_mm
+            panel("Contact position", "max rigid contact error (mm)", |p| {
+                p.contact_mm
             }),
-            panel("Contact ellipse", "max relative error of a and b", |e| {
-                e.a_rel.max(e.b_rel)
+            panel("Contact ellipse", "max relative error of a and b", |p| {
+                p.ellipse_rel
             }),
         ],
         2,
+    );
+    let width = figure.width;
+    figure.size(width, PANEL_HEIGHT_PX + 50).with_key(
+        points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| format!("{}  {}", i + 1, p.label))
+            .collect(),
     )
+}
+
+/// The smallest and largest of the positive finite `values` (1 and 10 without any).
+fn log_span(values: &[f64]) -> (f64, f64) {
+    let finite = values.iter().copied().filter(|v| v.is_finite() && *v > 0.0);
+    let lo = finite.clone().fold(f64::INFINITY, f64::min);
+    let hi = finite.fold(0.0, f64::max);
+    if lo.is_finite() {
+        (lo, hi)
+    } else {
+        (1.0, 10.0)
+    }
+}
+
+/// The Pareto front of `front` (fastest first, errors falling; `at` gives a point) as the
+/// staircase that bounds what it dominates: down from the top of the chart to the fastest
+/// point, then across to each next point's time and down to its error, and across to the
+/// right edge from the last.
+fn staircase(
+    front: &[usize],
+    at: &dyn Fn(usize) -> (f64, f64),
+    x_range: (f64, f64),
+    y_range: (f64, f64),
+) -> Vec<(f64, f64)> {
+    let mut line = Vec::new();
+    for (k, &i) in front.iter().enumerate() {
+        let (t, e) = at(i);
+        let above = if k == 0 {
+            y_range.1
+        } else {
+            line.last().map_or(e, |p: &(f64, f64)| p.1)
+        };
+        line.push((t, above));
+        line.push((t, e));
+    }
+    if let Some(&(_, e)) = line.last() {
+        line.push((x_range.1, e));
+    }
+    line
 }

@@ -2,11 +2,15 @@
 
 use super::error::{Field, ReadError};
 use super::fields::{self, RawPoint};
+use crate::delimited::Separator;
 use crate::profile::ProfileKind;
 
 const EXPECTED: &str = "a number in mm";
 
 /// Parses the CSV text into side-frame points (the file is in the side frame already).
+///
+/// Fields are separated by commas, semicolons or tabs, as the header line is
+/// ([`Separator::of_header`]); with semicolons or tabs a number may have a decimal comma.
 ///
 /// Text whose lines hold no quote and no carriage return but before a line feed (every
 /// file the project and its users' spreadsheets write) is split into lines and fields
@@ -21,7 +25,9 @@ pub(super) fn parse(
     kind: ProfileKind,
     origin: &str,
 ) -> Result<Vec<RawPoint>, ReadError> {
-    parse_plain(text, kind, origin).unwrap_or_else(|| parse_quoted(text, kind, origin))
+    let separator = Separator::of_text(text);
+    parse_plain(text, kind, origin, separator)
+        .unwrap_or_else(|| parse_quoted(text, kind, origin, separator))
 }
 
 /// [`parse`] of plain text, or `None` at the first line that is not plain: one with a
@@ -31,13 +37,14 @@ pub(super) fn parse(
 ///
 /// As the crate reads plain text: records end at `\n` (a `\r` before it dropped), empty
 /// lines are skipped, a line starting with `#` is a comment (whatever it holds), and
-/// fields are split at every comma.
+/// fields are split at every `separator`.
 fn parse_plain(
     text: &str,
     kind: ProfileKind,
     origin: &str,
+    separator: Separator,
 ) -> Option<Result<Vec<RawPoint>, ReadError>> {
-    let mut rows = Rows::new(kind, origin);
+    let mut rows = Rows::new(kind, origin, separator);
     for (i, line) in text.split('\n').enumerate() {
         let line = line.strip_suffix('\r').unwrap_or(line);
         if line.contains('\r') {
@@ -46,24 +53,24 @@ fn parse_plain(
         if line.is_empty() || line.starts_with('#') {
             continue;
         }
-        if let Err(e) = rows.push(first_two_fields(line)?, i + 1) {
+        if let Err(e) = rows.push(first_two_fields(line, separator.byte())?, line, i + 1) {
             return Some(Err(e));
         }
     }
     Some(rows.finish())
 }
 
-/// The first two comma-separated fields of a record's `line` without surrounding
+/// The first two fields of a record's `line`, split at `separator`, without surrounding
 /// whitespace (`None` past its end), or `None` when the line holds a quote (not plain, see
-/// [`parse_plain`]). One pass over the bytes: the commas and quotes looked for are ASCII,
-/// so they are never part of a multi-byte character.
-fn first_two_fields(line: &str) -> Option<[Option<&str>; 2]> {
+/// [`parse_plain`]). One pass over the bytes: the separators and quotes looked for are
+/// ASCII, so they are never part of a multi-byte character.
+fn first_two_fields(line: &str, separator: u8) -> Option<[Option<&str>; 2]> {
     let mut commas = [line.len(); 2];
     let mut found = 0;
     for (i, &b) in line.as_bytes().iter().enumerate() {
         match b {
             b'"' => return None,
-            b',' if found < 2 => {
+            b if b == separator && found < 2 => {
                 commas[found] = i;
                 found += 1;
             }
@@ -82,7 +89,12 @@ fn first_two_fields(line: &str) -> Option<[Option<&str>; 2]> {
 /// not counted): the line here is counted from the record's first byte ([`LineCount`]).
 /// And it reads a comment that ends the text without a line end as a record of one empty
 /// field: the text is given a line end first.
-fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPoint>, ReadError> {
+fn parse_quoted(
+    text: &str,
+    kind: ProfileKind,
+    origin: &str,
+    separator: Separator,
+) -> Result<Vec<RawPoint>, ReadError> {
     let ended;
     let text = if text.ends_with('\n') {
         text
@@ -93,9 +105,10 @@ fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPo
     let mut reader = ::csv::ReaderBuilder::new()
         .has_headers(false)
         .comment(Some(b'#'))
+        .delimiter(separator.byte())
         .flexible(true)
         .from_reader(text.as_bytes());
-    let mut rows = Rows::new(kind, origin);
+    let mut rows = Rows::new(kind, origin, separator);
     // The crate's positions increase: lines are counted on from the last record's start.
     let mut lines = LineCount::default();
     let mut line_at = |p: Option<&::csv::Position>| {
@@ -114,7 +127,11 @@ fn parse_quoted(text: &str, kind: ProfileKind, origin: &str) -> Result<Vec<RawPo
         })?
     {
         let line = line_at(record.position());
-        rows.push([field(&record, 0), field(&record, 1)], line)?;
+        let joined = record
+            .iter()
+            .collect::<Vec<_>>()
+            .join(&separator.char().to_string());
+        rows.push([field(&record, 0), field(&record, 1)], &joined, line)?;
     }
     rows.finish()
 }
@@ -167,23 +184,32 @@ impl LineCount {
 struct Rows<'a> {
     kind: ProfileKind,
     origin: &'a str,
+    separator: Separator,
     header_seen: bool,
     points: Vec<RawPoint>,
 }
 
 impl<'a> Rows<'a> {
-    fn new(kind: ProfileKind, origin: &'a str) -> Rows<'a> {
+    fn new(kind: ProfileKind, origin: &'a str, separator: Separator) -> Rows<'a> {
         Rows {
             kind,
             origin,
+            separator,
             header_seen: false,
             points: Vec::new(),
         }
     }
 
-    /// Takes the record on 1-based `line` whose first two fields, without surrounding
-    /// whitespace, are `fields` (`None` past the record's end): the header, or a point.
-    fn push(&mut self, fields: [Option<&str>; 2], line: usize) -> Result<(), ReadError> {
+    /// Takes the record `text` on 1-based `line` whose first two fields, without
+    /// surrounding whitespace, are `fields` (`None` past the record's end): the header, or
+    /// a point. A point that does not read on a line holding another separator than the
+    /// header's is a [`ReadError::SeparatorMismatch`].
+    fn push(
+        &mut self,
+        fields: [Option<&str>; 2],
+        text: &str,
+        line: usize,
+    ) -> Result<(), ReadError> {
         if !self.header_seen {
             check_header(fields, self.kind, self.origin, line)?;
             self.header_seen = true;
@@ -195,12 +221,49 @@ impl<'a> Rows<'a> {
                 line,
                 column,
             }),
-            Some(t) => fields::number(t, self.origin, line, Field::Column(column), EXPECTED),
+            Some(t) => fields::number(
+                &self.separator.number_text(t),
+                self.origin,
+                line,
+                Field::Column(column),
+                EXPECTED,
+            )
+            .map_err(|e| match e {
+                // The value as written, not as converted from a decimal comma.
+                ReadError::NonNumeric { value, .. } if value.contains('.') && t.contains(',') => {
+                    ReadError::NonNumeric {
+                        origin: self.origin.to_owned(),
+                        line,
+                        field: Field::Column(column),
+                        value: t.to_owned(),
+                        expected: EXPECTED,
+                    }
+                }
+                e => e,
+            }),
         };
-        let lat = value(1)?;
-        let vert = value(2)?;
-        self.points.push(RawPoint { lat, vert, line });
-        Ok(())
+        let point = value(1).and_then(|lat| {
+            Ok(RawPoint {
+                lat,
+                vert: value(2)?,
+                line,
+            })
+        });
+        match point {
+            Ok(p) => {
+                self.points.push(p);
+                Ok(())
+            }
+            Err(e) => Err(match self.separator.other_in(text) {
+                Some(found) => ReadError::SeparatorMismatch {
+                    origin: self.origin.to_owned(),
+                    line,
+                    header: self.separator,
+                    found,
+                },
+                None => e,
+            }),
+        }
     }
 
     /// The points, or [`ReadError::Empty`] for text of comments only.
@@ -230,6 +293,12 @@ fn check_header(
 ) -> Result<(), ReadError> {
     if fields[0].is_some_and(fields::is_number) {
         return Err(ReadError::MissingHeader {
+            origin: origin.to_owned(),
+            line,
+        });
+    }
+    if fields[1].is_none() {
+        return Err(ReadError::OneColumnHeader {
             origin: origin.to_owned(),
             line,
         });
@@ -310,6 +379,11 @@ mod tests {
         ));
     }
 
+    /// The separator `parse` reads `text` with.
+    fn separator(text: &str) -> Separator {
+        Separator::of_text(text)
+    }
+
     /// Both readers' outcome on `text`: the points with their lines, or the error's message
     /// and variant.
     fn outcomes(text: &str) -> [String; 2] {
@@ -318,8 +392,15 @@ mod tests {
             Err(e) => format!("{e} / {e:?}"),
         };
         [
-            show(parse_plain(text, ProfileKind::Rail, "t.csv").expect("plain text")),
-            show(parse_quoted(text, ProfileKind::Rail, "t.csv")),
+            show(
+                parse_plain(text, ProfileKind::Rail, "t.csv", separator(text)).expect("plain text"),
+            ),
+            show(parse_quoted(
+                text,
+                ProfileKind::Rail,
+                "t.csv",
+                separator(text),
+            )),
         ]
     }
 
@@ -339,6 +420,8 @@ mod tests {
             " 2 ,\u{a0}3\u{3000}",
             "4,5,6,7",
             "1e3,2D-1",
+            "1;2",
+            "1\t2",
         ];
         let bad = [
             "s_mm,F_mm",
@@ -357,6 +440,10 @@ mod tests {
             "\u{feff}y_mm,z_mm",
             ",",
             "1,,2",
+            "y_mm;z_mm",
+            "y_mm\tz_mm",
+            "1,5;2,5",
+            "y_mm",
         ];
         let ends = ["\n", "\r\n"];
         let mut rng = crate::rng::SplitMix64::new(15);
@@ -397,7 +484,7 @@ mod tests {
 
     #[test]
     fn quotes_and_lone_carriage_returns_in_records_go_through_the_csv_crate() {
-        let plain = |text| parse_plain(text, ProfileKind::Rail, "t.csv").is_some();
+        let plain = |text| parse_plain(text, ProfileKind::Rail, "t.csv", separator(text)).is_some();
         assert!(!plain("y_mm,z_mm\n\"1\",2\n"));
         assert!(!plain("y_mm,z_mm\r1,2\n"));
         assert!(!plain("# a \"quote\"\ry_mm,z_mm\n1,2\n"));
@@ -419,6 +506,57 @@ mod tests {
             matches!(&quoted, Err(ReadError::NonNumeric { line: 2, value, .. }) if value == "1,5"),
             "{quoted:?}"
         );
+    }
+
+    /// Semicolons and tabs, as the header has them, with decimal commas or points; on the
+    /// quoted path too.
+    #[test]
+    fn semicolons_and_tabs_are_read_with_decimal_commas_or_points() {
+        let want = [[-12.5, 3.25], [0.0, -1.0], [1.5, 2.0]];
+        for (sep, text) in [
+            (";", "s_mm;F_mm\n-12,5;3,25\n0;-1\n1.5 ; 2,0\n"),
+            ("\t", "s_mm\tF_mm\r\n-12,5\t3,25\r\n0\t-1\r\n1.5\t2\r\n"),
+            (
+                ";",
+                "# export\n\"s_mm\";\"F_mm\"\n\"-12,5\";3,25\n0;-1\n1,5;2\n",
+            ),
+        ] {
+            let points = parse(text, ProfileKind::Wheel, "t.csv").unwrap();
+            let got: Vec<[f64; 2]> = points.iter().map(|p| [p.lat, p.vert]).collect();
+            assert_eq!(got, want, "{sep:?}: {text:?}");
+        }
+    }
+
+    /// A row that does not read under its header's separator, and holds another, is refused
+    /// naming both; a header of one column says so.
+    #[test]
+    fn a_mixed_separator_or_a_one_column_header_is_named() {
+        for (text, line, message) in [
+            (
+                "s_mm,F_mm\n1,2\n1,5;2,5\n",
+                3,
+                "t.csv:3: this row separates its fields by semicolons, but the header by commas",
+            ),
+            (
+                "s_mm;F_mm\n1;2\n1.5,2.5\n",
+                3,
+                "t.csv:3: this row separates its fields by commas, but the header by semicolons",
+            ),
+            (
+                "s_mm\tF_mm\n1;2\n",
+                2,
+                "t.csv:2: this row separates its fields by semicolons, but the header by tabs",
+            ),
+            (
+                "# c\ns_mm F_mm\n1 2\n",
+                2,
+                "t.csv:2: the header names one column; a profile CSV names two, separated by commas, semicolons or tabs",
+            ),
+        ] {
+            let e = parse(text, ProfileKind::Wheel, "t.csv").unwrap_err();
+            assert_eq!(e.line(), Some(line), "{text:?}");
+            assert!(e.to_string().starts_with(message), "{text:?}: {e}");
+        }
     }
 
     /// Errors and points name the line they are on, counting every line of the file:

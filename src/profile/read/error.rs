@@ -192,6 +192,26 @@ pub enum ReadError {
         /// 1-based line of the first row.
         line: usize,
     },
+    /// A CSV header names one column: its fields are separated by none of the separators
+    /// read (comma, semicolon, tab).
+    OneColumnHeader {
+        /// The path.
+        origin: String,
+        /// 1-based line of the header.
+        line: usize,
+    },
+    /// A CSV row that does not read holds another separator than its header's: the file
+    /// mixes separators (a spreadsheet export pasted into a file of another locale).
+    SeparatorMismatch {
+        /// The path.
+        origin: String,
+        /// 1-based line of the row.
+        line: usize,
+        /// The header's separator.
+        header: crate::delimited::Separator,
+        /// The separator found in the row.
+        found: crate::delimited::Separator,
+    },
     /// The file's structure is broken: misnested or unterminated SIMPACK blocks, a MiniProf
     /// header key among the data, a line that fits no rule of the format.
     Malformed {
@@ -252,6 +272,8 @@ impl ReadError {
             | ReadError::WrongUnits { origin, .. }
             | ReadError::MissingUnits { origin, .. }
             | ReadError::MissingHeader { origin, .. }
+            | ReadError::OneColumnHeader { origin, .. }
+            | ReadError::SeparatorMismatch { origin, .. }
             | ReadError::Malformed { origin, .. }
             | ReadError::UnsupportedRotation { origin, .. }
             | ReadError::BadUnitFactor { origin, .. } => origin,
@@ -269,6 +291,8 @@ impl ReadError {
             | ReadError::WrongUnits { line, .. }
             | ReadError::MissingUnits { line, .. }
             | ReadError::MissingHeader { line, .. }
+            | ReadError::OneColumnHeader { line, .. }
+            | ReadError::SeparatorMismatch { line, .. }
             | ReadError::Malformed { line, .. }
             | ReadError::UnsupportedRotation { line, .. }
             | ReadError::BadUnitFactor { line, .. } => Some(*line),
@@ -389,6 +413,18 @@ impl fmt::Display for ReadError {
             ReadError::MissingHeader { .. } => f.write_str(
                 "the first row holds numbers, but a profile CSV starts with a header row naming \
                  the columns and their units (s_mm,F_mm for a wheel, y_mm,z_mm for a rail)",
+            ),
+            ReadError::OneColumnHeader { .. } => f.write_str(
+                "the header names one column; a profile CSV names two, separated by commas, \
+                 semicolons or tabs (s_mm,F_mm for a wheel, y_mm,z_mm for a rail)",
+            ),
+            ReadError::SeparatorMismatch { header, found, .. } => write!(
+                f,
+                "this row separates its fields by {}, but the header by {}: a file takes one \
+                 separator throughout (commas with decimal points; semicolons or tabs with \
+                 decimal commas or points)",
+                found.plural(),
+                header.plural()
             ),
             ReadError::Malformed { problem, .. } => f.write_str(problem),
             ReadError::UnsupportedRotation { angle_rad, .. } => write!(

@@ -16,8 +16,14 @@
 //!   automatic or fixed, is clipped at the frame, where a triangle in the series' colour marks
 //!   each place it leaves, and the legend says how far it goes ("off the chart: ▼ down to
 //!   -1e6").
-//! * Legends never cover what is drawn (see [`LegendPosition`]); [`layout`] tells where they
-//!   went and [`render_rgb`] can leave them out to check it.
+//! * Legends never cover what is drawn (see [`LegendPosition`]), and neither do the labels
+//!   of marker lines and points ([`PointLabel`]): they go on the same occupancy grid;
+//!   [`layout`] tells where they went and [`render_rgb`] can leave them out to check it.
+//! * Lines are drawn at the chart's resolution: of the points of a line that fall in one
+//!   pixel column only the first, the lowest, the highest and the last are kept, which
+//!   draw the same pixels, so a chart's size does not grow with its data (a sweep of
+//!   100,001 positions keeps at most four points a column); markers and segments that
+//!   fall on the pixels of earlier ones are drawn once.
 //! * Colours come from the Okabe–Ito palette ([`PALETTE`]), readable with the common colour
 //!   vision deficiencies; each colour has its own marker shape ([`MarkerShape::for_color`]), and
 //!   lines can be dashed, so series stay distinguishable in grey-scale print.
@@ -202,6 +208,32 @@ pub struct VLine {
     pub label: String,
 }
 
+/// A text beside one point of the plot (the setting a marker stands for, say), placed like
+/// a legend where it covers nothing drawn, nearest its point; a thin leader line joins the
+/// two when the text had to move away.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PointLabel {
+    /// Position on the x axis, in axis units.
+    pub x: f64,
+    /// Position on the y axis, in axis units.
+    pub y: f64,
+    /// The text.
+    pub text: String,
+}
+
+/// A shaded horizontal band across the plot, named at the y axis in place of the tick
+/// labels within it: where values off the axis's scale are drawn at a stand-in value, such
+/// as the exact zeros of a logarithmic axis ("exact").
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct HBand {
+    /// Lower edge on the y axis, in axis units.
+    pub from: f64,
+    /// Upper edge on the y axis, in axis units.
+    pub to: f64,
+    /// The band's name, written at the y axis level with its middle.
+    pub label: String,
+}
+
 /// Where the legend goes. Whatever the choice, a legend never covers data, marker lines or
 /// labels: if the requested corner is not free the legend moves to the free place nearest a
 /// corner, and if no place inside the plot is free, outside it (right of the plot or below
@@ -247,6 +279,10 @@ pub struct Chart {
     pub y_log: bool,
     /// Vertical marker lines.
     pub vlines: Vec<VLine>,
+    /// Texts beside points.
+    pub labels: Vec<PointLabel>,
+    /// Shaded horizontal bands.
+    pub hbands: Vec<HBand>,
     /// Legend placement.
     pub legend: LegendPosition,
 }
@@ -311,6 +347,26 @@ impl Chart {
         self
     }
 
+    /// Adds a text beside the point `(x, y)`.
+    pub fn label(mut self, x: f64, y: f64, text: impl Into<String>) -> Self {
+        self.labels.push(PointLabel {
+            x,
+            y,
+            text: text.into(),
+        });
+        self
+    }
+
+    /// Adds a shaded band from `from` to `to` on the y axis, named `label` at the axis.
+    pub fn hband(mut self, from: f64, to: f64, label: impl Into<String>) -> Self {
+        self.hbands.push(HBand {
+            from,
+            to,
+            label: label.into(),
+        });
+        self
+    }
+
     /// Sets the legend position.
     pub fn legend(mut self, position: LegendPosition) -> Self {
         self.legend = position;
@@ -331,6 +387,9 @@ pub struct Figure {
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
+    /// A key below the panels: short entries (`"3  profiles sampled 0.05 mm"`) set in
+    /// columns, read downwards; the panels give up the height it takes.
+    pub key: Vec<String>,
 }
 
 impl Figure {
@@ -342,6 +401,7 @@ impl Figure {
             columns: 1,
             width: DEFAULT_WIDTH,
             height: DEFAULT_HEIGHT,
+            key: Vec::new(),
         }
     }
 
@@ -357,7 +417,22 @@ impl Figure {
             title,
             panels,
             columns,
+            key: Vec::new(),
         }
+    }
+
+    /// Sets the key below the panels (see [`Figure::key`]); the figure grows by the
+    /// height it takes ([`Figure::key_height`]).
+    pub fn with_key(mut self, key: Vec<String>) -> Self {
+        self.key = key;
+        self.height += self.key_height();
+        self
+    }
+
+    /// The height in pixels of the key below the panels at the figure's width (0 without
+    /// one).
+    pub fn key_height(&self) -> u32 {
+        draw::key_height(self)
     }
 
     /// Sets the size in pixels.
@@ -473,8 +548,9 @@ pub fn render_png(figure: &Figure) -> Result<Vec<u8>, ChartError> {
 }
 
 /// The pixels of [`render_png`]: 8-bit RGB, row by row from the top, `width × height × 3`
-/// bytes. With `legends` false the legends are laid out (the plot keeps its size and the
-/// data its place) but not drawn, so that one can see what they would cover.
+/// bytes. With `legends` false the legends and the labels placed like them (of marker
+/// lines and points, with their leader lines) are laid out (the plot keeps its size and
+/// the data its place) but not drawn, so that one can see what they would cover.
 ///
 /// # Errors
 ///
@@ -521,6 +597,9 @@ pub struct PanelLayout {
     /// Number of places where a series leaves the chart above or below (each marked by a
     /// triangle at the frame and summed up in the legend).
     pub off_chart: usize,
+    /// The boxes of the labels placed in the plot like the legend (of marker lines and
+    /// points), in the order of [`Chart::vlines`] then [`Chart::labels`].
+    pub labels: Vec<PxBox>,
 }
 
 /// The layout of every panel of `figure`, in panel order.

@@ -1,12 +1,12 @@
-//! What the plot says besides its data: vertical marker lines with their labels, and the
-//! marks and legend note where data leaves the chart.
+//! What the plot says besides its data: vertical marker lines (their labels are placed in
+//! `labels`), and the marks and legend note where data leaves the chart.
 
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 
 use super::super::geometry::{AxisMap, Frame};
-use super::super::text::{Align, Place, TextSpec};
+use super::super::text::TextSpec;
 use super::super::{Chart, ChartError, drawing_error};
 use super::series::Look;
 use super::{ANNOTATION, Ctx, OFF_CHART_MARK_PX, PxRect};
@@ -155,44 +155,6 @@ pub(super) fn draw_off_chart_marks<DB: DrawingBackend>(
 
 pub(super) fn vline_spec() -> TextSpec {
     TextSpec::new(VLINE_PX).color(ANNOTATION)
-}
-
-/// Labels of vertical marker lines with their placement and pixel box: beside the line near
-/// the top, right of it unless that would leave the plot, in up to three staggered rows so
-/// that neighbours do not collide.
-pub(super) fn vline_labels<DB: DrawingBackend>(
-    ctx: &Ctx<'_, DB>,
-    chart: &Chart,
-    xmap: AxisMap,
-    frame: &Frame,
-    plot: PxRect,
-) -> Vec<(String, Place, PxRect)> {
-    let spec = vline_spec();
-    let mut row = 0;
-    let mut out = Vec::new();
-    for vline in &chart.vlines {
-        let x = xmap.forward(vline.x);
-        if vline.label.is_empty() || !(x.is_finite() && x >= frame.x.0 && x <= frame.x.1) {
-            continue;
-        }
-        let (px, _) = ctx.backend_coord(&(x, frame.y.1));
-        let (w, h) = spec.size(&vline.label);
-        let y = plot.1 + 4 + row * (h + 4);
-        row = (row + 1) % 3;
-        let (place, rect) = if px + 4 + w <= plot.2 - 2 {
-            (
-                Place::new((px + 4, y), Align::Start, Align::Start),
-                (px + 4, y, px + 4 + w, y + h),
-            )
-        } else {
-            (
-                Place::new((px - 4, y), Align::End, Align::Start),
-                (px - 4 - w, y, px - 4, y + h),
-            )
-        };
-        out.push((vline.label.clone(), place, rect));
-    }
-    out
 }
 
 /// Dashed vertical marker lines across the plot, where they fall within the x range.

@@ -4,9 +4,9 @@
 use plotters::prelude::*;
 
 use super::super::geometry::{AxisMap, Frame, Point};
-use super::super::{Chart, LegendPosition, SeriesStyle};
-use super::annotations::{off_chart_runs, vline_labels};
-use super::series::series_lines;
+use super::super::{Chart, LegendPosition};
+use super::annotations::off_chart_runs;
+use super::series::drawn;
 use super::{Ctx, LEGEND_INSET_PX, LINE_WIDTH, MARKER_PX, OFF_CHART_MARK_PX, PxRect};
 
 /// Least distance in pixels between a legend and anything drawn in the plot.
@@ -17,26 +17,41 @@ const OCCUPANCY_CELL_PX: i32 = 6;
 const SEGMENT_SAMPLE_PX: f64 = 3.0;
 
 /// Cells of a plot's occupancy grid marked as drawn on.
-struct Marks {
-    left: f64,
-    top: f64,
+pub(super) struct Marks {
+    left: i32,
+    top: i32,
     cols: usize,
     rows: usize,
     occupied: Vec<bool>,
 }
 
 impl Marks {
+    /// An empty grid over `plot`.
+    fn new(plot: PxRect) -> Marks {
+        let cell = OCCUPANCY_CELL_PX;
+        let cols = ((plot.2 - plot.0) / cell + 1).max(1) as usize;
+        let rows = ((plot.3 - plot.1) / cell + 1).max(1) as usize;
+        Marks {
+            left: plot.0,
+            top: plot.1,
+            cols,
+            rows,
+            occupied: vec![false; cols * rows],
+        }
+    }
+
     /// Marks the cells within `radius` plus [`LEGEND_CLEARANCE_PX`] of pixel `(x, y)`.
-    fn mark(&mut self, (x, y): (f64, f64), radius: f64) {
+    pub(super) fn mark(&mut self, (x, y): (f64, f64), radius: f64) {
         let r = radius + f64::from(LEGEND_CLEARANCE_PX);
         let cell = f64::from(OCCUPANCY_CELL_PX);
-        let c1 = ((x + r - self.left) / cell).floor();
-        let r1 = ((y + r - self.top) / cell).floor();
+        let (left, top) = (f64::from(self.left), f64::from(self.top));
+        let c1 = ((x + r - left) / cell).floor();
+        let r1 = ((y + r - top) / cell).floor();
         if !(c1 >= 0.0 && r1 >= 0.0) {
             return;
         }
-        let c0 = ((x - r - self.left) / cell).floor().max(0.0) as usize;
-        let r0 = ((y - r - self.top) / cell).floor().max(0.0) as usize;
+        let c0 = ((x - r - left) / cell).floor().max(0.0) as usize;
+        let r0 = ((y - r - top) / cell).floor().max(0.0) as usize;
         let c1 = (c1 as usize).min(self.cols - 1);
         let r1 = (r1 as usize).min(self.rows - 1);
         for row in r0..=r1 {
@@ -48,7 +63,7 @@ impl Marks {
 
     /// Marks a segment between two pixels, sampled every [`SEGMENT_SAMPLE_PX`] (less than
     /// the clearance, so that the marked discs overlap).
-    fn segment(&mut self, a: (f64, f64), b: (f64, f64), radius: f64) {
+    pub(super) fn segment(&mut self, a: (f64, f64), b: (f64, f64), radius: f64) {
         let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
         if !len.is_finite() {
             return;
@@ -57,6 +72,95 @@ impl Marks {
         for k in 0..=n {
             let t = k as f64 / n as f64;
             self.mark((a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)), radius);
+        }
+    }
+
+    /// Marks a text box `(left, top, right, bottom)`: discs along its middle line.
+    pub(super) fn text_box(&mut self, (l, t, r, b): PxRect) {
+        let cy = 0.5 * f64::from(t + b);
+        self.segment(
+            (f64::from(l), cy),
+            (f64::from(r), cy),
+            0.5 * f64::from(b - t),
+        );
+    }
+
+    /// The cell ranges (columns, rows) a pixel box touches, clamped to the grid.
+    fn cells(&self, (l, t, r, b): PxRect) -> (std::ops::Range<usize>, std::ops::Range<usize>) {
+        let cell = OCCUPANCY_CELL_PX;
+        let clamp = |v: i32, n: usize| v.clamp(0, n as i32) as usize;
+        (
+            clamp((l - self.left) / cell, self.cols)..clamp((r - self.left) / cell + 1, self.cols),
+            clamp((t - self.top) / cell, self.rows)..clamp((b - self.top) / cell + 1, self.rows),
+        )
+    }
+
+    /// Whether the pixel box touches no marked cell.
+    pub(super) fn is_free(&self, rect: PxRect) -> bool {
+        let (cols, rows) = self.cells(rect);
+        rows.into_iter()
+            .all(|r| cols.clone().all(|c| !self.occupied[r * self.cols + c]))
+    }
+
+    /// The cells near what the plot's data draws: every line (sampled every
+    /// [`SEGMENT_SAMPLE_PX`]), point and marker, and the off-chart marks, within
+    /// [`LEGEND_CLEARANCE_PX`] plus the line width or marker size.
+    pub(super) fn of_data<DB: DrawingBackend>(
+        chart: &Chart,
+        ctx: &Ctx<'_, DB>,
+        xmap: AxisMap,
+        ymap: AxisMap,
+        frame: &Frame,
+        plot: PxRect,
+    ) -> Marks {
+        let mut grid = Marks::new(plot);
+        let to_px = |p: Point| {
+            let (x, y) = ctx.backend_coord(&p);
+            (f64::from(x), f64::from(y))
+        };
+        let line_radius = f64::from(LINE_WIDTH);
+        for s in &chart.series {
+            let d = drawn(s, xmap, ymap, frame, |p| ctx.backend_coord(&p));
+            for line in &d.lines {
+                if line.len() == 1 {
+                    grid.mark(to_px(line[0]), 2.0);
+                }
+                for pair in line.windows(2) {
+                    grid.segment(to_px(pair[0]), to_px(pair[1]), line_radius);
+                }
+            }
+            for p in &d.markers {
+                grid.mark(to_px(*p), f64::from(MARKER_PX + 1));
+            }
+        }
+        for r in off_chart_runs(chart, xmap, ymap, frame) {
+            let (px, _) = ctx.backend_coord(&(r.x, frame.y.0));
+            let y = if r.above { plot.1 } else { plot.3 };
+            grid.mark(
+                (f64::from(px), f64::from(y)),
+                f64::from(2 * OFF_CHART_MARK_PX + 1),
+            );
+        }
+        grid
+    }
+
+    /// Marks the chart's vertical marker lines.
+    pub(super) fn vlines<DB: DrawingBackend>(
+        &mut self,
+        chart: &Chart,
+        ctx: &Ctx<'_, DB>,
+        xmap: AxisMap,
+        frame: &Frame,
+    ) {
+        let to_px = |p: Point| {
+            let (x, y) = ctx.backend_coord(&p);
+            (f64::from(x), f64::from(y))
+        };
+        for vline in &chart.vlines {
+            let x = xmap.forward(vline.x);
+            if x.is_finite() && x >= frame.x.0 && x <= frame.x.1 {
+                self.segment(to_px((x, frame.y.0)), to_px((x, frame.y.1)), 1.0);
+            }
         }
     }
 }
@@ -73,72 +177,10 @@ pub(super) struct Occupancy {
 }
 
 impl Occupancy {
-    /// Marks every cell within [`LEGEND_CLEARANCE_PX`] (plus the line width or marker size)
-    /// of a data point, of a line between points (sampled every [`SEGMENT_SAMPLE_PX`]), of a marker line and
-    /// its label, and of the off-chart marks.
-    pub(super) fn of<DB: DrawingBackend>(
-        chart: &Chart,
-        ctx: &Ctx<'_, DB>,
-        xmap: AxisMap,
-        ymap: AxisMap,
-        frame: &Frame,
-        plot: PxRect,
-    ) -> Occupancy {
-        let cell = OCCUPANCY_CELL_PX;
-        let cols = ((plot.2 - plot.0) / cell + 1).max(1) as usize;
-        let rows = ((plot.3 - plot.1) / cell + 1).max(1) as usize;
-        let mut grid = Marks {
-            left: f64::from(plot.0),
-            top: f64::from(plot.1),
-            cols,
-            rows,
-            occupied: vec![false; cols * rows],
-        };
-        let to_px = |p: Point| {
-            let (x, y) = ctx.backend_coord(&p);
-            (f64::from(x), f64::from(y))
-        };
-        let line_radius = f64::from(LINE_WIDTH);
-        for s in &chart.series {
-            let (points, lines) = series_lines(s, xmap, ymap, frame);
-            let finite = |p: &Point| p.0.is_finite() && p.1.is_finite();
-            for line in &lines {
-                if line.len() == 1 {
-                    grid.mark(to_px(line[0]), 2.0);
-                }
-                for pair in line.windows(2) {
-                    grid.segment(to_px(pair[0]), to_px(pair[1]), line_radius);
-                }
-            }
-            if matches!(s.style, SeriesStyle::Markers | SeriesStyle::LineWithMarkers) {
-                for p in points.iter().filter(|p| finite(p) && frame.contains(**p)) {
-                    grid.mark(to_px(*p), f64::from(MARKER_PX + 1));
-                }
-            }
-        }
-        for vline in &chart.vlines {
-            let x = xmap.forward(vline.x);
-            if x.is_finite() && x >= frame.x.0 && x <= frame.x.1 {
-                grid.segment(to_px((x, frame.y.0)), to_px((x, frame.y.1)), 1.0);
-            }
-        }
-        for (_, _, (l, t, r, b)) in vline_labels(ctx, chart, xmap, frame, plot) {
-            // Discs along the label's middle line cover its box.
-            let cy = 0.5 * f64::from(t + b);
-            grid.segment(
-                (f64::from(l), cy),
-                (f64::from(r), cy),
-                0.5 * f64::from(b - t),
-            );
-        }
-        for r in off_chart_runs(chart, xmap, ymap, frame) {
-            let (px, _) = ctx.backend_coord(&(r.x, frame.y.0));
-            let y = if r.above { plot.1 } else { plot.3 };
-            grid.mark(
-                (f64::from(px), f64::from(y)),
-                f64::from(2 * OFF_CHART_MARK_PX + 1),
-            );
-        }
+    /// The summed-area table of `grid`: everything a legend must not cover (the data, the
+    /// marker lines, the labels) marked.
+    pub(super) fn of(grid: &Marks) -> Occupancy {
+        let (cols, rows) = (grid.cols, grid.rows);
         let mut sums = vec![0u32; (cols + 1) * (rows + 1)];
         for row in 0..rows {
             for col in 0..cols {
@@ -149,8 +191,8 @@ impl Occupancy {
             }
         }
         Occupancy {
-            left: plot.0,
-            top: plot.1,
+            left: grid.left,
+            top: grid.top,
             cols,
             rows,
             sums,

@@ -8,10 +8,9 @@ use super::super::geometry::{AxisMap, Frame, axis_range, data_bounds, equalize};
 use super::super::text::{Align, Place, TextMode, TextSpec, draw_text};
 use super::super::ticks::Ticks;
 use super::super::{Chart, ChartError, DrawOptions, PanelLayout, drawing_error};
-use super::annotations::{
-    draw_off_chart_marks, draw_vlines, off_chart_runs, vline_labels, vline_spec,
-};
-use super::axes::{build_context, draw_axes};
+use super::annotations::{draw_off_chart_marks, draw_vlines, off_chart_runs};
+use super::axes::{build_context, draw_axes, draw_hbands};
+use super::labels::{Label, draw_labels, lay_out};
 use super::legend::LegendBox;
 use super::occupancy::Occupancy;
 use super::series::draw_series;
@@ -87,11 +86,13 @@ impl<'a> Sizing<'a> {
         }
     }
 
-    /// Width of the y-axis area that holds `ticks`' widest label and the axis title.
+    /// Width of the y-axis area that holds `ticks`' widest label (or band label) and the
+    /// axis title.
     fn y_area_for(&self, ticks: &Ticks) -> i32 {
         let widest = ticks
             .labels
             .iter()
+            .chain(self.chart.hbands.iter().map(|b| &b.label))
             .map(|l| self.tick_spec.size(l).0)
             .max()
             .unwrap_or(0);
@@ -179,7 +180,7 @@ pub(super) fn draw_panel<DB: DrawingBackend>(
     let first = sizing.plan((0, 0));
     let off_chart = off_chart_runs(chart, xmap, ymap, &first.frame);
     let legend = LegendBox::of(chart, xmap, ymap, &off_chart);
-    let (plan, plot, legend_rect) = place_legend(cell, &sizing, first, &legend)?;
+    let (plan, plot, legend_rect, labels) = place_legend(cell, &sizing, first, &legend)?;
     let mut ctx = build_context(&sizing.plot_area(cell, &plan), &plan)?;
     let frame = plan.frame;
     ctx.configure_mesh()
@@ -188,6 +189,7 @@ pub(super) fn draw_panel<DB: DrawingBackend>(
         .disable_axes()
         .draw()
         .map_err(drawing_error)?;
+    draw_hbands(&mut ctx, chart, ymap, &frame)?;
     draw_vlines(&mut ctx, chart, xmap, &frame)?;
     for (i, series) in chart.series.iter().enumerate() {
         draw_series(&mut ctx, series, i, xmap, ymap, &frame)?;
@@ -200,20 +202,18 @@ pub(super) fn draw_panel<DB: DrawingBackend>(
     .map_err(drawing_error)?;
 
     draw_axes(root, &ctx, chart, plot, &frame, mode, plan.y_area)?;
-    let labels = vline_labels(&ctx, chart, xmap, &frame, plot);
-    for (label, place, _) in &labels {
-        draw_text(root, mode, label, vline_spec(), *place)?;
-    }
-    if let Some(rect) = legend_rect
-        && options.legends
-    {
-        legend.draw(root, chart, rect, mode)?;
+    if options.legends {
+        draw_labels(root, &labels, mode)?;
+        if let Some(rect) = legend_rect {
+            legend.draw(root, chart, rect, mode)?;
+        }
     }
     Ok(PanelLayout {
         plot: px_box(plot),
         legend: legend_rect.map(px_box),
         legend_outside: plan.legend_space != (0, 0),
         off_chart: off_chart.len(),
+        labels: labels.iter().map(|l| px_box(l.rect)).collect(),
     })
 }
 
@@ -241,29 +241,30 @@ fn draw_title<DB: DrawingBackend>(
     Ok(pad + title_spec.size(&chart.title).1)
 }
 
-/// Where the legend goes: the plan (which gives up room outside the plot when no place
-/// inside is free), the plot's pixel box and the legend's (`None` with nothing to show).
+/// Where the legend and the labels go: the plan (which gives up room outside the plot when
+/// no place inside is free for the legend), the plot's pixel box, the legend's (`None` with
+/// nothing to show) and the labels (placed first, in the final plot).
 fn place_legend<DB: DrawingBackend>(
     cell: &DrawingArea<DB, Shift>,
     sizing: &Sizing<'_>,
     mut plan: PanelPlan,
     legend: &LegendBox,
-) -> Result<(PanelPlan, PxRect, Option<PxRect>), ChartError> {
+) -> Result<(PanelPlan, PxRect, Option<PxRect>, Vec<Label>), ChartError> {
     let (cx, _) = cell.get_base_pixel();
     let (cw, _) = sizing.cell;
+    let (chart, xmap, ymap) = (sizing.chart, sizing.xmap, sizing.ymap);
     for attempt in 0..2 {
         let plot_area = sizing.plot_area(cell, &plan);
         let ctx = build_context(&plot_area, &plan)?;
         let (w, h) = sizing.plot_size(plan.y_area, plan.legend_space);
         let (left, top) = plot_area.get_base_pixel();
         let plot: PxRect = (left, top, left + w as i32, top + h as i32);
+        let (labels, grid) = lay_out(chart, &ctx, xmap, ymap, &plan.frame, plot);
         let Some(size) = legend.size() else {
-            return Ok((plan, plot, None));
+            return Ok((plan, plot, None, labels));
         };
         let spot = if attempt == 0 {
-            let (chart, xmap, ymap) = (sizing.chart, sizing.xmap, sizing.ymap);
-            let grid = Occupancy::of(chart, &ctx, xmap, ymap, &plan.frame, plot);
-            grid.free_spot(plot, size, chart.legend)
+            Occupancy::of(&grid).free_spot(plot, size, chart.legend)
         } else if plan.legend_space.0 > 0 {
             // Outside, right of the plot, level with its top.
             Some((plot.2 + LEGEND_INSET_PX, plot.1))
@@ -274,7 +275,7 @@ fn place_legend<DB: DrawingBackend>(
         };
         if let Some(at) = spot {
             let rect = (at.0, at.1, at.0 + size.0, at.1 + size.1);
-            return Ok((plan, plot, Some(rect)));
+            return Ok((plan, plot, Some(rect), labels));
         }
         // Outside where it costs the plot the smaller share of its width or height.
         let (w, h) = (f64::from(w), f64::from(h));
