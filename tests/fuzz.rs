@@ -62,7 +62,7 @@ const OPTIONS: [StepBack; 2] = [StepBack::Refuse, StepBack::Drop];
 
 /// The readers' contract on one text, for one format, kind and option.
 fn check_parse(text: &str, format: ProfileFormat, kind: ProfileKind, step_back: StepBack) {
-    let lines = text.lines().count();
+    let lines = line_count(text);
     match parse_str_with(text, format, kind, "fuzz", &ReadOptions::new(step_back)) {
         Ok(p) => {
             assert!(p.points.len() >= PointProfile::MIN_POINTS);
@@ -84,6 +84,16 @@ fn check_parse(text: &str, format: ProfileFormat, kind: ProfileKind, step_back: 
         }
         Err(e) => check_error(&e, lines),
     }
+}
+
+/// The lines of `text` as the readers count them: each ended by `\n`, `\r\n` or a lone
+/// `\r` (`str::lines` does not end one at a lone `\r`), the last possibly unended.
+fn line_count(text: &str) -> usize {
+    let b = text.as_bytes();
+    let ends = (0..b.len())
+        .filter(|&i| b[i] == b'\n' || (b[i] == b'\r' && b.get(i + 1) != Some(&b'\n')))
+        .count();
+    ends + usize::from(!matches!(b.last(), None | Some(b'\n' | b'\r')))
 }
 
 fn check_error(e: &ReadError, lines: usize) {

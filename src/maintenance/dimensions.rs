@@ -25,7 +25,7 @@
 //!
 //! # The new S1002
 //!
-//! From the analytic definition ([`crate::profile::s1002`]): Sh = 28.000 mm (the tip F(-55)
+//! From the analytic definition (`profile::s1002`): Sh = 28.000 mm (the tip F(-55)
 //! = 28 of arc R12 over F(0) = 0), Sd = 32.500 mm (F(-37.5) = 10 on arc R13) and qR =
 //! 10.794 mm (F = 26 at s = -48.294 on arc R20), which EN 13715 rounds to 28, 32.5 and
 //! 10.8 mm (unit tests below).
