@@ -93,7 +93,6 @@ pub mod error;
 pub mod fleet;
 pub mod gap;
 pub mod hertz;
-#[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
 pub mod profile;
