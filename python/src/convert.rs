@@ -4,7 +4,7 @@
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike1, PyArrayLike2};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::PyDict;
 use std::fmt::Display;
 use wheelrail::profile::read::PointProfile;
 use wheelrail::profile::{Profile, ProfileKind};
@@ -60,23 +60,38 @@ pub fn table_dict<'py>(py: Python<'py>, table: Table) -> PyResult<Bound<'py, PyD
     for Column { name, data } in table.into_columns() {
         match data {
             ColumnData::Numeric(values) => d.set_item(name, PyArray1::from_vec(py, values))?,
-            ColumnData::Text(values) => d.set_item(name, text_array(py, values)?)?,
+            ColumnData::Text(values) => d.set_item(name, text_array(py, &values)?)?,
         }
     }
     Ok(d)
 }
 
-/// Strings as a NumPy `str` array (`numpy.array(..., dtype=str)`: an empty column too).
+/// Strings as a NumPy `str` array (dtype `U<width>`, the longest string's length): their
+/// UCS-4 code points written into one vector handed to NumPy and viewed as strings, so no
+/// Python string is made per cell (`numpy.array(list, dtype=str)` took 1 ms of the paper
+/// scene's 12 ms call, for its 3,808 text cells).
 pub fn text_array<'py, S: AsRef<str>>(
     py: Python<'py>,
-    values: Vec<S>,
+    values: &[S],
 ) -> PyResult<Bound<'py, PyAny>> {
-    let list = PyList::new(py, values.iter().map(|s| PyString::new(py, s.as_ref())))?;
-    let kwargs = PyDict::new(py);
-    kwargs.set_item("dtype", py.get_type::<PyString>())?;
-    py.import("numpy")?
-        .getattr("array")?
-        .call((list,), Some(&kwargs))
+    let width = values
+        .iter()
+        .map(|s| s.as_ref().chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(1);
+    let mut code_points = vec![0u32; values.len() * width];
+    for (cells, s) in code_points.chunks_mut(width).zip(values) {
+        for (cell, c) in cells.iter_mut().zip(s.as_ref().chars()) {
+            *cell = u32::from(c);
+        }
+    }
+    // Native byte order, as the u32 vector has it; NumPy drops the zeros that pad a string.
+    let dtype = py
+        .import("numpy")?
+        .getattr("dtype")?
+        .call1((format!("U{width}"),))?;
+    PyArray1::from_vec(py, code_points).call_method1("view", (dtype,))
 }
 
 /// The values of a 1-D array-like argument, copied into a vector the library owns (it

@@ -482,7 +482,7 @@ fn hertz_ellipse<'py>(
     if scalar {
         d.set_item("stop", &stop[0])?;
     } else {
-        d.set_item("stop", text_array(py, stop)?)?;
+        d.set_item("stop", text_array(py, &stop)?)?;
     }
     Ok(d)
 }
