@@ -54,6 +54,19 @@ fn paper_scene_all_stages_without_rendering(bencher: divan::Bencher) {
     bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
 }
 
+/// What the Python package's `wheelrail.run("reports/paper/scene.toml")` computes: the
+/// scene read and checked, the stages its figures need, their tables (no rendering). The
+/// package's call adds only its conversion to NumPy (docs/python-overhead.md).
+#[divan::bench(sample_count = 100)]
+fn paper_scene_tables(bencher: divan::Bencher) {
+    let path = paper_path();
+    bencher.bench(|| {
+        let scene = Scene::load(divan::black_box(&path)).unwrap();
+        let results = pipeline::run(&scene).unwrap();
+        outputs::tables(&scene, &results).unwrap()
+    });
+}
+
 #[divan::bench(sample_count = 10)]
 fn paper_report_rendering(bencher: divan::Bencher) {
     let scene = paper();

@@ -74,7 +74,6 @@ pub enum Error {
     #[cfg(feature = "cli")]
     Usage(String),
     /// A table whose columns do not fit together.
-    #[cfg(feature = "cli")]
     Table(crate::report::TableError),
     /// A chart that cannot be rendered (its name and why).
     #[cfg(feature = "cli")]
@@ -113,7 +112,6 @@ impl fmt::Display for Error {
             Error::ThreadPool(e) => write!(f, "cannot start the threads: {e}"),
             #[cfg(feature = "cli")]
             Error::Usage(message) => f.write_str(message),
-            #[cfg(feature = "cli")]
             Error::Table(e) => write!(f, "internal error building a table: {e}"),
             #[cfg(feature = "cli")]
             Error::Chart(name, e) => write!(f, "figure {name}: {e}"),
@@ -161,8 +159,11 @@ from! {
     ThreadPool(rayon::ThreadPoolBuildError),
 }
 
-#[cfg(feature = "cli")]
 from! {
     Table(crate::report::TableError),
+}
+
+#[cfg(feature = "cli")]
+from! {
     HertzArgs(crate::hertz::cli::RunError),
 }

@@ -106,14 +106,12 @@ pub mod gap;
 pub mod hertz;
 pub mod maintenance;
 mod message;
-#[cfg(feature = "cli")]
 pub mod outputs;
 pub mod pipeline;
 pub mod plausible;
 pub mod prelude;
 pub mod profile;
 pub mod quasi_elastic;
-#[cfg(feature = "cli")]
 pub mod report;
 pub mod rigid;
 mod rng;

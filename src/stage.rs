@@ -45,6 +45,17 @@ impl Stage {
         }
     }
 
+    /// The stage of a [`name`](Stage::name).
+    ///
+    /// ```
+    /// use wheelrail::pipeline::Stage;
+    /// assert!(Stage::ALL.iter().all(|&s| Stage::from_name(s.name()) == Some(s)));
+    /// assert_eq!(Stage::from_name("rigid_search"), None);
+    /// ```
+    pub fn from_name(name: &str) -> Option<Stage> {
+        Stage::ALL.into_iter().find(|s| s.name() == name)
+    }
+
     /// The stages whose results this stage uses directly.
     pub fn requires(self) -> &'static [Stage] {
         match self {

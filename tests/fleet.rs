@@ -740,3 +740,60 @@ fn a_rail_fleet_reports_the_wear_against_the_template_rail() {
         assert!(value(row, "gauge_face_wear_mm").abs() < 2e-3, "{row:?}");
     }
 }
+
+/// The fleet's rows as one table (`outputs::fleet::table`, what the Python package returns)
+/// hold what `fleet.csv` prints: the same columns, and each cell written as the CSV writes
+/// it is the CSV's text (a good row with Hertz columns, a row whose file is missing, and a
+/// count column among the numbers).
+#[test]
+fn the_fleet_table_holds_the_csv_lines() {
+    use wheelrail::fleet::{Fleet, Inputs, items_of_files};
+    use wheelrail::outputs::{self, CSV_FORMAT};
+    use wheelrail::report::ColumnData;
+    use wheelrail::report::table::format_number;
+
+    let dir = scratch("fleet-table");
+    let mut files = generated(&dir, 2);
+    files.insert(1, dir.join("missing.csv"));
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, HERTZ_TEMPLATE.replace("{wheel}", "S1002")).unwrap();
+    let template = wheelrail::scene::Scene::load(&scene).unwrap();
+    let items = items_of_files(&files, false);
+    let fleet = Fleet::new(template, Inputs::Wheels, &items, false).unwrap();
+    let mut rows = Vec::new();
+    fleet.assess_in_order(&items, |item| fleet.assess(item), |_, row| rows.push(row));
+    let table = outputs::fleet::table(&fleet, &rows).unwrap();
+    assert_eq!(
+        table.column_names().collect::<Vec<_>>(),
+        outputs::fleet::columns(&fleet)
+    );
+    assert!(
+        table.numeric("max_p0_MPa").is_some() && table.numeric("contact_point_jumps").is_some()
+    );
+    let csv: String = rows
+        .iter()
+        .map(|r| outputs::fleet::csv_line(&fleet, r))
+        .collect();
+    let expected = self::rows(&format!(
+        "{}\n{csv}",
+        outputs::fleet::columns(&fleet).join(",")
+    ));
+    assert_eq!(expected.len(), 3);
+    assert!(
+        expected[1]["status"].contains("missing.csv"),
+        "{:?}",
+        expected[1]
+    );
+    for column in table.columns() {
+        for (i, row) in expected.iter().enumerate() {
+            let cell = match &column.data {
+                ColumnData::Numeric(v) if column.name == "contact_point_jumps" => {
+                    format!("{}", v[i])
+                }
+                ColumnData::Numeric(v) => format_number(v[i], CSV_FORMAT),
+                ColumnData::Text(t) => t[i].to_string(),
+            };
+            assert_eq!(cell, row[&column.name], "row {i}, column {}", column.name);
+        }
+    }
+}

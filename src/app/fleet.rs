@@ -59,14 +59,7 @@ pub const PARTIAL_CSV: &str = "fleet.csv.partial";
 /// cannot use as a folder name.
 fn items(args: &FleetArgs) -> Result<(Vec<Item>, Inputs), Error> {
     let (items, inputs) = match &args.pairs {
-        Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-                path: path.clone(),
-                source,
-            })?;
-            let dir = path.parent().unwrap_or(Path::new(""));
-            fleet::parse_pairs(&text, &path.display().to_string(), dir)?
-        }
+        Some(path) => fleet::read_pairs(path)?,
         None => {
             let inputs = if args.rail {
                 Inputs::Rails
@@ -164,24 +157,12 @@ pub fn run(args: &FleetArgs) -> Result<ExitCode, Error> {
     let mut progress = Progress::new(items.len());
     let mut rows: Vec<Row> = Vec::with_capacity(items.len());
     let mut write_error = None;
-    fleet::in_order(
+    fleet.assess_in_order(
         &items,
         |item| assess(&fleet, item, args.reports.then_some(dir.as_path())),
-        |panic| {
-            // Only a bug panics; the row says so and the others run.
-            Err(RowError::new(format!(
-                "internal error (please report): {panic}"
-            )))
-        },
-        |i, row: Result<Row, RowError>| {
-            let row = row.unwrap_or_else(|message| Row {
-                id: items[i].id.clone(),
-                files: Vec::new(),
-                outcome: Err(message),
-            });
+        |_, row| {
             if write_error.is_none() {
-                let line =
-                    outputs::fleet::csv_line(&fleet, &pad_files(&fleet, &items[i], row.clone()));
+                let line = outputs::fleet::csv_line(&fleet, &row);
                 // Flushed per row: an interrupted run keeps every row it finished.
                 if let Err(e) = csv.write_all(line.as_bytes()).and_then(|()| csv.flush()) {
                     write_error = Some(e);
@@ -232,28 +213,10 @@ fn is_fleet_output(name: &str) -> bool {
         || name.starts_with("fleet_conicity_")
 }
 
-/// A row whose item panicked has no file cells: the item's paths, without hashes.
-fn pad_files(fleet: &Fleet, item: &Item, mut row: Row) -> Row {
-    if row.files.is_empty() {
-        row.files = fleet
-            .inputs()
-            .roles()
-            .iter()
-            .zip(fleet.inputs().files(item))
-            .map(|(&role, path)| fleet::InputFile {
-                role,
-                path,
-                sha256: None,
-            })
-            .collect();
-    }
-    row
-}
-
 /// One item's row; with `reports`, its full report written into `reports/<id>/` too.
-fn assess(fleet: &Fleet, item: &Item, reports: Option<&Path>) -> Result<Row, RowError> {
+fn assess(fleet: &Fleet, item: &Item, reports: Option<&Path>) -> Row {
     let Some(dir) = reports else {
-        return Ok(fleet.assess(item));
+        return fleet.assess(item);
     };
     let run = fleet.run(item);
     let mut row = fleet.row(item, run.as_ref().map(|(_, r)| r));
@@ -264,7 +227,7 @@ fn assess(fleet: &Fleet, item: &Item, reports: Option<&Path>) -> Result<Row, Row
             row.outcome = Err(RowError::new(format!("report not written: {e}")));
         }
     }
-    Ok(row)
+    row
 }
 
 /// Progress on standard error: a bar with count, rate and time left on a terminal, a plain

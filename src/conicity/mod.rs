@@ -69,6 +69,7 @@ pub use pair::{
 };
 
 /// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
+#[cfg(feature = "cli")]
 pub(crate) const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
 
 /// The default amplitudes: 0.5 to 10 mm in steps of 0.1 mm (96 values), exact decimals.

@@ -170,6 +170,8 @@ pub enum FleetError {
     Shard(String),
     /// No profiles or pairs to assess.
     NoItems,
+    /// A pairs file that cannot be read: the file, and the system's reason.
+    Unreadable(std::path::PathBuf, String),
 }
 
 /// What is wrong with a pairs file.
@@ -210,6 +212,9 @@ impl fmt::Display for FleetError {
                 );
             }
             FleetError::NoItems => return f.write_str("no profiles to assess"),
+            FleetError::Unreadable(path, reason) => {
+                return write!(f, "{}: {reason}", path.display());
+            }
         };
         match line {
             Some(line) => write!(f, "{origin}:{line}: ")?,

@@ -30,7 +30,7 @@ use crate::profile::Source;
 use crate::scene::{ProfileRef, Scene, SceneError};
 use crate::track::{PlacedRail, PlacedWheel, Side};
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -334,6 +334,65 @@ impl Fleet {
         let run = self.run(item);
         self.row(item, run.as_ref().map(|(_, r)| r))
     }
+
+    /// The row of `item` when its assessment gave no row (a bug that panicked, caught by
+    /// [`in_order`]): its files by path, without hashes, and `message` as its outcome.
+    pub fn failed_row(&self, item: &Item, error: RowError) -> Row {
+        Row {
+            id: item.id.clone(),
+            files: self
+                .inputs
+                .roles()
+                .iter()
+                .zip(self.inputs.files(item))
+                .map(|(&role, path)| InputFile {
+                    role,
+                    path,
+                    sha256: None,
+                })
+                .collect(),
+            outcome: Err(error),
+        }
+    }
+
+    /// Assesses `items` in parallel ([`in_order`] with `assess`, here [`Fleet::assess`] or a
+    /// caller's variant of it) and hands each row to `sink` in input order; an item whose
+    /// assessment panics (a bug) gets [`Fleet::failed_row`] saying so, and the others run.
+    pub fn assess_in_order(
+        &self,
+        items: &[Item],
+        assess: impl Fn(&Item) -> Row + Sync,
+        mut sink: impl FnMut(usize, Row) + Send,
+    ) {
+        in_order(
+            items,
+            |item| Ok(assess(item)),
+            |panic| {
+                Err(RowError::new(format!(
+                    "internal error (please report): {panic}"
+                )))
+            },
+            |i, row: Result<Row, RowError>| {
+                sink(
+                    i,
+                    row.unwrap_or_else(|error| self.failed_row(&items[i], error)),
+                );
+            },
+        );
+    }
+}
+
+/// The items of a pairs file (see [`parse_pairs`]: paths in it are relative to its folder)
+/// and what they replace.
+///
+/// # Errors
+/// [`FleetError::Unreadable`] when the file cannot be read, [`FleetError::Pairs`] (naming
+/// the file and line) when it is malformed.
+pub fn read_pairs(path: &Path) -> Result<(Vec<Item>, Inputs), FleetError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| FleetError::Unreadable(path.to_path_buf(), e.to_string()))?;
+    let dir = path.parent().unwrap_or(Path::new(""));
+    parse_pairs(&text, &path.display().to_string(), dir)
 }
 
 /// The SHA-256 the reader took of the file of `role`, from the placed profile.

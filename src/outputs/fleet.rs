@@ -1,13 +1,21 @@
 //! The fleet's outputs as bytes: `fleet.csv` line by line (its `#` header, then one line
-//! per row as rows complete), the fleet charts and the `index.html` page.
-//! [`crate::app`] writes them.
+//! per row as rows complete), or its rows as one [`Table`] ([`table`]: the same columns and
+//! numbers, for a library user); with the feature `cli`, the fleet charts and the
+//! `index.html` page. The command line (`app`) writes them.
 
-use super::{CSV_FORMAT, OutputFile};
+use super::CSV_FORMAT;
+#[cfg(feature = "cli")]
+use super::OutputFile;
+#[cfg(feature = "cli")]
 use crate::Error;
-use crate::fleet::{Fleet, Inputs, Row, Summary};
+use crate::fleet::{Fleet, Inputs, Row, RowError, Summary};
+#[cfg(feature = "cli")]
 use crate::report::chart::{Chart, Figure, LegendPosition, Series};
 use crate::report::table::format_number;
+#[cfg(feature = "cli")]
 use crate::report::{self, FigureEntry, ReportPage, TableEntry};
+use crate::report::{ColumnData, Table, TableError};
+#[cfg(feature = "cli")]
 use crate::scene::ImageFormat;
 
 /// The summary columns after the parameters when the rows carry Hertz results.
@@ -88,6 +96,7 @@ pub fn maintenance_status(inputs: Inputs, summary: &Summary) -> String {
     }
 }
 
+#[cfg(feature = "cli")]
 /// Whether a row's wheels break a maintenance limit (their dimensions defined).
 fn breaks_a_limit(row: &Row) -> bool {
     row.outcome
@@ -193,61 +202,79 @@ fn record(cells: &[String]) -> String {
     String::from_utf8(writer.into_inner().expect(expect)).expect("CSV of UTF-8 strings is UTF-8")
 }
 
-/// The line of `row` in `fleet.csv`: numbers as in every other CSV (10 significant digits,
-/// the same text as a report's `parameters.csv`).
-pub fn csv_line(fleet: &Fleet, row: &Row) -> String {
-    let number = |v: f64| format_number(v, CSV_FORMAT);
-    let mut cells = vec![row.id.clone()];
+/// One cell of a fleet row, as [`csv_line`] writes it and [`table`] holds it.
+enum Cell {
+    /// A number, written as every CSV writes numbers (10 significant digits).
+    Number(f64),
+    /// A count (`contact_point_jumps`), written as an integer (`NaN` when undefined).
+    Count(f64),
+    /// Text.
+    Text(String),
+}
+
+impl Cell {
+    fn text(&self) -> String {
+        match self {
+            Cell::Number(v) => format_number(*v, CSV_FORMAT),
+            Cell::Count(v) => format!("{v}"),
+            Cell::Text(t) => t.clone(),
+        }
+    }
+}
+
+/// The cells of `row`, in the order of [`columns`].
+fn cells(fleet: &Fleet, row: &Row) -> Vec<Cell> {
+    let mut cells = vec![Cell::Text(row.id.clone())];
     for f in &row.files {
-        cells.push(
+        cells.push(Cell::Text(
             f.path
                 .as_ref()
                 .map(|p| p.display().to_string())
                 .unwrap_or_default(),
-        );
-        cells.push(f.sha256.clone().unwrap_or_default());
+        ));
+        cells.push(Cell::Text(f.sha256.clone().unwrap_or_default()));
     }
     let summary = row.outcome.as_ref().ok();
-    cells.push(match &row.outcome {
+    cells.push(Cell::Text(match &row.outcome {
         Ok(_) => "ok".into(),
         Err(e) => e.to_string(),
-    });
+    }));
     let mut notes = Vec::new();
     let inputs = fleet.inputs();
     for &(_, k) in wheel_columns(inputs) {
         let d = summary.and_then(|s| s.maintenance.wheels[k].dimensions.as_ref().ok());
         for v in [d.map(|d| d.sh_mm), d.map(|d| d.sd_mm), d.map(|d| d.qr_mm)] {
-            cells.push(v.map_or("NaN".into(), number));
+            cells.push(Cell::Number(v.unwrap_or(f64::NAN)));
         }
     }
     if inputs.has_wheels() {
-        cells.push(summary.map_or_else(String::new, |s| maintenance_status(inputs, s)));
+        cells.push(Cell::Text(
+            summary.map_or_else(String::new, |s| maintenance_status(inputs, s)),
+        ));
     }
     for &(prefix, k) in rail_columns(inputs) {
         let wear = summary
             .and_then(|s| s.maintenance.rails.as_ref())
             .map(|r| &r[k]);
-        match wear {
-            Some(Ok(w)) => cells.extend([number(w.vertical_mm), number(w.gauge_face_mm)]),
+        let (vertical, face) = match wear {
+            Some(Ok(w)) => (w.vertical_mm, w.gauge_face_mm),
             Some(Err(e)) => {
-                cells.extend(["NaN".into(), "NaN".into()]);
                 notes.push(format!(
                     "{prefix}vertical_wear_mm, {prefix}gauge_face_wear_mm: {e}"
                 ));
+                (f64::NAN, f64::NAN)
             }
-            None => cells.extend(["NaN".into(), "NaN".into()]),
-        }
+            None => (f64::NAN, f64::NAN),
+        };
+        cells.extend([Cell::Number(vertical), Cell::Number(face)]);
     }
     let rows = parameter_rows(summary);
     for r in &rows {
-        cells.push(if summary.is_some() {
-            if r.unit == "count" {
-                format!("{}", r.value)
-            } else {
-                number(r.value)
-            }
+        let value = if summary.is_some() { r.value } else { f64::NAN };
+        cells.push(if r.unit == "count" {
+            Cell::Count(value)
         } else {
-            "NaN".into()
+            Cell::Number(value)
         });
         if summary.is_some() && !r.value.is_finite() {
             notes.push(format!("{}: {}", r.name, r.undefined));
@@ -256,22 +283,80 @@ pub fn csv_line(fleet: &Fleet, row: &Row) -> String {
     if fleet.has_hertz() {
         match summary.and_then(|s| s.max_p0) {
             Some(m) => {
-                cells.push(number(m.p0_mpa));
-                cells.push(number(m.y_ws_mm));
-                cells.push(m.side.name().to_string());
+                cells.push(Cell::Number(m.p0_mpa));
+                cells.push(Cell::Number(m.y_ws_mm));
+                cells.push(Cell::Text(m.side.name().to_string()));
             }
             None => {
-                cells.extend(["NaN".into(), "NaN".into(), String::new()]);
+                cells.extend([
+                    Cell::Number(f64::NAN),
+                    Cell::Number(f64::NAN),
+                    Cell::Text(String::new()),
+                ]);
                 if summary.is_some() {
                     notes.push("max_p0_MPa: no Hertz ellipse at any position".into());
                 }
             }
         }
     }
-    cells.push(notes.join("; "));
+    cells.push(Cell::Text(notes.join("; ")));
+    cells
+}
+
+/// The line of `row` in `fleet.csv`: numbers as in every other CSV (10 significant digits,
+/// the same text as a report's `parameters.csv`).
+pub fn csv_line(fleet: &Fleet, row: &Row) -> String {
+    let cells: Vec<String> = cells(fleet, row).iter().map(Cell::text).collect();
     record(&cells)
 }
 
+/// The rows of `fleet.csv` as one table (without its `#` lines): the columns of
+/// [`columns`], numbers as numbers (a count too), text as text. Its numbers are the
+/// unrounded values whose 10 significant digits `fleet.csv` prints.
+///
+/// # Errors
+/// [`TableError::LengthMismatch`] for a row whose files are not the fleet's (a row of
+/// another fleet: a caller's bug).
+pub fn table(fleet: &Fleet, rows: &[Row]) -> Result<Table, TableError> {
+    let names = columns(fleet);
+    // The cells of a failed row say which columns hold numbers: every row has the same
+    // kinds of cells in the same places.
+    let no_files = crate::fleet::Item {
+        id: String::new(),
+        wheels: None,
+        rails: None,
+    };
+    let kinds = cells(
+        fleet,
+        &fleet.failed_row(&no_files, RowError::new(String::new())),
+    );
+    let rows: Vec<Vec<Cell>> = rows.iter().map(|r| cells(fleet, r)).collect();
+    if let Some(r) = rows.iter().find(|r| r.len() != names.len()) {
+        return Err(TableError::LengthMismatch {
+            column: format!("the cells of row {}", r[0].text()),
+            expected: names.len(),
+            found: r.len(),
+        });
+    }
+    let mut t = Table::new();
+    for (j, (name, kind)) in names.into_iter().zip(&kinds).enumerate() {
+        let data = match kind {
+            Cell::Number(_) | Cell::Count(_) => ColumnData::Numeric(
+                rows.iter()
+                    .map(|r| match &r[j] {
+                        Cell::Number(v) | Cell::Count(v) => *v,
+                        Cell::Text(_) => f64::NAN,
+                    })
+                    .collect(),
+            ),
+            Cell::Text(_) => ColumnData::Text(rows.iter().map(|r| r[j].text().into()).collect()),
+        };
+        t.push_column(name, data)?;
+    }
+    Ok(t)
+}
+
+#[cfg(feature = "cli")]
 /// tan γe(3 mm) of a row, if it was assessed and the value is defined.
 fn at3(row: &Row) -> Option<f64> {
     row.outcome
@@ -281,6 +366,7 @@ fn at3(row: &Row) -> Option<f64> {
         .filter(|v| v.is_finite())
 }
 
+#[cfg(feature = "cli")]
 /// The row with the largest tan γe(3 mm).
 fn worst(rows: &[Row]) -> Option<&Row> {
     rows.iter()
@@ -288,8 +374,10 @@ fn worst(rows: &[Row]) -> Option<&Row> {
         .max_by(|a, b| at3(a).unwrap_or(0.0).total_cmp(&at3(b).unwrap_or(0.0)))
 }
 
+#[cfg(feature = "cli")]
 const AT3_LABEL: &str = "equivalent conicity tan γe(3 mm) (dimensionless)";
 
+#[cfg(feature = "cli")]
 /// The distribution of tan γe(3 mm) over the fleet: a histogram outline, the limit marked.
 pub fn histogram(rows: &[Row], limit: Option<f64>) -> Figure {
     let values: Vec<f64> = rows.iter().filter_map(at3).collect();
@@ -355,6 +443,7 @@ pub fn histogram(rows: &[Row], limit: Option<f64>) -> Figure {
     Figure::single(chart.legend(LegendPosition::Auto))
 }
 
+#[cfg(feature = "cli")]
 /// tan γe(3 mm) against the nonlinearity parameter, the pairs over the limit and the worst
 /// pair marked.
 pub fn conicity_against_nonlinearity(rows: &[Row], limit: Option<f64>) -> Figure {
@@ -387,6 +476,7 @@ pub fn conicity_against_nonlinearity(rows: &[Row], limit: Option<f64>) -> Figure
     Figure::single(chart.legend(LegendPosition::Auto))
 }
 
+#[cfg(feature = "cli")]
 /// The equivalent conicity functions of all pairs overlaid, the worst pair highlighted,
 /// the limit as a dashed line.
 pub fn conicity_functions(rows: &[Row], limit: Option<f64>, method: &str) -> Figure {
@@ -439,12 +529,14 @@ pub fn conicity_functions(rows: &[Row], limit: Option<f64>, method: &str) -> Fig
     Figure::single(chart.legend(LegendPosition::Auto))
 }
 
+#[cfg(feature = "cli")]
 /// The most wheels over a limit the Sd-against-Sh chart names one by one in its legend,
 /// those furthest beyond a limit (one palette colour each, besides the wheels within the
 /// limits, the limit box and the rest); the others share one entry (the page's table and
 /// fleet.csv list them all).
 const MAX_NAMED_OFFENDERS: usize = 5;
 
+#[cfg(feature = "cli")]
 /// Each wheel's flange thickness Sd against its flange height Sh, the limit box of the
 /// template's left wheel drawn dashed, the wheels that break a limit (qR included) named.
 pub fn flange_dimensions(
@@ -504,6 +596,7 @@ pub fn flange_dimensions(
     )
 }
 
+#[cfg(feature = "cli")]
 /// A wheel that breaks a maintenance limit, in the flange chart.
 struct Offender {
     /// Its name and the limits it breaks.
@@ -516,6 +609,7 @@ struct Offender {
     kind: String,
 }
 
+#[cfg(feature = "cli")]
 /// The `(Sh, Sd)` of every wheel of the fleet with defined dimensions: those within the
 /// limits, and the offenders, furthest beyond a limit first with the worst of each kind of
 /// breach (Sh too low, Sd too thick, ...) before the rest, so that every kind is named.
@@ -563,12 +657,14 @@ fn flange_points(rows: &[Row], inputs: Inputs) -> (Vec<(f64, f64)>, Vec<Offender
     (within, first)
 }
 
+#[cfg(feature = "cli")]
 /// Name and caption of the flange dimensions figure.
 const FLANGE_FIGURE: (&str, &str) = (
     "fleet_flange_dimensions",
     "Each wheel's flange thickness Sd against its flange height Sh (EN 15313: Sh the flange tip above the taping-line point, Sd from the inner face to the flank 10 mm above it), the maintenance limits of the template's wheel as a dashed box ([limits], by default the TSI's for its diameter). Wheels that break a limit, qR included, are named with the limits they break (five: the one furthest beyond a limit of each kind of breach, then the furthest; the table below and fleet.csv's maintenance_status have all). Wheels whose dimensions are undefined are not drawn.",
 );
 
+#[cfg(feature = "cli")]
 /// Names and captions of the fleet figures.
 const FIGURES: [(&str, &str); 3] = [
     (
@@ -585,6 +681,7 @@ const FIGURES: [(&str, &str); 3] = [
     ),
 ];
 
+#[cfg(feature = "cli")]
 /// The fleet's figures in the template's formats and `index.html`.
 ///
 /// # Errors
@@ -648,6 +745,7 @@ pub fn render(
     Ok(files)
 }
 
+#[cfg(feature = "cli")]
 /// The rows shown in the page's table: those over the limit, or without a limit the ten of
 /// highest tan γe(3 mm); at most [`MAX_LISTED`], highest first.
 fn listed(rows: &[Row], limit: Option<f64>) -> Vec<&Row> {
@@ -660,9 +758,11 @@ fn listed(rows: &[Row], limit: Option<f64>) -> Vec<&Row> {
     v
 }
 
+#[cfg(feature = "cli")]
 /// The most rows the page lists (the CSV holds them all).
 const MAX_LISTED: usize = 200;
 
+#[cfg(feature = "cli")]
 /// The page's summary lines: rows assessed and failed, the spread of tan γe(3 mm), the
 /// pairs over the limit.
 fn summary(rows: &[Row], failed: usize, limit: Option<f64>) -> Vec<String> {
@@ -697,6 +797,7 @@ fn summary(rows: &[Row], failed: usize, limit: Option<f64>) -> Vec<String> {
     summary
 }
 
+#[cfg(feature = "cli")]
 /// The table of the pairs over the limit (the ten highest without one).
 fn listed_table(
     rows: &[Row],
@@ -764,6 +865,7 @@ fn listed_table(
     }
 }
 
+#[cfg(feature = "cli")]
 /// The page's lines on the wheels over a maintenance limit and the rails' wear.
 fn maintenance_summary(rows: &[Row], inputs: Inputs) -> Vec<String> {
     let assessed: Vec<&Summary> = rows
@@ -813,6 +915,7 @@ fn maintenance_summary(rows: &[Row], inputs: Inputs) -> Vec<String> {
     lines
 }
 
+#[cfg(feature = "cli")]
 /// The table of the wheels over a maintenance limit (none for a fleet of rails).
 fn maintenance_table(rows: &[Row], inputs: Inputs) -> Vec<report::DataTable> {
     if !inputs.has_wheels() {
@@ -852,9 +955,11 @@ fn maintenance_table(rows: &[Row], inputs: Inputs) -> Vec<report::DataTable> {
     }]
 }
 
+#[cfg(feature = "cli")]
 /// The most failed rows the page names (the CSV holds them all).
 const MAX_FAILED_LISTED: usize = 50;
 
+#[cfg(feature = "cli")]
 /// One note per failed row (the first [`MAX_FAILED_LISTED`]).
 fn failed_notes(failed: &[&Row]) -> Vec<String> {
     let mut notes: Vec<String> = failed
@@ -880,6 +985,7 @@ fn failed_notes(failed: &[&Row]) -> Vec<String> {
     notes
 }
 
+#[cfg(feature = "cli")]
 fn page(
     fleet: &Fleet,
     rows: &[Row],

@@ -1,19 +1,31 @@
 //! The outputs of a scene: its tables (CSV), figures (SVG, PNG) and the `index.html` report,
-//! as bytes. Nothing here touches the file system; [`crate::app`] writes the files.
+//! as bytes. Nothing here touches the file system; the command line (`app`) writes the files.
+//!
+//! The tables ([`tables()`], [`mod@tables`], the fleet's rows in [`fleet`]) need no feature:
+//! a library user (the Python package among them) gets the same columns and numbers as the
+//! CSV files. The figures and the report pages need the feature `cli` (plotters, png).
 //!
 //! To add a figure: a variant in [`crate::pipeline::Figure`] (name, stage), a function in
 //! `outputs/figures/` (one file per stage) taking that stage's result, a caption in `caption`,
-//! an arm in [`figure`].
+//! an arm in `figure`.
 
+#[cfg(feature = "cli")]
 mod figures;
 pub mod fleet;
+#[cfg(feature = "cli")]
 mod page;
 pub mod tables;
 
 use crate::Error;
-use crate::pipeline::{Figure, Results};
-use crate::report::{self, FigureEntry, Table};
-use crate::scene::{ImageFormat, Scene};
+#[cfg(feature = "cli")]
+use crate::pipeline::Figure;
+use crate::pipeline::Results;
+#[cfg(feature = "cli")]
+use crate::report::FigureEntry;
+use crate::report::{self, Table};
+#[cfg(feature = "cli")]
+use crate::scene::ImageFormat;
+use crate::scene::Scene;
 use crate::track::Side;
 
 /// One output file: its name in the output folder and its bytes.
@@ -148,6 +160,7 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
     Ok(out)
 }
 
+#[cfg(feature = "cli")]
 /// The chart of `fig`, from the stage result it draws (which the run computed).
 ///
 /// # Errors
@@ -201,6 +214,7 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
 }
 
 /// The figure of the paper (Onat, Voltr & Lata 2014) that `fig` redraws, if any.
+#[cfg(feature = "cli")]
 fn paper_figure(fig: Figure) -> Option<&'static str> {
     Some(match fig {
         Figure::Profiles | Figure::Conicity => "Fig. 1",
@@ -216,6 +230,7 @@ fn paper_figure(fig: Figure) -> Option<&'static str> {
     })
 }
 
+#[cfg(feature = "cli")]
 /// The caption of a figure in the report: "Paper Fig. N: " before it only where the scene
 /// is the paper's case ([`Scene::is_paper_case`]), remarks only where the figure shows what
 /// they describe.
@@ -255,6 +270,7 @@ pub(crate) fn caption(fig: Figure, scene: &Scene, results: &Results) -> String {
     }
 }
 
+#[cfg(feature = "cli")]
 /// `text` with its first letter in upper case.
 fn capitalised(text: &str) -> String {
     let mut chars = text.chars();
@@ -263,6 +279,7 @@ fn capitalised(text: &str) -> String {
         .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
 
+#[cfg(feature = "cli")]
 /// Every output file of a scene: tables, figures in the scene's formats, and `index.html`.
 /// `extra` figures (already written by another command, such as `wheelrail tradeoff`) are
 /// listed in the page after the scene's own.
@@ -303,6 +320,7 @@ pub fn render(
     Ok(files)
 }
 
+#[cfg(feature = "cli")]
 /// The scene's figures in each of its formats, and their entries on the report page.
 fn figure_files(
     scene: &Scene,
@@ -342,6 +360,7 @@ fn figure_files(
     Ok((entries, files))
 }
 
+#[cfg(feature = "cli")]
 /// The tradeoff study's files: `tradeoff.csv` and its chart in `formats`, and the page entry
 /// that lists the chart in a report.
 ///
@@ -358,6 +377,7 @@ pub fn tradeoff_files(
     tradeoff_chart_files(csv, &points, formats)
 }
 
+#[cfg(feature = "cli")]
 /// `tradeoff.csv` as `csv` and the chart of its `points` in `formats` (to draw the chart
 /// again from a committed table, `wheelrail tradeoff --replot`), and the page entry.
 ///
@@ -391,11 +411,13 @@ pub fn tradeoff_chart_files(
     Ok((files, tradeoff_entry()))
 }
 
+#[cfg(feature = "cli")]
 /// The chart of the tradeoff study's `points`.
 pub fn tradeoff_chart(points: &[crate::tradeoff::ChartPoint]) -> report::Figure {
     figures::tradeoff(points)
 }
 
+#[cfg(feature = "cli")]
 /// The report entry of the tradeoff chart.
 pub fn tradeoff_entry() -> FigureEntry {
     FigureEntry {

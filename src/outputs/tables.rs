@@ -516,6 +516,7 @@ pub fn hertz_accuracy(a: &HertzAccuracy) -> Result<(Table, Table), TableError> {
     Ok((series, ratio))
 }
 
+#[cfg(feature = "cli")]
 /// The run time against error study (`tradeoff.csv`).
 ///
 /// # Errors

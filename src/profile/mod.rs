@@ -86,6 +86,7 @@ pub struct Profile {
 }
 
 /// Names of the built-in profiles accepted in scenes and by `wheelrail profile`.
+#[cfg(feature = "cli")]
 pub(crate) const BUILT_IN: [&str; 2] = ["S1002", "UIC60E1"];
 
 impl Profile {

@@ -40,7 +40,9 @@
 #[cfg(feature = "cli")]
 pub mod chart;
 mod csv_out;
+#[cfg(feature = "cli")]
 pub mod golden;
+#[cfg(feature = "cli")]
 pub mod html;
 mod number;
 pub mod table;
@@ -50,9 +52,11 @@ pub use chart::{
     Chart, ChartError, Figure, HBand, LegendPosition, PointLabel, Series, SeriesStyle, VLine,
     render_png, render_svg,
 };
+#[cfg(feature = "cli")]
 pub use golden::{
     ColumnDiff, Comparison, FileOutcome, FilesComparison, Tolerance, TolerancePolicy, compare,
     compare_files,
 };
+#[cfg(feature = "cli")]
 pub use html::{DataTable, FigureEntry, ReportPage, TableEntry, render_html};
 pub use table::{Column, ColumnData, NumberFormat, Table, TableBuilder, TableError};

@@ -300,6 +300,12 @@ impl Table {
         &self.columns
     }
 
+    /// The columns in order, taken out of the table: their values without a copy (the
+    /// Python package hands them to NumPy so).
+    pub fn into_columns(self) -> Vec<Column> {
+        self.columns
+    }
+
     /// The column names in order.
     pub fn column_names(&self) -> impl Iterator<Item = &str> {
         self.columns.iter().map(|c| c.name.as_str())
