@@ -21,6 +21,7 @@ mod low;
 mod minimum;
 mod scan;
 mod tabulated;
+mod yaw;
 #[cfg(test)]
 pub(crate) mod tests;
 
@@ -31,6 +32,7 @@ use tabulated::Tables;
 pub use bound::CERTIFY_TOL_MM;
 pub use certify::Certificate;
 pub use contact::ContactPoint;
+pub use yaw::{MAX_SLOPE_TAN, MIN_DY_DS, Yaw, YawModel};
 pub(crate) use scan::{PoseBox, Scanned};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
