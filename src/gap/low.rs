@@ -49,6 +49,7 @@ impl SideGap<'_> {
         out: &mut Vec<(f64, f64)>,
     ) {
         out.clear();
+        self.check_yaw(pose);
         // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
         // not low, exactly as the table would answer.
         let (first, last) = self.over_rail(pose);

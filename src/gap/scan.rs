@@ -55,8 +55,8 @@ pub(crate) const POSE_BOX_SIN: f64 = 1e-3;
 /// the corners of boxes along the paper sweep.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct PoseBox {
-    /// `(delta0, sin phi0)`, `None` until made.
-    centre: Option<(f64, f64)>,
+    /// `(delta0, sin phi0)` and the bits of the side's yaw, `None` until made.
+    centre: Option<(f64, f64, u64)>,
     /// Per block, the lower bound of `g - (s Yc + c Zc)` over the box.
     pub(super) bounds: Vec<f64>,
     /// Per block, the same for every point of its cells against the exact rail (the
@@ -74,9 +74,10 @@ impl PoseBox {
     /// Whether `pose` lies in the box (false before the first scan).
     #[inline]
     pub(super) fn holds(&self, pose: &SidePose) -> bool {
-        self.centre.is_some_and(|(delta, sin)| {
+        self.centre.is_some_and(|(delta, sin, yaw)| {
             (pose.delta - delta).abs() <= POSE_BOX_DELTA_MM
                 && (pose.sin - sin).abs() <= POSE_BOX_SIN
+                && pose.yaw.to_bits() == yaw
         })
     }
 }
@@ -244,6 +245,7 @@ impl SideGap<'_> {
     ) {
         out.clear();
         count!(Scan, 1);
+        self.check_yaw(pose);
         // Only wheel samples that can lie above the rail.
         let (first, last) = self.over_rail(pose);
         let coarse = &self.coarse[first..last];
@@ -494,7 +496,7 @@ impl SideGap<'_> {
             ]
         };
         let heights = self.rail.heights();
-        pose_box.centre = Some((d, sin));
+        pose_box.centre = Some((d, sin, pose.yaw.to_bits()));
         pose_box.trig = [c, s];
         pose_box.bounds.clear();
         pose_box.bounds.extend(self.blocks.iter().map(|&block| {

@@ -245,6 +245,7 @@ fn pose_of(delta: f64, sin: f64) -> SidePose {
         delta,
         cos: (1.0 - sin * sin).sqrt(),
         sin,
+        yaw: 0.0,
     }
 }
 

@@ -117,7 +117,7 @@ impl Yaw {
     /// The side's view of a wheelset yaw `yaw_rad` on the side with `sign` (+1 left, -1
     /// right).
     pub fn new(sign: f64, yaw_rad: f64, model: YawModel) -> Yaw {
-        let psi = sign * yaw_rad;
+        let psi = Yaw::side_psi(sign, yaw_rad);
         let (sin, cos) = psi.sin_cos();
         Yaw {
             psi,
@@ -131,6 +131,13 @@ impl Yaw {
     /// The side's yaw (rad).
     pub fn psi(&self) -> f64 {
         self.psi
+    }
+
+    /// `sign * yaw_rad`, with no yaw always `+0` (a pose and the side's yaw compare by
+    /// their bits).
+    #[inline]
+    pub(crate) fn side_psi(sign: f64, yaw_rad: f64) -> f64 {
+        sign * yaw_rad + 0.0
     }
 
     /// The model.
@@ -227,7 +234,10 @@ impl Yaw {
         let (r_lo, r_hi) = (-c.z.1, -c.z.0);
         let ts = self.tan * self.sin;
         let r_f2 = product((r_lo, r_hi), (f2_lo, f2_hi));
-        let sum = (q_abs_min * q_abs_min + r_f2.0, q_abs_max * q_abs_max + r_f2.1);
+        let sum = (
+            q_abs_min * q_abs_min + r_f2.0,
+            q_abs_max * q_abs_max + r_f2.1,
+        );
         let dy_ds = (self.cos - ts * sum.1, self.cos - ts * sum.0);
         if !(dy_ds.0 >= MIN_DY_DS) {
             return None;
@@ -358,7 +368,10 @@ mod tests {
                 assert!((z - p.z).abs() < 1e-9, "psi {psi} s {s}: {} vs {z}", p.z);
                 assert!((s - s_brute).abs() < 1e-5, "psi {psi} s {s}: {s_brute}");
                 let x = yaw.x(&wheel.at(s));
-                assert!((x - x_brute).abs() < 1e-5, "psi {psi} s {s}: x {x} vs {x_brute}");
+                assert!(
+                    (x - x_brute).abs() < 1e-5,
+                    "psi {psi} s {s}: x {x} vs {x_brute}"
+                );
             }
         }
     }
@@ -376,7 +389,11 @@ mod tests {
             let (m, p, c) = (at(s - h), at(s + h), at(s));
             let dy = (p.y - m.y) / (2.0 * h);
             let slope = (p.z - m.z) / (p.y - m.y);
-            assert!((dy - c.dy_ds).abs() < 1e-7, "s {s}: dy/ds {dy} vs {}", c.dy_ds);
+            assert!(
+                (dy - c.dy_ds).abs() < 1e-7,
+                "s {s}: dy/ds {dy} vs {}",
+                c.dy_ds
+            );
             assert!(
                 (slope - c.slope).abs() < 1e-7 * c.slope.abs().max(1.0),
                 "s {s}: slope {slope} vs {}",
@@ -439,7 +456,11 @@ mod tests {
                         let Some(p) = yaw.outline(wheel.at(s)) else {
                             continue;
                         };
-                        assert!(c.z.0 <= p.z && p.z <= c.z.1, "psi {psi} [{a}, {b}] z {}", p.z);
+                        assert!(
+                            c.z.0 <= p.z && p.z <= c.z.1,
+                            "psi {psi} [{a}, {b}] z {}",
+                            p.z
+                        );
                         assert!(
                             c.d.d1.0 <= -p.slope && -p.slope <= c.d.d1.1,
                             "psi {psi} [{a}, {b}] slope {}: {:?}",

@@ -66,7 +66,7 @@ impl WheelCells {
 impl WheelCell {
     /// The bounds over two runs of cells together.
     #[inline]
-    fn union(self, o: WheelCell) -> WheelCell {
+    pub(crate) fn union(self, o: WheelCell) -> WheelCell {
         WheelCell {
             d: self.d.union(o.d),
             z: (self.z.0.min(o.z.0), self.z.1.max(o.z.1)),
