@@ -479,4 +479,97 @@ mod tests {
             }
         }
     }
+
+    /// A wheel whose profile is a circular arc of radius 100 mm about the taping line (a
+    /// torus) on a rail whose head is a plane falling 1:10 towards the field side, both as
+    /// point profiles, on a track without inclination. The rail's normal is fixed, so the
+    /// point of contact follows from the tangent plane alone: the rolled outline's slope
+    /// `atan(m) + phi` equals the plane's, `m = -q / (cos psi w)` gives the profile slope
+    /// `q = -M cos psi / sqrt(1 + M^2 sin^2 psi)` (`M = tan(atan(Z') - phi)`), and the arc
+    /// the point `s = -q R / sqrt(1 + q^2)`, its radius, lead `-r q tan psi` (close to
+    /// `r tan(delta) psi`) and x. The gap's minimum lands there to the arc's sampling
+    /// (1e-9 mm in `s`), at shifts, rolls and yaws up to 30 mrad either way.
+    #[test]
+    fn an_arc_wheel_on_a_plane_touches_where_the_tangent_planes_agree() {
+        use crate::gap::{PoseBox, Scanned, SideGap, SidePose};
+        use crate::profile::ProfileKind;
+        use crate::profile::read::PointProfile;
+        use crate::track::{PlacedRail, SidePair};
+        let radius: f64 = 100.0;
+        let arc: Vec<[f64; 2]> = (-400..=400)
+            .map(|k| {
+                let s = 0.1 * f64::from(k);
+                [s, (radius * radius - s * s).sqrt() - radius]
+            })
+            .collect();
+        let plane: Vec<[f64; 2]> = (0..=600)
+            .map(|k| [0.1 * f64::from(k), -0.01 * f64::from(k)])
+            .collect();
+        let wheel = PointProfile::from_points(ProfileKind::Wheel, "arc R100", arc).unwrap();
+        let rail = PointProfile::from_points(ProfileKind::Rail, "plane 1:10", plane).unwrap();
+        let layout = TrackLayout::standard(Inclination::VERTICAL);
+        let pair = SidePair::new(
+            PlacedWheel::place(Profile::from_points(wheel, 0.0).unwrap(), 460.0, &layout).unwrap(),
+            PlacedRail::place(
+                Profile::from_points(rail, 0.0).unwrap(),
+                Inclination::VERTICAL,
+                &layout,
+            )
+            .unwrap(),
+        );
+        let rail_slope: f64 = -0.1;
+        let mut checked = 0;
+        for sign in [1.0, -1.0] {
+            for psi in [0.01, 0.03, -0.02] {
+                let mut side = SideGap::new(&pair, sign);
+                let yaw = Yaw::new(sign, psi, YawModel::Exact);
+                side.set_yaw(yaw);
+                for y_ws in [-4.0, 0.0, 3.0] {
+                    for roll in [0.0, 2e-3, -1e-3] {
+                        let pose = SidePose::yawed(sign, y_ws, roll, psi);
+                        let mut basins = Vec::new();
+                        side.basins(
+                            &pose,
+                            &mut PoseBox::default(),
+                            &mut Scanned::default(),
+                            &mut basins,
+                        );
+                        let p = basins
+                            .iter()
+                            .filter_map(|&b| side.minimum(b, None, &pose))
+                            .min_by(|a, b| a.g.total_cmp(&b.g))
+                            .unwrap();
+                        let phi = sign * roll;
+                        let m = (rail_slope.atan() - phi).tan();
+                        let (sn, cs) = yaw.psi().sin_cos();
+                        let q = -m * cs / (1.0 + m * m * sn * sn).sqrt();
+                        let s_exact = -q * radius / (1.0 + q * q).sqrt();
+                        let r = 460.0 + (radius * radius - s_exact * s_exact).sqrt() - radius;
+                        let lead = -r * q * yaw.psi().tan();
+                        let at = format!("sign {sign} psi {psi} y {y_ws} roll {roll}");
+                        assert!((p.s - s_exact).abs() < 1e-9, "{at}: s {} vs {s_exact}", p.s);
+                        let base = side.wheel().at(p.s);
+                        assert!(
+                            (yaw.lead(&base) - lead).abs() < 1e-9,
+                            "{at}: lead {} vs {lead}",
+                            yaw.lead(&base)
+                        );
+                        // The contact angle in the track frame is the plane's.
+                        assert!(
+                            (p.wheel.slope.atan() + phi - rail_slope.atan()).abs() < 1e-10,
+                            "{at}"
+                        );
+                        // Within a few per mille of the small-angle estimate r tan(delta) psi.
+                        let estimate = r * (rail_slope.atan() - phi).tan().abs() * yaw.psi();
+                        assert!(
+                            (lead.abs() - estimate.abs()).abs() <= 2e-3 * estimate.abs(),
+                            "{at}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(checked, 54);
+    }
 }
