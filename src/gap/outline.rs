@@ -46,6 +46,15 @@ impl SideGap<'_> {
         );
     }
 
+    /// The pose of this side for a wheelset shift and roll at the side's yaw.
+    #[inline]
+    pub fn pose(&self, y_ws: f64, roll: f64) -> super::SidePose {
+        super::SidePose {
+            yaw: self.yaw.psi(),
+            ..super::SidePose::new(self.sign, y_ws, roll)
+        }
+    }
+
     /// Whether the side's wheel is seen through a yawed outline (not the profile itself).
     #[inline]
     pub(crate) fn yawed(&self) -> bool {

@@ -4,11 +4,49 @@
 //! [`PositionSolver`].
 
 use super::continuation::Continuation;
-use super::jumps::{Refinement, find_jumps};
+use super::jumps::{Ask, Refine, Refinement, find_jumps};
 use super::minima::Scratch;
 use super::solve::PositionSolver;
 use super::{Jump, Position, Solver};
+use crate::gap::SideGap;
 use crate::sweep::{Mirror, Sweep};
+
+/// The solver a continuation or a refinement solves with: the sweep's own where the yaw is
+/// fixed, a copy prepared for each position's yaw where it changes along the sweep.
+struct Local<'s, 'a> {
+    shared: &'s PositionSolver<'a>,
+    own: Option<PositionSolver<'a>>,
+}
+
+impl<'s, 'a> Local<'s, 'a> {
+    fn new(shared: &'s PositionSolver<'a>) -> Local<'s, 'a> {
+        Local {
+            shared,
+            own: shared.yaw_varies().then(|| shared.clone()),
+        }
+    }
+
+    /// The solver prepared for the shift `y_ws`.
+    fn at(&mut self, y_ws: f64) -> &PositionSolver<'a> {
+        match &mut self.own {
+            Some(own) => {
+                own.prepare(y_ws);
+                own
+            }
+            None => self.shared,
+        }
+    }
+}
+
+impl<'a> Refine<'a> for Local<'_, 'a> {
+    fn solve(&mut self, y_ws: f64, theta0: f64, ask: Ask, scratch: &mut Scratch) -> Position {
+        self.at(y_ws).solve(y_ws, theta0, scratch, ask.only)
+    }
+
+    fn sides_at(&mut self, y_ws: f64) -> &[SideGap<'a>; 2] {
+        self.at(y_ws).sides()
+    }
+}
 
 /// Halves of a sweep shorter than this (positions) run one after the other on a calling
 /// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
@@ -69,6 +107,7 @@ fn continuation(
 ) -> Vec<Position> {
     let mut scratch = Scratch::default();
     let mut path = Continuation::new(centre_roll);
+    let mut local = Local::new(solve);
     indices
         .map(|i| {
             let y = shifts[i];
@@ -77,7 +116,7 @@ fn continuation(
             {
                 scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
             }
-            let p = solve.solve(y, path.predict(y), &mut scratch, None);
+            let p = local.at(y).solve(y, path.predict(y), &mut scratch, None);
             path.push(&p);
             p
         })
@@ -135,11 +174,5 @@ fn jumps_in(solve: &PositionSolver, part: &[Position], scratch: &mut Scratch) ->
         // to skip.
         certifying: *solve.solver() != Solver::Paper,
     };
-    find_jumps(
-        solve.sides(),
-        part,
-        refinement,
-        scratch,
-        |y, theta0, ask, scratch| solve.solve(y, theta0, scratch, ask.only),
-    )
+    find_jumps(&mut Local::new(solve), part, refinement, scratch)
 }
