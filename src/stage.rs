@@ -75,6 +75,8 @@ pub enum Figure {
     RollingRadius,
     /// Contact angles against the shift (paper Fig. 2).
     ContactAngles,
+    /// Lead of each wheel's contact ahead of the axle against the shift (yaw).
+    ContactLead,
     /// Roll angle against the shift (paper Fig. 2).
     Roll,
     /// Wickens' contact angle parameter against the shift (paper Fig. 2).
@@ -101,7 +103,7 @@ pub enum Figure {
 
 impl Figure {
     /// Every figure, in report order.
-    pub const ALL: [Figure; 17] = [
+    pub const ALL: [Figure; 18] = [
         Figure::Profiles,
         Figure::Conicity,
         Figure::Curvature,
@@ -110,6 +112,7 @@ impl Figure {
         Figure::EquivalentConicity,
         Figure::DeltaRLinearised,
         Figure::ContactAngles,
+        Figure::ContactLead,
         Figure::Roll,
         Figure::ContactAngleParameter,
         Figure::ContactMap,
@@ -130,6 +133,7 @@ impl Figure {
             Figure::ContactPoints => "contact_points",
             Figure::RollingRadius => "rolling_radius",
             Figure::ContactAngles => "contact_angles",
+            Figure::ContactLead => "contact_lead",
             Figure::Roll => "roll",
             Figure::ContactAngleParameter => "contact_angle_parameter",
             Figure::ContactMap => "contact_map",
@@ -156,6 +160,7 @@ impl Figure {
             Figure::ContactPoints
             | Figure::RollingRadius
             | Figure::ContactAngles
+            | Figure::ContactLead
             | Figure::Roll
             | Figure::ContactAngleParameter
             | Figure::ContactMap => Stage::Rigid,

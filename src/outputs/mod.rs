@@ -164,6 +164,7 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
         Figure::ContactPoints => figures::contact_points(p, rigid()?),
         Figure::RollingRadius => figures::rolling_radius(rigid()?),
         Figure::ContactAngles => figures::contact_angles(rigid()?),
+        Figure::ContactLead => figures::contact_lead(rigid()?),
         Figure::Roll => figures::roll(rigid()?),
         Figure::ContactAngleParameter => figures::contact_angle_parameter(rigid()?),
         Figure::ContactMap => figures::contact_map(p, rigid()?),
@@ -206,6 +207,15 @@ pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
         Figure::ContactPoints => "Paper Fig. 2: rigid contact points on the wheel (profile coordinate) and on the rail (from the top of rail) against the lateral shift. Jumps of a contact point are gaps, not lines.".into(),
         Figure::RollingRadius => "Paper Fig. 2: rolling radius difference r_left - r_right of the rigid contact.".into(),
         Figure::ContactAngles => "Paper Fig. 2: contact angles of the rigid contact in the track frame, roll included, mirrored per side.".into(),
+        Figure::ContactLead => {
+            let yaw = scene.sweep().yaw();
+            format!(
+                "Lead of each wheel's rigid contact point ahead of the axle, along the wheelset's own forward axis, for the wheelset yawed by {} mrad + {} mrad/mm × y_ws ({} outline: the points of the wheel the rail sees); on the tread a fraction of a millimetre, on the flange about r tan γ ψ. Without yaw the lead is 0.",
+                crate::message::Number(yaw.yaw_rad() * 1e3),
+                crate::message::Number(yaw.yaw_rad_per_mm() * 1e3),
+                yaw.model().name()
+            )
+        }
         Figure::Roll => "Paper Fig. 2: roll angle of the wheelset solved with the contact (paper Eqs. 2-5).".into(),
         Figure::ContactAngleParameter => "Paper Fig. 2: Wickens' contact angle parameter; undefined at y_ws = 0.".into(),
         Figure::ContactMap => "Contact map: each rigid contact point of the sweep on the wheel (drawn 8 mm above its resting place) linked to its point on the rail; where contact lives and where it jumps.".into(),

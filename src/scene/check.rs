@@ -64,8 +64,8 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let nominal_radius_mm = nominal_radii(raw)?;
     let (layout, rail_profile_inclination, smoothing_wavelength_mm) = track(raw)?;
     let (wheel_load_n, wheel_material, rail_material) = load_and_materials(raw)?;
-    let sweep = sweep(&raw.sweep)?;
-    let (figures, formats) = outputs(raw)?;
+    let sweep = yawed(raw, sweep(&raw.sweep)?)?;
+    let (figures, formats) = outputs(raw, sweep.yaw().is_yawed())?;
     let rigid_solver = rigid_solver(raw)?;
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
     let (hertz, hertz_contact) = hertz(raw)?;
@@ -306,10 +306,14 @@ fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Inval
     Ok((wheel_load_n, wheel_material, rail_material))
 }
 
-/// The figures and image formats asked for.
-fn outputs(raw: &RawScene) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
+/// The figures and image formats asked for; by default every figure (the contact's lead
+/// only for a `yawed` wheelset: without yaw it is 0).
+fn outputs(raw: &RawScene, yawed: bool) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
     let figures = match &raw.outputs.figures {
-        None => crate::stage::Figure::ALL.to_vec(),
+        None => crate::stage::Figure::ALL
+            .into_iter()
+            .filter(|&f| yawed || f != Figure::ContactLead)
+            .collect(),
         Some(names) => names
             .iter()
             .map(|n| {
@@ -592,6 +596,61 @@ fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, S
             Number(v)
         ))
     }
+}
+
+/// The largest `sweep.yaw_mrad_per_mm` (mrad/mm): faster, the yaw would pass the 50 mrad of
+/// [`crate::sweep::MAX_YAW_RAD`] within 5 mm of shift (the Manchester benchmark's is 2.4).
+const MAX_YAW_MRAD_PER_MM: f64 = 10.0;
+
+/// `sweep` with the wheelset's yaw of `[wheelset] yaw_mrad`, `yaw_model` and `[sweep]
+/// yaw_mrad_per_mm`, or the offending key and a message.
+fn yawed(raw: &RawScene, sweep: Sweep) -> Result<Sweep, Invalid> {
+    use crate::gap::YawModel;
+    let max_mrad = crate::sweep::MAX_YAW_RAD * 1e3;
+    let yaw_mrad = raw.wheelset.yaw_mrad.unwrap_or(0.0);
+    let per_mm = raw.sweep.yaw_mrad_per_mm.unwrap_or(0.0);
+    for (key, v, bound, what) in [
+        ("wheelset.yaw_mrad", yaw_mrad, max_mrad, "mrad"),
+        (
+            "sweep.yaw_mrad_per_mm",
+            per_mm,
+            MAX_YAW_MRAD_PER_MM,
+            "mrad/mm",
+        ),
+    ] {
+        if !(v.abs() <= bound) {
+            return Err(invalid(
+                key,
+                format!(
+                    "{} {what} is no wheelset's yaw; expected -{} to {} {what} (a yaw in radians or degrees would be a unit mistake)",
+                    Number(v),
+                    Number(bound),
+                    Number(bound)
+                ),
+            ));
+        }
+    }
+    let model = match raw.wheelset.yaw_model.as_deref() {
+        None => YawModel::Exact,
+        Some(name) => YawModel::from_name(name).ok_or_else(|| {
+            invalid(
+                "wheelset.yaw_model",
+                format!("unknown yaw model {name:?}; expected \"exact\" or \"small_angle\""),
+            )
+        })?,
+    };
+    let key = if per_mm != 0.0 {
+        "sweep.yaw_mrad_per_mm"
+    } else {
+        "wheelset.yaw_mrad"
+    };
+    sweep
+        .with_yaw(crate::sweep::YawRule::new(
+            yaw_mrad * 1e-3,
+            per_mm * 1e-3,
+            model,
+        ))
+        .map_err(|e| invalid(key, e.to_string()))
 }
 
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.

@@ -172,6 +172,10 @@ pub struct RawTrack {
 pub struct RawWheelset {
     /// Distance between the inner faces of the wheels.
     pub flange_back_mm: Option<f64>,
+    /// A fixed yaw of the wheelset, mrad (right-hand about z up).
+    pub yaw_mrad: Option<f64>,
+    /// The model of the yawed wheel's outline: "exact" or "small_angle".
+    pub yaw_model: Option<String>,
 }
 
 /// `[load]`.
@@ -212,6 +216,8 @@ pub struct RawSweep {
     pub to_mm: Option<f64>,
     /// Step between lateral shifts.
     pub step_mm: Option<f64>,
+    /// Yaw growing with the shift, mrad per mm (added to `wheelset.yaw_mrad`).
+    pub yaw_mrad_per_mm: Option<f64>,
 }
 
 /// `[outputs]`.

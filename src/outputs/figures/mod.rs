@@ -20,8 +20,8 @@ pub(crate) use hertz::{hertz_accuracy, pressure, semi_axes};
 pub(crate) use profiles::{conicity, curvature, profiles};
 pub(crate) use quasi_elastic::{epsilon_sensitivity, quasi_elastic_map, quasi_elastic_points};
 pub(crate) use rigid::{
-    contact_angle_parameter, contact_angles, contact_map, contact_points, flange_onsets, roll,
-    rolling_radius,
+    contact_angle_parameter, contact_angles, contact_lead, contact_map, contact_points,
+    flange_onsets, roll, rolling_radius,
 };
 pub(crate) use tradeoff::tradeoff;
 
