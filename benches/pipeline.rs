@@ -179,6 +179,52 @@ fn rigid_default_unmirrored() -> RigidSweep {
     )
 }
 
+/// The paper sweep with the wheelset yawed as the Manchester benchmark yaws it (2.4 mrad per
+/// mm of shift, 36 mrad at 15 mm), solved at every position: the outline of each position's
+/// yaw prepared per position. Compare with `rigid_default_unmirrored` (the same positions
+/// without yaw).
+#[divan::bench]
+fn rigid_yawed() -> RigidSweep {
+    rigid::search(
+        black_box(placement_unmirrored()),
+        yawed_sweep(wheelrail::sweep::YawRule::new(
+            0.0,
+            2.4e-3,
+            Default::default(),
+        )),
+        black_box(Solver::default()),
+    )
+}
+
+/// The same with a fixed yaw of 10 mrad (a wheelset in a curve; a row of a contact table):
+/// the outline prepared once.
+#[divan::bench]
+fn rigid_yawed_fixed() -> RigidSweep {
+    rigid::search(
+        black_box(placement_unmirrored()),
+        yawed_sweep(wheelrail::sweep::YawRule::new(
+            0.01,
+            0.0,
+            Default::default(),
+        )),
+        black_box(Solver::default()),
+    )
+}
+
+/// The paper sweep with the wheelset yawed by `yaw`.
+fn yawed_sweep(yaw: wheelrail::sweep::YawRule) -> &'static Sweep {
+    static S: OnceLock<std::sync::Mutex<Vec<(wheelrail::sweep::YawRule, &'static Sweep)>>> =
+        OnceLock::new();
+    let cache = S.get_or_init(Default::default);
+    let mut cache = cache.lock().unwrap();
+    if let Some((_, s)) = cache.iter().find(|(y, _)| *y == yaw) {
+        return s;
+    }
+    let sweep: &'static Sweep = Box::leak(Box::new(scene().sweep().clone().with_yaw(yaw).unwrap()));
+    cache.push((yaw, sweep));
+    sweep
+}
+
 /// The rigid sweep with the paper's solver.
 #[divan::bench(sample_count = 30)]
 fn rigid_paper() -> RigidSweep {

@@ -115,9 +115,14 @@ impl SideGap<'_> {
             slack: self.value_jumps(),
             hard: 0,
         };
+        // The cushions read the outline's bounds at one yaw: made again at another.
+        if pose_box.cushion_yaw != pose.yaw.to_bits() {
+            pose_box.cushions.fill(f64::NAN);
+            pose_box.cushion_yaw = pose.yaw.to_bits();
+        }
         let (first, last) = scanned.range;
         if last >= first + 2 {
-            let [yc, zc] = self.box_reference();
+            let [yc, zc] = pose_box.reference;
             let common = pose.sin * yc + pose.cos * zc;
             for b in first / SCAN_BLOCK..=(last - 2) / SCAN_BLOCK {
                 // Step 1 for most blocks, in the loop: a block the scan skipped whose bound
@@ -151,7 +156,7 @@ impl SideGap<'_> {
         let (first, last) = scanned.range;
         let t = pass.threshold();
         if !scanned.evaluated(b) {
-            let [yc, zc] = self.box_reference();
+            let [yc, zc] = pose_box.reference;
             let common = pose.sin * yc + pose.cos * zc;
             if pose_box.certified[b] + common >= t || self.certified_block_bound(b, pose) >= t {
                 return;

@@ -186,8 +186,8 @@ pub struct SideGap<'a> {
     /// The yaw whose outline `coarse`, `blocks`, `cert_blocks`, `group_extents`, the
     /// tables and `domain` hold ([`SideGap::set_yaw`]).
     yaw: Yaw,
-    /// The profile points of the coarse samples (no yaw), from which an outline is made.
-    base: Vec<WheelPoint>,
+    /// What the outline of a yaw is made from (`outline.rs`), made on the first yaw.
+    outline_base: std::sync::Arc<std::sync::OnceLock<outline::OutlineBase>>,
     /// With a yaw that moves the outline: per block, the widest lateral extent of one of
     /// its coarse cells (mm), and the largest step of the outline at a section joint,
     /// vertical plus the rail's steepest slope times sideways (mm).
@@ -195,6 +195,9 @@ pub struct SideGap<'a> {
     outline_jump: f64,
     /// With a yaw that moves the outline: the first and last coarse sample that take part.
     outline_samples: (usize, usize),
+    /// Whether the side's yaw changes from pose to pose (a sweep whose yaw grows with the
+    /// shift): its boxes of poses then span yaws ([`SideGap::set_yaw_varies`]).
+    yaw_varies: bool,
     /// Section joints of the wheel profile (where its value may jump).
     joints: Vec<f64>,
     /// Side-frame lateral positions of the rail profile's breaks
@@ -205,18 +208,21 @@ pub struct SideGap<'a> {
 }
 
 /// `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of the coarse samples of each block of [`SCAN_BLOCK`].
-fn sample_blocks(coarse: &[[f64; 3]]) -> Vec<[f64; 4]> {
-    coarse
-        .chunks(SCAN_BLOCK)
-        .map(|c| {
-            let (z_lo, z_hi) = c
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-                    (a.min(p[2]), b.max(p[2]))
-                });
-            [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
-        })
-        .collect()
+fn sample_blocks(coarse: &[[f64; 3]], out: &mut Vec<[f64; 4]>) {
+    out.clear();
+    out.extend(coarse.chunks(SCAN_BLOCK).map(|c| {
+        // Plain compares: heights are finite or +inf, never NaN (as f64::min and max).
+        let (mut z_lo, mut z_hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in c {
+            if p[2] < z_lo {
+                z_lo = p[2];
+            }
+            if p[2] > z_hi {
+                z_hi = p[2];
+            }
+        }
+        [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
+    }));
 }
 
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
@@ -235,14 +241,15 @@ impl<'a> SideGap<'a> {
     pub fn new(pair: &'a SidePair, sign: f64) -> SideGap<'a> {
         let (lo, hi) = pair.wheel.profile().domain();
         let n = ((hi - lo) / COARSE_STEP_MM).ceil() as usize;
-        let (coarse, base): (Vec<[f64; 3]>, Vec<WheelPoint>) = (0..=n)
+        let coarse: Vec<[f64; 3]> = (0..=n)
             .map(|i| {
                 let s = lo + (hi - lo) * i as f64 / n as f64;
                 let p = pair.wheel.at(s);
-                ([s, p.y, p.z], p)
+                [s, p.y, p.z]
             })
-            .unzip();
-        let blocks = sample_blocks(&coarse);
+            .collect();
+        let mut blocks = Vec::new();
+        sample_blocks(&coarse, &mut blocks);
         let mut side = SideGap {
             pair,
             rail: pair.rail(),
@@ -254,10 +261,11 @@ impl<'a> SideGap<'a> {
             tabulated: None,
             domain: (lo, hi),
             yaw: Yaw::NONE,
-            base,
+            outline_base: Default::default(),
             outline_widths: Vec::new(),
             outline_jump: 0.0,
             outline_samples: (0, n),
+            yaw_varies: false,
             joints: pair.wheel.profile().joints(),
             rail_break_ys: {
                 // The ends of the running surface too: beyond them the gap is undefined.
@@ -280,8 +288,10 @@ impl<'a> SideGap<'a> {
                 b
             },
         };
-        side.cert_blocks = side.certified_blocks();
-        side.group_extents = side.group_extents();
+        let (mut cert_blocks, mut group_extents) = (Vec::new(), Vec::new());
+        side.certified_blocks(&mut cert_blocks);
+        side.group_extents(&mut group_extents);
+        (side.cert_blocks, side.group_extents) = (cert_blocks, group_extents);
         side
     }
     /// Where the wheel profile's second derivative may jump (joints, spline knots) and the

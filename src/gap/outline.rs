@@ -16,9 +16,12 @@
 //!   `Yw`, the coordinate its derivatives are taken in (`bound.rs`, `certify.rs`).
 
 use super::scan::SCAN_BLOCK;
+use super::yaw::Steepness;
 use super::{SideGap, Yaw, sample_blocks};
 use crate::profile::bounds::DerivativeBounds;
 use crate::track::{MAX_RAIL_SLOPE, WheelCell, WheelCells, WheelPoint};
+use std::sync::Arc;
+use wide::f64x4;
 
 /// A cell with no point: its bounds rule it out.
 const NO_CELL: WheelCell = WheelCell {
@@ -86,104 +89,154 @@ impl SideGap<'_> {
         self.yaw.outline(self.pair.wheel.at(s))
     }
 
+    /// Says whether the side's yaw will change from pose to pose (a sweep whose yaw grows
+    /// with the shift): its boxes of poses then span nearby yaws, at the price of looser
+    /// bounds, instead of holding one yaw each.
+    pub fn set_yaw_varies(&mut self, varies: bool) {
+        self.yaw_varies = varies;
+    }
+
     /// Makes the side's wheel the one the rail sees at `yaw` (the side's own, see
     /// [`Yaw::new`]); poses of this side must then carry its [`Yaw::psi`]. Costs a pass
-    /// over the coarse samples when the yaw changes, nothing otherwise.
+    /// over the coarse samples (four at a time) and the blocks when the yaw changes,
+    /// nothing otherwise.
     pub fn set_yaw(&mut self, yaw: Yaw) {
         if yaw == self.yaw {
             return;
         }
         self.yaw = yaw;
+        let base = Arc::clone(&self.outline_base);
+        let base = base.get_or_init(|| OutlineBase::new(self));
         let (lo, hi) = self.pair.wheel.profile().domain();
-        let n = self.coarse.len() - 1;
-        self.outline_widths.clear();
         self.outline_jump = 0.0;
         if yaw.keeps_profile() {
-            for (c, p) in self.coarse.iter_mut().zip(&self.base) {
-                (c[1], c[2]) = (p.y, p.z);
+            for (i, c) in self.coarse.iter_mut().enumerate() {
+                (c[1], c[2]) = (base.yw[i], base.z[i]);
             }
             self.domain = (lo, hi);
+            self.outline_samples = (0, self.coarse.len() - 1);
         } else {
-            let (first, last) = self.outline_cells();
+            let (first, last) = base.admitted(&yaw);
             self.outline_samples = (first, last);
-            for (i, (c, p)) in self.coarse.iter_mut().zip(&self.base).enumerate() {
-                let outline = if (first..=last).contains(&i) {
-                    yaw.outline(*p)
-                } else {
-                    None
-                };
-                match outline {
-                    Some(p) => (c[1], c[2]) = (p.y, p.z),
-                    None => c[2] = f64::INFINITY,
-                }
-            }
-            // Lateral positions outside copy the nearest inside, so that they still grow.
+            base.outline(&yaw, first..last + 1, &mut self.coarse);
+            // Outside: never above the rail, the lateral position of the nearest inside so
+            // that the positions still grow.
             let (y_first, y_last) = (self.coarse[first][1], self.coarse[last][1]);
             for c in &mut self.coarse[..first] {
-                c[1] = y_first;
+                (c[1], c[2]) = (y_first, f64::INFINITY);
             }
             for c in &mut self.coarse[last + 1..] {
-                c[1] = y_last;
+                (c[1], c[2]) = (y_last, f64::INFINITY);
             }
             self.domain = (self.coarse[first][0], self.coarse[last][0]);
-            let blocks = n.div_ceil(SCAN_BLOCK).max(1);
-            self.outline_widths = (0..blocks)
-                .map(|b| {
-                    let (i, j) = self.block_cells(b);
-                    (i..j)
-                        .map(|k| self.coarse[k + 1][1] - self.coarse[k][1])
-                        .fold(0.0, f64::max)
-                })
-                .collect();
-            self.outline_jump = self.outline_joint_jump();
+            self.outline_jump = self.outline_joint_jump(base);
         }
-        self.blocks = sample_blocks(&self.coarse);
-        self.cert_blocks = self.certified_blocks();
-        self.group_extents = self.group_extents();
+        sample_blocks(&self.coarse, &mut self.blocks);
+        self.outline_widths.clear();
+        if !yaw.keeps_profile() {
+            // A cell is no wider along Yw than the coarse step times the largest dY/ds over
+            // it (mean value theorem), here over its block; padded for rounding.
+            let h = self.coarse[1][0] - self.coarse[0][0];
+            let n = self.coarse.len() - 1;
+            let (first, last) = self.outline_samples;
+            let widths = base.blocks.iter().enumerate().map(|(b, (_, steep))| {
+                let largest = if yaw.admits(steep) {
+                    yaw.dy_ds_range(steep).1
+                } else {
+                    // Cell by cell, over the cells that take part.
+                    let (i, j) = block_cells_of(n, b);
+                    (i.max(first)..j.min(last))
+                        .map(|k| yaw.dy_ds_range(&base.cells[k]).1)
+                        .fold(0.0, f64::max)
+                };
+                h * largest * (1.0 + 1e-12)
+            });
+            self.outline_widths.extend(widths);
+        }
+        let mut cert_blocks = std::mem::take(&mut self.cert_blocks);
+        self.certified_blocks(&mut cert_blocks);
+        self.cert_blocks = cert_blocks;
+        let mut group_extents = std::mem::take(&mut self.group_extents);
+        self.group_extents(&mut group_extents);
+        self.group_extents = group_extents;
         if self.tabulated.is_some() {
             self.tabulate_wheel();
         }
     }
 
-    /// The coarse cells `first..last` (sample indices) of the run about the middle of the
-    /// profile whose outline exists within the margins: by blocks, then by cells in a block
-    /// whose bound does not show it whole.
-    fn outline_cells(&self) -> (usize, usize) {
-        let n = self.coarse.len() - 1;
-        let cells = self.pair.wheel.cells(n);
-        let h = self.coarse[1][0] - self.coarse[0][0];
-        let mut valid = vec![false; n];
-        for b in 0..n.div_ceil(SCAN_BLOCK) {
-            let (i, j) = self.block_cells(b);
-            if self.yaw.outline_cell(cells.over(i, j), h).is_some() {
-                valid[i..j].fill(true);
-            } else {
-                for (k, v) in valid.iter_mut().enumerate().take(j).skip(i) {
-                    *v = self.yaw.outline_cell(cells.cells()[k], h).is_some();
-                }
-            }
-        }
-        let middle = n / 2;
-        let first = (0..=middle).rev().find(|&k| !valid[k]).map_or(0, |k| k + 1);
-        let last = (middle..n).find(|&k| !valid[k]).unwrap_or(n);
-        // An empty run (an outline that exists nowhere): the middle sample alone.
-        (first.min(middle), last.max(first.min(middle)))
-    }
-
     /// The largest step of the outline at a section joint of the profile inside the part
     /// that takes part: its vertical step plus [`MAX_RAIL_SLOPE`] times its sideways step
     /// (how far a gap can step there), mm.
-    fn outline_joint_jump(&self) -> f64 {
-        let wheel = &self.pair.wheel;
-        self.joints
+    fn outline_joint_jump(&self, base: &OutlineBase) -> f64 {
+        base.joints
             .iter()
-            .filter(|&&j| self.in_domain(j) && self.in_domain(j - 1e-12))
-            .filter_map(|&j| {
-                let a = self.yaw.outline(wheel.at(j))?;
-                let b = self.yaw.outline(wheel.at(j - 1e-12))?;
+            .filter(|&&(j, _, _)| self.in_domain(j) && self.in_domain(j - 1e-12))
+            .filter_map(|&(_, above, below)| {
+                let a = self.yaw.outline(above)?;
+                let b = self.yaw.outline(below)?;
                 Some((a.z - b.z).abs() + MAX_RAIL_SLOPE * (a.y - b.y).abs())
             })
             .fold(0.0, f64::max)
+    }
+
+    /// How far the outline of block `b` can move laterally and vertically `(mY, mZ)` (mm)
+    /// while the yaw changes by up to `half` (rad) either way from the side's: `half` times
+    /// the largest `|dY/dpsi| <= |sin psi| (|Yw| + r |F'| (1 + 1 / cos^2 psi))` and
+    /// `|dZ/dpsi| = r F'^2 |tan psi| / (cos^2 psi w)` over the block's cells and those yaws;
+    /// `(0, 0)` without yaw or for `half = 0`, infinite where the part of the wheel that
+    /// takes part may differ over those yaws (the block's outline may appear or vanish).
+    pub(super) fn outline_motion(&self, b: usize, half: f64) -> (f64, f64) {
+        if !self.yawed() || half <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let base = self.outline_base.get().expect("made by set_yaw");
+        let psi = self.yaw.psi();
+        let n = self.coarse.len() - 1;
+        let (i, j) = block_cells_of(n, b);
+        let (first, last) = self.outline_samples;
+        if j <= first || i >= last {
+            // No point of the block takes part at any of those yaws: at +inf.
+            return (0.0, 0.0);
+        }
+        let (cell, steep) = &base.blocks[b];
+        // The steepest slope of the cells that take part (the block's where it takes part
+        // whole).
+        let q = if self.yaw.admits(steep) {
+            steep.q_abs_max()
+        } else {
+            (i.max(first)..j.min(last))
+                .map(|k| base.cells[k].q_abs_max())
+                .fold(0.0, f64::max)
+        };
+        let r = -cell.z.0;
+        let yw = base.yw[i].abs().max(base.yw[j].abs());
+        let a = psi.abs() + half;
+        let (sin, cos, tan) = (a.sin(), a.cos(), a.tan());
+        let sec2 = 1.0 / (cos * cos);
+        let w2 = 1.0 - (q * tan).powi(2);
+        if !(w2 > 0.0) {
+            return (f64::INFINITY, f64::INFINITY);
+        }
+        let pad = 1.0 + 1e-9;
+        (
+            half * sin * (yw + r * q * (1.0 + sec2)) * pad,
+            half * r * q * q * tan * sec2 / w2.sqrt() * pad,
+        )
+    }
+
+    /// The half width in yaw `half` a box of poses may span (rad): 0 without a yaw that
+    /// moves the outline, and where the part of the wheel that takes part is not the same
+    /// at both ends of the range (which part takes part depends on `|psi|` only, and
+    /// shrinks as it grows).
+    pub(super) fn box_yaw_half(&self, half: f64) -> f64 {
+        if !self.yawed() || !self.yaw_varies {
+            return 0.0;
+        }
+        let base = self.outline_base.get().expect("made by set_yaw");
+        let (psi, model) = (self.yaw.psi().abs(), self.yaw.model());
+        let wide = base.admitted(&Yaw::new(1.0, psi + half, model));
+        let narrow = base.admitted(&Yaw::new(1.0, (psi - half).max(0.0), model));
+        if wide == narrow { half } else { 0.0 }
     }
 
     /// The profiles' largest value jumps the certificate allows for (mm): the wheel's (its
@@ -201,17 +254,30 @@ impl SideGap<'_> {
     /// coarse grid (`B` = [`SCAN_BLOCK`]; the last block's one cell where it holds the last
     /// sample alone), for each block: the same ranges over the whole wheel between the
     /// samples, from the [`crate::track::PlacedWheel`] cell bounds (the outline's with yaw).
-    pub(super) fn certified_blocks(&self) -> Vec<[f64; 4]> {
+    pub(super) fn certified_blocks(&self, out: &mut Vec<[f64; 4]>) {
         let n = self.coarse.len() - 1;
         let cells = self.pair.wheel.cells(n);
-        (0..self.blocks.len())
-            .map(|b| {
-                let i = (b * SCAN_BLOCK).min(n - 1);
-                let j = ((b + 1) * SCAN_BLOCK).min(n);
-                let z = self.cells_over(&cells, i, j).z;
-                [self.coarse[i][1], self.coarse[j][1], z.0, z.1]
-            })
-            .collect()
+        let base = self.outline_base.get();
+        let (first, last) = self.outline_samples;
+        out.clear();
+        out.extend((0..self.blocks.len()).map(|b| {
+            let (i, j) = block_cells_of(n, b);
+            let z = match base {
+                // A block whose cells all take part: its heights' range from its cells'
+                // bounds, kept with the base.
+                Some(base)
+                    if self.yawed()
+                        && i >= first
+                        && j <= last
+                        && self.yaw.admits(&base.blocks[b].1) =>
+                {
+                    let (cell, steep) = &base.blocks[b];
+                    self.yaw.outline_z(cell, steep)
+                }
+                _ => self.cells_over(&cells, i, j).z,
+            };
+            [self.coarse[i][1], self.coarse[j][1], z.0, z.1]
+        }));
     }
 
     /// The bounds of the wheel over the coarse cells `i..j` (the outline's with yaw; a cell
@@ -279,6 +345,117 @@ impl SideGap<'_> {
             self.outline_widths[b]
         } else {
             self.coarse[1][0] - self.coarse[0][0]
+        }
+    }
+}
+
+/// The coarse cells `i..j` of block `b` of a grid of `n` cells (`i < j`; the last block's one
+/// cell where it holds the last sample alone).
+#[inline]
+pub(super) fn block_cells_of(n: usize, b: usize) -> (usize, usize) {
+    ((b * SCAN_BLOCK).min(n - 1), ((b + 1) * SCAN_BLOCK).min(n))
+}
+
+/// What a side keeps to make the outline of any yaw quickly, made on the first yaw and
+/// shared by the side's copies: the coarse samples' profile points (lanes of `Yw`, `Z` and
+/// `F'`), and the bounds and steepness of each block's and each coarse cell's profile.
+#[derive(Debug)]
+pub(super) struct OutlineBase {
+    yw: Vec<f64>,
+    z: Vec<f64>,
+    q: Vec<f64>,
+    blocks: Vec<(WheelCell, Steepness)>,
+    cells: Vec<Steepness>,
+    /// The profile's section joints `j` with the profile points at `j` and just below it.
+    joints: Vec<(f64, WheelPoint, WheelPoint)>,
+}
+
+impl OutlineBase {
+    fn new(side: &SideGap) -> OutlineBase {
+        let n = side.coarse.len() - 1;
+        let points: Vec<WheelPoint> = side
+            .coarse
+            .iter()
+            .map(|c| side.pair.wheel.at(c[0]))
+            .collect();
+        let cells = side.pair.wheel.cells(n);
+        OutlineBase {
+            yw: points.iter().map(|p| p.y).collect(),
+            z: points.iter().map(|p| p.z).collect(),
+            q: points.iter().map(|p| -p.slope).collect(),
+            blocks: (0..side.blocks.len())
+                .map(|b| {
+                    let (i, j) = block_cells_of(n, b);
+                    let c = cells.over(i, j);
+                    (c, Steepness::of(&c))
+                })
+                .collect(),
+            cells: cells.cells().iter().map(Steepness::of).collect(),
+            joints: side
+                .joints
+                .iter()
+                .map(|&j| (j, side.pair.wheel.at(j), side.pair.wheel.at(j - 1e-12)))
+                .collect(),
+        }
+    }
+
+    /// The first and last coarse sample of the run of cells about the middle of the profile
+    /// whose outline exists within the margins (by the bounds of a cell's block, else of the
+    /// cell); the middle sample alone where none does.
+    fn admitted(&self, yaw: &Yaw) -> (usize, usize) {
+        let n = self.cells.len();
+        let middle = n / 2;
+        // Whole blocks where their bounds admit them (most of a wheel), else cell by cell.
+        let block_ok = |b: usize| yaw.admits(&self.blocks[b].1);
+        let cell_ok = |k: usize| block_ok(k / SCAN_BLOCK) || yaw.admits(&self.cells[k]);
+        let mut first = middle;
+        while first > 0 {
+            let k = first - 1;
+            if k % SCAN_BLOCK == SCAN_BLOCK - 1 && block_ok(k / SCAN_BLOCK) {
+                first -= SCAN_BLOCK;
+            } else if cell_ok(k) {
+                first -= 1;
+            } else {
+                break;
+            }
+        }
+        let mut last = middle;
+        while last < n {
+            if last % SCAN_BLOCK == 0 && last + SCAN_BLOCK <= n && block_ok(last / SCAN_BLOCK) {
+                last += SCAN_BLOCK;
+            } else if cell_ok(last) {
+                last += 1;
+            } else {
+                break;
+            }
+        }
+        (first, last)
+    }
+
+    /// The outline's lateral positions and heights of the coarse samples `range` into
+    /// `coarse`, four at a time ([`Yaw::outline_yz`], bit for bit as each alone).
+    fn outline(&self, yaw: &Yaw, range: std::ops::Range<usize>, coarse: &mut [[f64; 3]]) {
+        let (yw, z, q) = (
+            &self.yw[range.clone()],
+            &self.z[range.clone()],
+            &self.q[range.clone()],
+        );
+        let coarse = &mut coarse[range];
+        let quads = coarse.len() / 4 * 4;
+        let lanes = yw[..quads]
+            .chunks_exact(4)
+            .zip(z[..quads].chunks_exact(4))
+            .zip(q[..quads].chunks_exact(4));
+        for (((yw, z), q), c) in lanes.zip(coarse[..quads].chunks_exact_mut(4)) {
+            let lane = |v: &[f64]| f64x4::from([v[0], v[1], v[2], v[3]]);
+            let (y, zo) = yaw.outline_yz(lane(yw), lane(z), lane(q));
+            let (y, zo) = (y.to_array(), zo.to_array());
+            for l in 0..4 {
+                (c[l][1], c[l][2]) = (y[l], zo[l]);
+            }
+        }
+        for (i, c) in coarse.iter_mut().enumerate().skip(quads) {
+            (c[1], c[2]) = yaw.outline_yz(yw[i], z[i], q[i]);
         }
     }
 }

@@ -14,9 +14,11 @@ pub(crate) fn placement() -> crate::track::Placement {
 /// The yaws the scans are checked at (rad): none, and the outline of a yaw either way.
 const YAWS: [f64; 3] = [0.0, 0.03, -0.02];
 
-/// The left side of `placement` seen through the outline of `yaw`.
+/// The left side of `placement` seen through the outline of `yaw`, its boxes of poses
+/// spanning nearby yaws.
 fn left_at_yaw(placement: &crate::track::Placement, yaw: f64) -> SideGap<'_> {
     let mut side = SideGap::new(&placement.left, 1.0);
+    side.set_yaw_varies(true);
     side.set_yaw(Yaw::new(1.0, yaw, YawModel::Exact));
     side
 }
@@ -278,48 +280,67 @@ fn pose_of(delta: f64, sin: f64) -> SidePose {
 
 #[test]
 fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
+    use super::scan::POSE_BOX_YAW_RAD;
     let placement = placement();
     for yaw in YAWS {
         let side = left_at_yaw(&placement, yaw);
-        let [yc, zc] = side.box_reference();
         let mut pose_box = PoseBox::default();
         // Blocks within the margin of the lowest sample by the box bound but not by the bound
         // at the pose: where the box loosens the bound (it must, a little).
         let (mut looser, mut skipped) = (0, 0);
+        let (mut spanning, mut boxes) = (0, 0);
+        // With yaw, the box spans yaws about its own: the side at either end of them too.
+        let yaw_ends: &[f64] = if yaw == 0.0 {
+            &[0.0]
+        } else {
+            &[-1.0, 0.0, 1.0]
+        };
         for centre in poses_at_yaw(yaw).iter().step_by(7) {
             side.fill_pose_box(centre, &mut pose_box);
-            // The corners of the box (a hair inside it), the centre and the middles of its edges.
-            let (dd, ds) = (
-                POSE_BOX_DELTA_MM * (1.0 - 1e-12),
-                POSE_BOX_SIN * (1.0 - 1e-12),
-            );
-            for (fd, fs) in [-1.0, 0.0, 1.0]
-                .iter()
-                .flat_map(|&a| [-1.0, 0.0, 1.0].map(|b| (a, b)))
-            {
-                let pose = SidePose {
-                    yaw: centre.yaw,
-                    ..pose_of(centre.delta + fd * dd, centre.sin + fs * ds)
-                };
-                assert!(
-                    pose_box.holds(&pose),
-                    "{pose:?} not in the box at {centre:?}"
-                );
-                let common = pose.sin * yc + pose.cos * zc;
-                let gaps = all_gaps(&side, &pose);
-                let lowest = gaps.iter().map(|g| g.1).fold(f64::INFINITY, f64::min);
-                for &(i, g) in &gaps {
-                    let bound = pose_box.bounds[i / SCAN_BLOCK] + common;
-                    assert!(
-                        bound <= g,
-                        "sample {i}: box bound {bound} above gap {g} at {pose:?} (box at {centre:?})"
-                    );
+            let [yc, zc] = pose_box.reference;
+            spanning += usize::from(pose_box.yaw_half > 0.0);
+            boxes += 1;
+            for &fy in yaw_ends {
+                if fy != 0.0 && pose_box.yaw_half == 0.0 {
+                    continue;
                 }
-                for b in gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1 {
-                    let (boxed, here) = (pose_box.bounds[b] + common, side.block_bound(b, &pose));
-                    let cut = lowest + COARSE_MARGIN_MM;
-                    looser += usize::from(boxed <= cut && here > cut);
-                    skipped += usize::from(boxed > cut);
+                let psi = yaw + fy * POSE_BOX_YAW_RAD * (1.0 - 1e-12);
+                let side = left_at_yaw(&placement, psi);
+                // The corners of the box (a hair inside it), the centre and the middles of
+                // its edges.
+                let (dd, ds) = (
+                    POSE_BOX_DELTA_MM * (1.0 - 1e-12),
+                    POSE_BOX_SIN * (1.0 - 1e-12),
+                );
+                for (fd, fs) in [-1.0, 0.0, 1.0]
+                    .iter()
+                    .flat_map(|&a| [-1.0, 0.0, 1.0].map(|b| (a, b)))
+                {
+                    let pose = SidePose {
+                        yaw: Yaw::side_psi(1.0, psi),
+                        ..pose_of(centre.delta + fd * dd, centre.sin + fs * ds)
+                    };
+                    assert!(
+                        pose_box.holds(&pose),
+                        "{pose:?} not in the box at {centre:?}"
+                    );
+                    let common = pose.sin * yc + pose.cos * zc;
+                    let gaps = all_gaps(&side, &pose);
+                    let lowest = gaps.iter().map(|g| g.1).fold(f64::INFINITY, f64::min);
+                    for &(i, g) in &gaps {
+                        let bound = pose_box.bounds[i / SCAN_BLOCK] + common;
+                        assert!(
+                            bound <= g,
+                            "sample {i}: box bound {bound} above gap {g} at {pose:?} (box at {centre:?})"
+                        );
+                    }
+                    for b in gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1 {
+                        let (boxed, here) =
+                            (pose_box.bounds[b] + common, side.block_bound(b, &pose));
+                        let cut = lowest + COARSE_MARGIN_MM;
+                        looser += usize::from(boxed <= cut && here > cut);
+                        skipped += usize::from(boxed > cut);
+                    }
                 }
             }
         }
@@ -328,6 +349,9 @@ fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
             "the box bounds never looser than the bounds at the pose"
         );
         assert!(skipped > 1000, "the box bounds skipped {skipped} blocks");
+        // Every box of a yawed side spans yaws (on S1002 the part of the wheel that takes
+        // part is the same within a milliradian of these yaws).
+        assert_eq!(spanning, if yaw == 0.0 { 0 } else { boxes }, "yaw {yaw}");
     }
 }
 

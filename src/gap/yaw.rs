@@ -170,9 +170,10 @@ impl Yaw {
         }
         let w = w2.sqrt();
         let cw = self.cos * w;
+        let (y, z) = self.outline_yz(p.y, p.z, q);
         Some(WheelPoint {
-            y: p.y * self.cos + ts * p.z * q,
-            z: p.z * w,
+            y,
+            z,
             slope: p.slope / cw,
             d2: p.d2 / (cw * w2 * dy_ds),
             dy_ds,
@@ -247,32 +248,16 @@ impl Yaw {
         if self.keeps_profile() {
             return Some(c);
         }
+        let k = Steepness::of(&c);
+        if !self.admits(&k) {
+            return None;
+        }
+        let t = self.tan.abs();
+        let ts = self.tan * self.sin;
         let (q_lo, q_hi) = c.d.d1;
         let (f2_lo, f2_hi) = c.d.d2;
-        let q_abs_max = q_lo.abs().max(q_hi.abs());
-        let q_abs_min = if q_lo <= 0.0 && q_hi >= 0.0 {
-            0.0
-        } else {
-            q_lo.abs().min(q_hi.abs())
-        };
-        let t = self.tan.abs();
-        if !(q_abs_max * t <= MAX_SLOPE_TAN) {
-            return None;
-        }
-        let w_lo = (1.0 - (q_abs_max * t).powi(2)).sqrt();
-        let w_hi = (1.0 - (q_abs_min * t).powi(2)).sqrt();
-        // Radii: r = -z.
-        let (r_lo, r_hi) = (-c.z.1, -c.z.0);
-        let ts = self.tan * self.sin;
-        let r_f2 = product((r_lo, r_hi), (f2_lo, f2_hi));
-        let sum = (
-            q_abs_min * q_abs_min + r_f2.0,
-            q_abs_max * q_abs_max + r_f2.1,
-        );
-        let dy_ds = (self.cos - ts * sum.1, self.cos - ts * sum.0);
-        if !(dy_ds.0 >= MIN_DY_DS) {
-            return None;
-        }
+        let (w_lo, w_hi) = self.w_range(&k);
+        let dy_ds = self.dy_ds_range(&k);
         let slope = |q: f64| q / (self.cos * (1.0 - (q * t).powi(2)).sqrt());
         let den = (
             self.cos * w_lo.powi(3) * dy_ds.0,
@@ -286,18 +271,122 @@ impl Yaw {
             d2: (a.min(b), e.max(f)),
         }
         .padded();
-        let pad = 1e-12 * r_hi;
         let jump = if c.jump > 0.0 {
-            let sideways = ts * (r_hi / h.max(f64::MIN_POSITIVE) + q_abs_max) * c.jump;
+            let sideways = ts * (-c.z.0 / h.max(f64::MIN_POSITIVE) + k.q_abs.1) * c.jump;
             c.jump / w_lo + MAX_RAIL_SLOPE * sideways
         } else {
             0.0
         };
         Some(WheelCell {
             d,
-            z: (c.z.0 * w_hi - pad, c.z.1 * w_lo + pad),
+            z: self.outline_z(&c, &k),
             jump,
         })
+    }
+
+    /// Whether the outline of every point of a cell of steepness `k` exists within the
+    /// margins ([`MAX_SLOPE_TAN`], [`MIN_DY_DS`]): what [`Yaw::outline_cell`] decides.
+    #[inline]
+    pub(crate) fn admits(&self, k: &Steepness) -> bool {
+        k.q_abs.1 * self.tan.abs() <= MAX_SLOPE_TAN
+            && self.cos - self.tan * self.sin * k.sum.1 >= MIN_DY_DS
+    }
+
+    /// The range of the outline's heights over a cell with bounds `c` and steepness `k` (no
+    /// yaw), which it [admits](Yaw::admits): `Z w`, `w = sqrt(1 - F'^2 tan^2 psi)` over the
+    /// cell's range of `|F'|`, padded for rounding.
+    #[inline]
+    pub(crate) fn outline_z(&self, c: &WheelCell, k: &Steepness) -> (f64, f64) {
+        let (w_lo, w_hi) = self.w_range(k);
+        let pad = 1e-12 * -c.z.0;
+        (c.z.0 * w_hi - pad, c.z.1 * w_lo + pad)
+    }
+
+    /// The range of the outline's `dY/ds` over a cell of steepness `k`.
+    #[inline]
+    pub(crate) fn dy_ds_range(&self, k: &Steepness) -> (f64, f64) {
+        let ts = self.tan * self.sin;
+        (self.cos - ts * k.sum.1, self.cos - ts * k.sum.0)
+    }
+
+    /// The range of `w` over a cell of steepness `k`.
+    #[inline]
+    fn w_range(&self, k: &Steepness) -> (f64, f64) {
+        let t = self.tan.abs();
+        (
+            (1.0 - (k.q_abs.1 * t).powi(2)).sqrt(),
+            (1.0 - (k.q_abs.0 * t).powi(2)).sqrt(),
+        )
+    }
+
+    /// The outline's lateral position and height of profile points `(yw, z, q = F')`, as
+    /// [`Yaw::outline`] computes them, operation for operation (in SIMD lanes or not).
+    #[inline(always)]
+    pub(crate) fn outline_yz<T: Lane>(&self, yw: T, z: T, q: T) -> (T, T) {
+        let qt = q * T::from(self.tan);
+        let w = (T::from(1.0) - qt * qt).sqrt();
+        let ts = T::from(self.tan * self.sin);
+        (yw * T::from(self.cos) + ts * z * q, z * w)
+    }
+}
+
+/// What decides a cell's outline and bounds its slope terms, from the cell's bounds (no
+/// yaw): the range of `|F'|` and of `F'^2 + r F''` (`r = -Z`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Steepness {
+    q_abs: (f64, f64),
+    sum: (f64, f64),
+}
+
+impl Steepness {
+    /// The largest `|F'|`.
+    pub(crate) fn q_abs_max(&self) -> f64 {
+        self.q_abs.1
+    }
+
+    /// The steepness of a cell with bounds `c`.
+    pub(crate) fn of(c: &WheelCell) -> Steepness {
+        let (q_lo, q_hi) = c.d.d1;
+        let q_abs_max = q_lo.abs().max(q_hi.abs());
+        let q_abs_min = if q_lo <= 0.0 && q_hi >= 0.0 {
+            0.0
+        } else {
+            q_lo.abs().min(q_hi.abs())
+        };
+        let r_f2 = product((-c.z.1, -c.z.0), c.d.d2);
+        Steepness {
+            q_abs: (q_abs_min, q_abs_max),
+            sum: (
+                q_abs_min * q_abs_min + r_f2.0,
+                q_abs_max * q_abs_max + r_f2.1,
+            ),
+        }
+    }
+}
+
+/// A number or SIMD lanes of numbers, for the outline's closed forms.
+pub(crate) trait Lane:
+    Copy
+    + From<f64>
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+{
+    /// The square root (correctly rounded, lane by lane).
+    fn sqrt(self) -> Self;
+}
+
+impl Lane for f64 {
+    #[inline(always)]
+    fn sqrt(self) -> f64 {
+        f64::sqrt(self)
+    }
+}
+
+impl Lane for wide::f64x4 {
+    #[inline(always)]
+    fn sqrt(self) -> wide::f64x4 {
+        wide::f64x4::sqrt(self)
     }
 }
 

@@ -12,29 +12,49 @@ use crate::gap::SideGap;
 use crate::sweep::{Mirror, Sweep};
 
 /// The solver a continuation or a refinement solves with: the sweep's own where the yaw is
-/// fixed, a copy prepared for each position's yaw where it changes along the sweep.
+/// fixed; where it changes along the sweep, copies prepared for the yaws of the last few
+/// shifts asked for (a refinement goes back and forth between the two ends of its window
+/// and the point between them), the least recently used prepared again.
 struct Local<'s, 'a> {
     shared: &'s PositionSolver<'a>,
-    own: Option<PositionSolver<'a>>,
+    /// Copies, most recently used last.
+    own: Vec<PositionSolver<'a>>,
 }
+
+/// Copies a [`Local`] keeps: the two ends of a refinement's window and its next point.
+const PREPARED_YAWS: usize = 3;
 
 impl<'s, 'a> Local<'s, 'a> {
     fn new(shared: &'s PositionSolver<'a>) -> Local<'s, 'a> {
         Local {
             shared,
-            own: shared.yaw_varies().then(|| shared.clone()),
+            own: Vec::new(),
         }
     }
 
     /// The solver prepared for the shift `y_ws`.
     fn at(&mut self, y_ws: f64) -> &PositionSolver<'a> {
-        match &mut self.own {
-            Some(own) => {
-                own.prepare(y_ws);
-                own
-            }
-            None => self.shared,
+        if !self.shared.yaw_varies() {
+            return self.shared;
         }
+        // As the sides store it: no yaw as +0.
+        let key = (self.shared.yaw_at(y_ws) + 0.0).to_bits();
+        let k = match self
+            .own
+            .iter()
+            .position(|s| s.prepared_yaw().to_bits() == key)
+        {
+            Some(k) => k,
+            None if self.own.len() < PREPARED_YAWS => {
+                self.own.push(self.shared.clone());
+                self.own.len() - 1
+            }
+            None => 0,
+        };
+        let mut solver = self.own.remove(k);
+        solver.prepare(y_ws);
+        self.own.push(solver);
+        self.own.last().expect("pushed")
     }
 }
 

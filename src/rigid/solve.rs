@@ -37,6 +37,9 @@ impl<'a> PositionSolver<'a> {
         if solver == Solver::Paper {
             sides = sides.map(|s| s.with_tables(PAPER_TABLE_STEP_MM));
         }
+        for side in &mut sides {
+            side.set_yaw_varies(yaw.varies());
+        }
         let mut solver = PositionSolver { sides, solver, yaw };
         solver.prepare(0.0);
         solver
@@ -46,6 +49,16 @@ impl<'a> PositionSolver<'a> {
     /// sweep).
     pub(super) fn yaw_varies(&self) -> bool {
         self.yaw.varies()
+    }
+
+    /// The wheelset's yaw at the shift `y_ws` (rad).
+    pub(super) fn yaw_at(&self, y_ws: f64) -> f64 {
+        self.yaw.at(y_ws)
+    }
+
+    /// The wheelset's yaw the sides are prepared for (rad).
+    pub(super) fn prepared_yaw(&self) -> f64 {
+        yaw_of(&self.sides)
     }
 
     /// Prepares the sides for the yaw at the shift `y_ws` (nothing to do where it is the
