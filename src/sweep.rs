@@ -3,7 +3,7 @@
 //! and the one decision of which positions a stage computes and which it mirrors
 //! (`Mirror`), shared by the rigid search, the quasi-elastic pass and the Hertz sweep.
 
-use crate::gap::YawModel;
+pub use crate::gap::YawModel;
 use crate::message::Number;
 use crate::track::Placement;
 use std::fmt;
@@ -259,7 +259,7 @@ impl Sweep {
     pub fn with_yaw(mut self, yaw: YawRule) -> Result<Sweep, SweepError> {
         for y_ws_mm in [self.shifts_mm[0], self.shifts_mm[self.shifts_mm.len() - 1]] {
             let yaw_rad = yaw.at(y_ws_mm);
-            if !(yaw_rad.abs() <= MAX_YAW_RAD) {
+            if yaw_rad.is_nan() || yaw_rad.abs() > MAX_YAW_RAD {
                 return Err(SweepError::Yaw { yaw_rad, y_ws_mm });
             }
         }

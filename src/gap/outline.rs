@@ -58,6 +58,13 @@ impl SideGap<'_> {
         }
     }
 
+    /// Whether the side is yawed at all (its contacts lie ahead of or behind the axle, in
+    /// the exact and in the small-angle form).
+    #[inline]
+    pub(crate) fn has_yaw(&self) -> bool {
+        self.yaw.psi() != 0.0
+    }
+
     /// Whether the side's wheel is seen through a yawed outline (not the profile itself).
     #[inline]
     pub(crate) fn yawed(&self) -> bool {
@@ -214,7 +221,7 @@ impl SideGap<'_> {
         let (sin, cos, tan) = (a.sin(), a.cos(), a.tan());
         let sec2 = 1.0 / (cos * cos);
         let w2 = 1.0 - (q * tan).powi(2);
-        if !(w2 > 0.0) {
+        if w2.is_nan() || w2 <= 0.0 {
             return (f64::INFINITY, f64::INFINITY);
         }
         let pad = 1.0 + 1e-9;
@@ -421,7 +428,7 @@ impl OutlineBase {
         }
         let mut last = middle;
         while last < n {
-            if last % SCAN_BLOCK == 0 && last + SCAN_BLOCK <= n && block_ok(last / SCAN_BLOCK) {
+            if last.is_multiple_of(SCAN_BLOCK) && last + SCAN_BLOCK <= n && block_ok(last / SCAN_BLOCK) {
                 last += SCAN_BLOCK;
             } else if cell_ok(last) {
                 last += 1;

@@ -323,7 +323,7 @@ struct Work {
 /// rolling radius less `r0`), the wheel's slope as the rail sees it (the outline's with
 /// yaw), the rail's slope, the profile's and the rail's curvatures, the lead.
 fn fields_of(side: &SideGap, p: &crate::gap::GapPoint) -> [f64; FIELDS] {
-    let (f, wheel_curvature, lead) = if side.yawed() {
+    let (f, wheel_curvature, lead) = if side.has_yaw() {
         let profile = side.yaw().profile_point(&p.wheel);
         (
             -profile.z - side.wheel().nominal_radius_mm(),
@@ -518,7 +518,7 @@ fn patches_of(side: &SideGap, roll: f64, averages: &[Average<FIELDS>]) -> SideRe
         .filter(|a| a.weight > 0.0)
         .map(|a| {
             let [s, y, z, f, wheel_slope, rail_slope, kw, kr, lead] = a.mean;
-            let (x, lead) = if side.yawed() {
+            let (x, lead) = if side.has_yaw() {
                 let yw = side.wheel().taping_line_mm() + s;
                 (side.yaw().x_of(yw, lead), lead)
             } else {

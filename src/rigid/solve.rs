@@ -150,7 +150,7 @@ pub(super) fn side_contact(
     let phi = side.sign * theta;
     // The profile's own point: its curvature (the outline's differs by O(psi^2)), and
     // where on the circle the outline point lies.
-    let (wheel_curvature, x, lead) = if side.yawed() {
+    let (wheel_curvature, x, lead) = if side.has_yaw() {
         let profile = side.wheel().at(m.s);
         (
             profile.curvature(),

@@ -618,7 +618,7 @@ fn yawed(raw: &RawScene, sweep: Sweep) -> Result<Sweep, Invalid> {
             "mrad/mm",
         ),
     ] {
-        if !(v.abs() <= bound) {
+        if v.is_nan() || v.abs() > bound {
             return Err(invalid(
                 key,
                 format!(
