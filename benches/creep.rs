@@ -8,7 +8,9 @@ use divan::black_box;
 use wheelrail::creep::coefficients::{Coefficients, kalker};
 use wheelrail::creep::creepage::{ContactPoint, Creepages, Motion, creepages};
 use wheelrail::creep::tangential::{EllipticPatch, Tangential, solve};
-use wheelrail::creep::{CreepError, Grid, Method, Patch, PatchForces, Settings, Shape, forces};
+use wheelrail::creep::{
+    CreepError, Grid, Method, Patch, PatchForces, Scheme, Settings, Shape, forces,
+};
 
 fn main() {
     divan::main();
@@ -36,8 +38,17 @@ fn fastsim_default() -> Tangential {
     solve(black_box(&p), black_box(&c), &method(Method::Fastsim))
 }
 
+/// FASTSIM with Kalker's own update of slipping tractions, on the default grid (the
+/// second-order update's cost, as a ratio to `fastsim_default`).
+#[divan::bench]
+fn fastsim_kalker_scheme() -> Tangential {
+    let (p, c) = example();
+    let s = method(Method::Fastsim).with_scheme(Scheme::Kalker);
+    solve(black_box(&p), black_box(&c), &s)
+}
+
 /// FASTSIM on n × n grids: the run-time side of `fastsim::study`.
-#[divan::bench(args = [10, 15, 20, 25, 30, 40, 50, 60, 80])]
+#[divan::bench(args = [8, 12, 16, 20, 24, 28, 32, 40, 48, 64])]
 fn fastsim_grid(n: u32) -> Tangential {
     let (p, c) = example();
     let s = method(Method::Fastsim)

@@ -518,18 +518,20 @@ pub fn forces(
             check_normal_force(at_normal_force_n)?;
         }
     }
+    // The last evaluation, kept: a converged solve returns the normal force it tried last.
+    let mut last: Option<(f64, Evaluation)> = None;
     let outcome = normal::solve(
         fz,
         patch.point.contact_angle_rad,
         settings.normal_tolerance(),
         settings.normal_max_iterations(),
         |normal_force_n| {
-            Ok(
-                match evaluate(&patch.shape, normal_force_n, &creepages, settings)? {
-                    Evaluation::Solved(_, t) => Ok(t.fy_n),
-                    Evaluation::NotHertzian(reason) => Err(reason),
-                },
-            )
+            let e = evaluate(&patch.shape, normal_force_n, &creepages, settings)?;
+            last = Some((normal_force_n, e));
+            Ok(match e {
+                Evaluation::Solved(_, t) => Ok(t.fy_n),
+                Evaluation::NotHertzian(reason) => Err(reason),
+            })
         },
     )?;
     let failed = |status| PatchForces {
@@ -549,23 +551,26 @@ pub fn forces(
         normal::Outcome::NoEquilibrium => return Ok(failed(Status::NoEquilibrium)),
         normal::Outcome::NotHertzian(reason) => return Ok(failed(Status::NotHertzian(reason))),
     };
-    // The solve's last evaluation need not be at the normal force it returns: evaluate there.
-    Ok(
-        match evaluate(&patch.shape, normal_force_n, &creepages, settings)? {
-            Evaluation::Solved(p, tangential) => PatchForces {
-                creepages,
-                normal_force_n,
-                a_mm: p.a_mm(),
-                b_mm: p.b_mm(),
-                tangential,
-                status,
-            },
-            Evaluation::NotHertzian(reason) => failed(Status::NotHertzian(reason)),
+    // After an iteration cap the best point need not be the last one: evaluate there.
+    let at_solution = match last {
+        Some((x, e)) if x.to_bits() == normal_force_n.to_bits() => e,
+        _ => evaluate(&patch.shape, normal_force_n, &creepages, settings)?,
+    };
+    Ok(match at_solution {
+        Evaluation::Solved(p, tangential) => PatchForces {
+            creepages,
+            normal_force_n,
+            a_mm: p.a_mm(),
+            b_mm: p.b_mm(),
+            tangential,
+            status,
         },
-    )
+        Evaluation::NotHertzian(reason) => failed(Status::NotHertzian(reason)),
+    })
 }
 
 /// The tangential solution of a patch shape at one normal force, or why there is none.
+#[derive(Debug, Clone, Copy)]
 enum Evaluation {
     Solved(EllipticPatch, Tangential),
     NotHertzian(NotHertzianReason),
