@@ -341,6 +341,10 @@ fn contacts_fastsim_grid_explains_the_difference() {
         "{at_220:?}"
     );
     let at_880 = fastsim_on_contacts_grid(880);
+    println!(
+        "CONTACT's layout, 220 x 220: {at_220:.1?}; 880 x 880: {at_880:.1?}; ours at 1000 x 1000: ({:.1}, {:.1}); CONTACT printed: {contact:.1?}",
+        ours.fy_n, ours.mz_nmm
+    );
     for (coarse, finer, converged) in [
         (at_220.0, at_880.0, ours.fy_n),
         (at_220.1, at_880.1, ours.mz_nmm),

@@ -257,15 +257,16 @@ pub fn run(args: &CreepArgs) -> Result<Solved, CliError> {
         phi_per_mm: args.phi_per_mm,
     };
     let t = tangential::solve(&patch, &creepages, &settings);
+    // `+ 0.0` turns a negative zero (a force of -F · 0) into 0.
     let row = format!(
         "{},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
         args.method,
         t.coefficients.c11,
         t.coefficients.c22,
         t.coefficients.c23,
-        t.fx_n,
-        t.fy_n,
-        t.mz_nmm,
+        t.fx_n + 0.0,
+        t.fy_n + 0.0,
+        t.mz_nmm + 0.0,
         t.adhesion_fraction
     );
     let note = match args.method {
