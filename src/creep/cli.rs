@@ -357,8 +357,10 @@ mod tests {
             .iter()
             .map(|s| s.to_string())
             .collect();
-            argv.push(r.key.to_string());
-            argv.push(bad.clone());
+            match argv.iter().position(|a| a == r.key) {
+                Some(k) => argv[k + 1] = bad.clone(),
+                None => argv.extend([r.key.to_string(), bad.clone()]),
+            }
             let args = Cli::try_parse_from(&argv)
                 .unwrap_or_else(|e| panic!("{i}: {e}"))
                 .creep;
