@@ -295,22 +295,26 @@ mod tests {
         creep: CreepArgs,
     }
 
+    /// A patch of 6 × 4 mm at 50 kN with all three creepages (`--xi`, `--eta`,
+    /// `--phi-per-mm` are the last three values).
+    const BASE: [&str; 13] = [
+        "creep",
+        "--a-mm",
+        "6",
+        "--b-mm",
+        "4",
+        "--normal-force-n",
+        "50000",
+        "--xi",
+        "-1e-3",
+        "--eta",
+        "2e-3",
+        "--phi-per-mm",
+        "-1e-4",
+    ];
+
     fn parse(extra: &[&str]) -> Result<CreepArgs, clap::Error> {
-        let mut argv = vec![
-            "creep",
-            "--a-mm",
-            "6",
-            "--b-mm",
-            "4",
-            "--normal-force-n",
-            "50000",
-            "--xi",
-            "-1e-3",
-            "--eta",
-            "2e-3",
-            "--phi-per-mm",
-            "-1e-4",
-        ];
+        let mut argv = BASE.to_vec();
         argv.extend_from_slice(extra);
         Cli::try_parse_from(argv).map(|c| c.creep)
     }
@@ -339,24 +343,7 @@ mod tests {
             // Each key is an option the parser knows: replacing it with a value out of its
             // range is refused by `run` with that key in the message.
             let bad = format!("{}", r.max * 2.0 + 1.0);
-            let mut argv: Vec<String> = [
-                "creep",
-                "--a-mm",
-                "6",
-                "--b-mm",
-                "4",
-                "--normal-force-n",
-                "50000",
-                "--xi",
-                "0",
-                "--eta",
-                "0",
-                "--phi-per-mm",
-                "0",
-            ]
-            .iter()
-            .map(|s| s.to_string())
-            .collect();
+            let mut argv: Vec<String> = BASE.iter().map(|s| s.to_string()).collect();
             match argv.iter().position(|a| a == r.key) {
                 Some(k) => argv[k + 1] = bad.clone(),
                 None => argv.extend([r.key.to_string(), bad.clone()]),

@@ -32,9 +32,10 @@
 //! combined flexibility `L_c = (ξ² + η² + (k φ)²)/(ξ²/L1 + η²/L2 + (k φ)²/L3)`,
 //! `k = (π a²/4)/(8a/3)`. At full sliding the traction then points along one flexibility's
 //! slip. The window `[0.1, 3]` reproduces the flexibilities CONTACT prints for its FASTSIM
-//! example to 0.03 % (test `flexibilities_match_contacts_fastsim_example`); the later CONTACT
-//! source read for this (`simpflex`) starts the window at 0, which gives 0.5 % different
-//! `L1`, `L2` there. [`Flexibility::Three`] keeps Kalker's three at every creepage.
+//! example (commit d431cdb) to 0.03 % (test `flexibilities_match_contacts_fastsim_example`);
+//! the copy of `simpflex` read for this (`src/m_hertz.f90` at commit 0ecc556) starts the
+//! window at 0, which would make `L1`, `L2` 0.5 % smaller there. [`Flexibility::Three`]
+//! keeps Kalker's three at every creepage.
 //!
 //! # Discretisation
 //!
