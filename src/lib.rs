@@ -13,6 +13,8 @@
 //! 5. [`hertz`]: the Hertz contact ellipse (paper Eqs. 9-20);
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
+//! 7. [`creep`]: creepages from the wheelset's motion and the creep forces of a patch
+//!    (Kalker's linear theory, FASTSIM, Polach);
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
@@ -89,6 +91,7 @@ pub mod conicity;
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
+pub mod creep;
 pub mod error;
 pub mod fleet;
 pub mod gap;
