@@ -23,7 +23,7 @@
 use super::creepage::Creepages;
 use super::tangential::{self, EllipticPatch};
 use super::{Bound, CreepError, Method, Settings};
-use crate::error::Number;
+use crate::message::Number;
 use std::fmt;
 
 /// Arguments of `wheelrail creep`.

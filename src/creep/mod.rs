@@ -57,7 +57,7 @@ pub mod normal;
 pub mod polach;
 pub mod tangential;
 
-use crate::error::Number;
+use crate::message::Number;
 use crate::hertz::{self, Contact, HertzError, NotHertzianReason};
 use coefficients::POISSON_RANGE;
 use creepage::{ContactPoint, Creepages, Motion};
