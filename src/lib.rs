@@ -14,7 +14,8 @@
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
 //! 7. [`creep`]: creepages from the wheelset's motion and the creep forces of a patch
-//!    (Kalker's linear theory, FASTSIM, Polach);
+//!    (Kalker's linear theory, FASTSIM, Polach), and over a sweep ([`creep::sweep`]);
+//! 8. [`contact_table`]: the contact table a vehicle model reads (shift × yaw);
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`report`] turns results into bytes (CSV, SVG, PNG, HTML).
@@ -88,6 +89,7 @@ macro_rules! count {
 pub mod app;
 pub mod cache;
 pub mod conicity;
+pub mod contact_table;
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;

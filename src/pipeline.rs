@@ -5,7 +5,9 @@
 //! Profiles ──> Rigid ──> QuasiElastic ──> Hertz
 //!                    ├─> EpsilonSensitivity
 //!                    └─> EquivalentConicity
+//!                    └─> Creep (QuasiElastic first when `[creep] contact` is quasi-elastic)
 //! HertzAccuracy (no inputs: the paper's Hertz numerics against the exact ones)
+//! Profiles ──> ContactTable (a rigid and a Hertz sweep per yaw of `[table]`)
 //! ```
 //!
 //! Every figure declares the one stage whose result it draws ([`Figure::stage`]); the run
@@ -81,15 +83,27 @@ pub struct Results {
     pub conicity: Option<conicity::PairConicity>,
     /// Accuracy of the paper's Hertz numerics.
     pub hertz_accuracy: Option<hertz::accuracy::HertzAccuracy>,
+    /// Creep forces over the sweep (or why the stage could not run).
+    pub creep: Option<Result<crate::creep::sweep::CreepSweep, crate::creep::CreepError>>,
+    /// The contact table.
+    pub contact_table: Option<crate::contact_table::ContactTable>,
     /// What ran, and how long it took.
     pub record: RunRecord,
 }
 
-/// The stages `scene`'s outputs need, closed under dependencies, in run order. The
-/// profile stage always runs (placement is validated for every scene).
+/// The stages `scene`'s outputs need, closed under dependencies, in run order: those of
+/// its figures, the creep stage for a scene with `[creep]` (`creep.csv`), the contact table
+/// for one with `[table]`. The profile stage always runs (placement is validated for every
+/// scene).
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
-    let figures: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
-    closed_stages(scene, &figures)
+    let mut wanted: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
+    if scene.asks_for_creep {
+        wanted.push(Stage::Creep);
+    }
+    if scene.contact_table.is_some() {
+        wanted.push(Stage::ContactTable);
+    }
+    closed_stages(scene, &wanted)
 }
 
 /// `wanted` and the stages they depend on ([`Stage::requires`]; Hertz also needs the
@@ -102,8 +116,12 @@ pub fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
     while let Some(s) = wanted.pop() {
         if closed.insert(s) {
             wanted.extend_from_slice(s.requires());
-            if s == Stage::Hertz && scene.hertz_contact == hertz::sweep::ContactSource::QuasiElastic
-            {
+            let quasi_elastic = match s {
+                Stage::Hertz => scene.hertz_contact,
+                Stage::Creep => scene.creep().contact,
+                _ => hertz::sweep::ContactSource::Rigid,
+            };
+            if quasi_elastic == hertz::sweep::ContactSource::QuasiElastic {
                 wanted.push(Stage::QuasiElastic);
             }
         }
@@ -220,6 +238,8 @@ fn run_recorded(
         hertz: None,
         conicity: None,
         hertz_accuracy: None,
+        creep: None,
+        contact_table: None,
         record,
     };
     for &stage in stages {
@@ -294,6 +314,47 @@ fn run_recorded(
             Stage::HertzAccuracy => {
                 let a = record.time(stage, hertz::accuracy::study);
                 results.hertz_accuracy = Some(a);
+            }
+            Stage::Creep => {
+                let creep = &scene.creep;
+                let contacts = match creep.contact {
+                    hertz::sweep::ContactSource::Rigid => {
+                        let rigid = results.rigid.as_ref().expect("rigid runs before creep");
+                        hertz::sweep::Contacts::Rigid(rigid)
+                    }
+                    hertz::sweep::ContactSource::QuasiElastic => {
+                        let qe = results.quasi_elastic.as_ref();
+                        hertz::sweep::Contacts::QuasiElastic(qe.expect("its contacts run first"))
+                    }
+                };
+                let c = record.time(stage, || {
+                    crate::creep::sweep::sweep(
+                        &results.placement,
+                        contacts,
+                        scene.wheel_load_n,
+                        &creep.kinematics,
+                        &creep.settings,
+                    )
+                });
+                results.creep = Some(c);
+            }
+            Stage::ContactTable => {
+                if let Some(grid) = &scene.contact_table {
+                    let e_star =
+                        hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+                    let t = record.time(stage, || {
+                        crate::contact_table::compute(
+                            &results.placement,
+                            grid,
+                            scene.rigid_solver,
+                            scene.wheel_load_n,
+                            e_star,
+                            &scene.hertz,
+                            scene.creep.settings.poisson(),
+                        )
+                    });
+                    results.contact_table = Some(t);
+                }
             }
         }
     }

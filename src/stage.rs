@@ -18,11 +18,16 @@ pub enum Stage {
     EquivalentConicity,
     /// Accuracy of the paper's Hertz numerics against the exact method (scene-independent).
     HertzAccuracy,
+    /// Creep forces of every patch over the sweep (`[creep]`).
+    Creep,
+    /// The contact table on a grid of shift × yaw (`[table]`): a rigid and a Hertz sweep
+    /// per yaw, computed on the placement.
+    ContactTable,
 }
 
 impl Stage {
     /// Every stage, in an order that respects the dependencies.
-    pub const ALL: [Stage; 7] = [
+    pub const ALL: [Stage; 9] = [
         Stage::Profiles,
         Stage::Rigid,
         Stage::QuasiElastic,
@@ -30,6 +35,8 @@ impl Stage {
         Stage::Hertz,
         Stage::EquivalentConicity,
         Stage::HertzAccuracy,
+        Stage::Creep,
+        Stage::ContactTable,
     ];
 
     /// The stage's name as printed in run records.
@@ -42,6 +49,8 @@ impl Stage {
             Stage::Hertz => "hertz",
             Stage::EquivalentConicity => "equivalent_conicity",
             Stage::HertzAccuracy => "hertz_accuracy",
+            Stage::Creep => "creep",
+            Stage::ContactTable => "contact_table",
         }
     }
 
@@ -49,13 +58,15 @@ impl Stage {
     pub fn requires(self) -> &'static [Stage] {
         match self {
             Stage::Profiles | Stage::HertzAccuracy => &[],
-            Stage::Rigid => &[Stage::Profiles],
+            Stage::Rigid | Stage::ContactTable => &[Stage::Profiles],
             Stage::QuasiElastic | Stage::EpsilonSensitivity | Stage::EquivalentConicity => {
                 &[Stage::Rigid]
             }
             // Hertz may use the rigid contact only; the closure below adds QuasiElastic when
             // the scene says so (see `needed_stages`).
             Stage::Hertz => &[Stage::Rigid],
+            // Creep too, with QuasiElastic added for `[creep] contact = "quasi_elastic"`.
+            Stage::Creep => &[Stage::Rigid],
         }
     }
 }
@@ -99,11 +110,15 @@ pub enum Figure {
     EquivalentConicity,
     /// Δr with the linear function of the equivalent cone at 3 mm.
     DeltaRLinearised,
+    /// Longitudinal and lateral creep forces of each wheel against the shift.
+    CreepForces,
+    /// Force against creepage on one patch: the three tangential models.
+    CreepCurve,
 }
 
 impl Figure {
     /// Every figure, in report order.
-    pub const ALL: [Figure; 18] = [
+    pub const ALL: [Figure; 20] = [
         Figure::Profiles,
         Figure::Conicity,
         Figure::Curvature,
@@ -122,6 +137,8 @@ impl Figure {
         Figure::SemiAxes,
         Figure::Pressure,
         Figure::HertzAccuracy,
+        Figure::CreepForces,
+        Figure::CreepCurve,
     ];
 
     /// The name used in scene files and as the file stem.
@@ -145,6 +162,8 @@ impl Figure {
             Figure::HertzAccuracy => "hertz_accuracy",
             Figure::EquivalentConicity => "equivalent_conicity",
             Figure::DeltaRLinearised => "delta_r_linearised",
+            Figure::CreepForces => "creep_forces",
+            Figure::CreepCurve => "creep_curve",
         }
     }
 
@@ -169,6 +188,7 @@ impl Figure {
             Figure::SemiAxes | Figure::Pressure => Stage::Hertz,
             Figure::HertzAccuracy => Stage::HertzAccuracy,
             Figure::EquivalentConicity | Figure::DeltaRLinearised => Stage::EquivalentConicity,
+            Figure::CreepForces | Figure::CreepCurve => Stage::Creep,
         }
     }
 }

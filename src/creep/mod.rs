@@ -55,10 +55,11 @@ pub mod fastsim;
 pub mod linear;
 pub mod normal;
 pub mod polach;
+pub mod sweep;
 pub mod tangential;
 
-use crate::message::Number;
 use crate::hertz::{self, Contact, HertzError, NotHertzianReason};
+use crate::message::Number;
 use coefficients::POISSON_RANGE;
 use creepage::{ContactPoint, Creepages, Motion};
 use std::f64::consts::FRAC_PI_2;
@@ -251,6 +252,11 @@ impl Settings {
             poisson,
             ..Settings::default()
         })
+    }
+
+    /// The same settings with another tangential model.
+    pub fn with_method(self, method: Method) -> Settings {
+        Settings { method, ..self }
     }
 
     /// The same settings with another traction bound (FASTSIM only).
@@ -694,6 +700,13 @@ pub enum CreepError {
     },
     /// The Hertz stage refused the input.
     Hertz(HertzError),
+    /// A list of pitch rates without one rate per position of the sweep.
+    PitchRates {
+        /// Rates given.
+        given: usize,
+        /// Positions of the sweep.
+        positions: usize,
+    },
 }
 
 impl fmt::Display for CreepError {
@@ -775,6 +788,10 @@ impl fmt::Display for CreepError {
                 Number(*tolerance)
             ),
             CreepError::Hertz(e) => write!(f, "{e}"),
+            CreepError::PitchRates { given, positions } => write!(
+                f,
+                "{given} pitch rates for a sweep of {positions} positions: expected one rate per position"
+            ),
         }
     }
 }

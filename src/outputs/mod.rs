@@ -5,6 +5,7 @@
 //! `outputs/figures/` (one file per stage) taking that stage's result, a caption in `caption`,
 //! an arm in [`figure`].
 
+pub mod creep;
 mod figures;
 pub mod fleet;
 mod page;
@@ -127,6 +128,20 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
             tables::parameters(&c.parameters).map_err(table_error)?,
         );
     }
+    if let Some(Ok(c)) = &results.creep {
+        push(
+            "creep.csv",
+            "creep forces of every patch over the sweep",
+            creep::creep(c).map_err(table_error)?,
+        );
+    }
+    if let Some(t) = &results.contact_table {
+        push(
+            "contact_table.csv",
+            "contact table: rigid contact, Hertz ellipse and Kalker's coefficients on a grid of shift x yaw",
+            creep::contact_table(t).map_err(table_error)?,
+        );
+    }
     if let Some(a) = &results.hertz_accuracy {
         let (series, ratio) = tables::hertz_accuracy(a).map_err(table_error)?;
         push(
@@ -195,7 +210,23 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
         Figure::DeltaRLinearised => {
             figures::delta_r_linearised(results.conicity.as_ref().ok_or_else(missing)?)
         }
+        Figure::CreepForces => figures::creep_forces(creep_result(results, missing)?),
+        Figure::CreepCurve => figures::creep_curve(
+            crate::creep::sweep::curve(creep_result(results, missing)?).as_ref(),
+        ),
     })
+}
+
+/// The creep stage's result, its error, or `missing()` where it did not run.
+fn creep_result(
+    results: &Results,
+    missing: impl Fn() -> Error,
+) -> Result<&crate::creep::sweep::CreepSweep, Error> {
+    match &results.creep {
+        Some(Ok(c)) => Ok(c),
+        Some(Err(e)) => Err(Error::Other(format!("creep stage: {e}"))),
+        None => Err(missing()),
+    }
 }
 
 /// The caption of a figure in the report.
@@ -229,6 +260,22 @@ pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
         Figure::Pressure => "Maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
         Figure::EquivalentConicity => format!("Equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),
         Figure::DeltaRLinearised => "Rolling radius difference of the rigid sweep (jumps as steps) and the linear function 2 tan γe(3 mm) (y - y_eq) of the equivalent cone over the motion y_eq ± 3 mm.".into(),
+        Figure::CreepForces => {
+            let c = scene.creep();
+            format!(
+                "Creep forces of the wheel on the rail in each patch's contact frame (Fx along the rail, Fy in the contact plane; a positive creepage gives a negative force), {} with mu = {}, from the {} contacts; the heaviest patch as a line, a second patch as markers; patches that did not converge left out. The wheelset {}, at the speed {} m/s, each patch carrying its weight share of the {} kN wheel load with the normal force solved for it (FN cos δ - Fy sin δ = load).",
+                c.settings.method(),
+                c.settings.friction(),
+                c.contact.name(),
+                match c.kinematics.pitch_rate {
+                    crate::creep::sweep::PitchRate::FreeRolling => "rolls freely (pitch rate from the mean rolling radius of the two wheels' contacts)",
+                    crate::creep::sweep::PitchRate::Given(_) => "rolls at the pitch rates the scene gives",
+                },
+                c.kinematics.speed_mm_s / 1000.0,
+                scene.wheel_load_n / 1000.0
+            )
+        }
+        Figure::CreepCurve => "Force against creepage on one patch, the one of the sweep that uses the largest part of its friction (named in the title): its creepages xi, eta, phi scaled together from free rolling (0) through the patch as the sweep found it (the mark) towards full sliding, on its ellipse at its normal force. Kalker's linear theory is the slope at the origin; FASTSIM (the scene's bound and grid) and Polach saturate at mu FN (the dashed line at 1).".into(),
         Figure::HertzAccuracy => "Accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
     }
 }

@@ -13,8 +13,8 @@ use crate::track::{PlacedRail, PlacedWheel, Side};
 /// Sampling step of the profile tables (mm).
 pub const PROFILE_TABLE_STEP_MM: f64 = 0.1;
 
-const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
-const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
+pub(super) const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
+pub(super) const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
 
 /// What the yaw columns of a yawed sweep mean.
 const YAW_COLUMNS: &str = "yaw_rad right-hand about z (up): positive turns the wheelset's forward axis to the left (the left wheel back, the right forward); per wheel: x_mm the contact's position along the track (x forward) from the wheelset centre, lead_mm its distance ahead of the axle along the wheelset's own forward axis; with yaw the rail meets the wheel's outline seen along the track (its points whose normal has no x component), not its profile";
@@ -266,7 +266,7 @@ fn rigid_status(p: &crate::rigid::Position, centred_reference: bool) -> String {
 
 /// Whether [`contact_columns`] writes the rail's contact angle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum RailSlopeColumn {
+pub(super) enum RailSlopeColumn {
     /// `{side}_rail_tan_gamma` after `gamma_rad` (`rigid.csv`).
     Written,
     /// Not written (`quasi_elastic.csv`).
@@ -277,7 +277,7 @@ enum RailSlopeColumn {
 /// contact): `{side}_s_mm`, with yaw `_x_mm`, then `_y_mm, _z_mm`, with yaw `_lead_mm`,
 /// then `_r_mm, _gamma_rad`, `_rail_tan_gamma` where written, and
 /// `_wheel_curvature_per_mm, _rail_curvature_per_mm`.
-fn contact_columns(
+pub(super) fn contact_columns(
     t: TableBuilder,
     side: Side,
     points: &[ContactPoint],

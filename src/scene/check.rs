@@ -66,6 +66,17 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let (wheel_load_n, wheel_material, rail_material) = load_and_materials(raw)?;
     let sweep = yawed(raw, sweep(&raw.sweep)?)?;
     let (figures, formats) = outputs(raw, sweep.yaw().is_yawed())?;
+    let creep = super::creep::creep(
+        raw.creep.as_ref().unwrap_or(&Default::default()),
+        sweep.len(),
+        &wheel_material,
+        &rail_material,
+    )?;
+    let asks_for_creep = raw.creep.is_some();
+    let contact_table = match &raw.table {
+        Some(t) => Some(super::creep::table(t, sweep.yaw().model())?),
+        None => None,
+    };
     let rigid_solver = rigid_solver(raw)?;
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
     let (hertz, hertz_contact) = hertz(raw)?;
@@ -100,6 +111,9 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         hertz_contact,
         conicity,
         fleet,
+        creep,
+        asks_for_creep,
+        contact_table,
     })
 }
 
@@ -307,12 +321,15 @@ fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Inval
 }
 
 /// The figures and image formats asked for; by default every figure (the contact's lead
-/// only for a `yawed` wheelset: without yaw it is 0).
+/// only for a `yawed` wheelset: without yaw it is 0; the creep figures only for a scene
+/// with `[creep]`).
 fn outputs(raw: &RawScene, yawed: bool) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
+    let creep = raw.creep.is_some();
     let figures = match &raw.outputs.figures {
         None => crate::stage::Figure::ALL
             .into_iter()
             .filter(|&f| yawed || f != Figure::ContactLead)
+            .filter(|&f| creep || f.stage() != crate::stage::Stage::Creep)
             .collect(),
         Some(names) => names
             .iter()

@@ -52,6 +52,61 @@ pub struct RawScene {
     /// `[fleet]`.
     #[serde(default)]
     pub fleet: RawFleet,
+    /// `[creep]`: present when the scene asks for creep forces.
+    pub creep: Option<RawCreep>,
+    /// `[table]`: present when the scene asks for the contact table.
+    pub table: Option<RawTable>,
+}
+
+/// `[creep]`: the creep stage's motion and model.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawCreep {
+    /// Forward speed, m/s.
+    pub speed_m_s: Option<f64>,
+    /// Coefficient of friction.
+    pub friction: Option<f64>,
+    /// "fastsim" (default), "linear" or "polach".
+    pub method: Option<String>,
+    /// FASTSIM's traction bound: "parabolic" (default) or "elliptic".
+    pub bound: Option<String>,
+    /// The contacts: "quasi_elastic" (default: the heaviest patch and the second) or "rigid".
+    pub contact: Option<String>,
+    /// Lateral velocity of the wheelset, mm/s, positive to the left.
+    pub lateral_velocity_mm_s: Option<f64>,
+    /// Yaw rate of the wheelset, rad/s.
+    pub yaw_rate_rad_s: Option<f64>,
+    /// Pitch rate, rad/s (positive rolls forwards): one for every position or one per
+    /// position; default free rolling.
+    pub pitch_rate_rad_s: Option<OneOrMany>,
+}
+
+/// A number, or a list of numbers.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrMany {
+    /// One value for all.
+    One(f64),
+    /// One value each.
+    Many(Vec<f64>),
+}
+
+/// `[table]`: the grid of the contact table.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawTable {
+    /// First lateral shift, mm.
+    pub from_mm: Option<f64>,
+    /// Last lateral shift, mm.
+    pub to_mm: Option<f64>,
+    /// Step of the shift, mm.
+    pub step_mm: Option<f64>,
+    /// First yaw, mrad.
+    pub yaw_from_mrad: Option<f64>,
+    /// Last yaw, mrad.
+    pub yaw_to_mrad: Option<f64>,
+    /// Step of the yaw, mrad.
+    pub yaw_step_mrad: Option<f64>,
 }
 
 /// `[fleet]`: settings of `wheelrail fleet` when this scene is its template.
