@@ -163,3 +163,23 @@ fn manchester_scene_without_creep(bencher: divan::Bencher) {
     let scene = manchester_without_creep();
     bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
 }
+
+/// The creep stage alone on the Manchester scene's quasi-elastic patches (42 wheel-cases,
+/// 44 patches): what `manchester_scene_with_creep` adds to `manchester_scene_without_creep`.
+#[divan::bench(sample_count = 50)]
+fn manchester_creep_stage_alone(bencher: divan::Bencher) {
+    let scene = manchester();
+    let results = pipeline::run(&scene).unwrap();
+    let qe = results.quasi_elastic.as_ref().unwrap();
+    let creep = scene.creep();
+    bencher.bench(|| {
+        wheelrail::creep::sweep::sweep(
+            &results.placement,
+            wheelrail::hertz::sweep::Contacts::QuasiElastic(divan::black_box(qe)),
+            scene.wheel_load_n(),
+            &creep.kinematics,
+            &creep.settings,
+        )
+        .unwrap()
+    });
+}
