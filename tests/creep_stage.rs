@@ -3,6 +3,8 @@
 //! scene asks for it), the scene's `[creep]` and `[table]` keys, and the contact table's
 //! zero-yaw row and mirror symmetry.
 
+mod common;
+
 use wheelrail::creep::Status;
 use wheelrail::creep::sweep::{CreepSweep, PitchRate};
 use wheelrail::pipeline::{self, Stage};
@@ -31,31 +33,16 @@ struct Given {
 }
 
 fn given() -> Vec<Given> {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/contact/manchester_a22_given.csv"
-    ))
-    .unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let num = |name: &str| f[at(name)].trim_end_matches('.').parse::<f64>().unwrap();
-            Given {
-                side: if f[at("side")] == "left" {
-                    Side::Left
-                } else {
-                    Side::Right
-                },
-                y_ws: -num("y_ws_mm"),
-                xi: num("CKSI"),
-                eta: -num("CETA"),
-                fn_n: num("FN"),
-                fx_n: num("FX"),
-                fy_n: -num("FS"),
-            }
+    common::manchester_given()
+        .into_iter()
+        .map(|g| Given {
+            side: g.side,
+            y_ws: -g.num("y_ws_mm"),
+            xi: g.num("CKSI"),
+            eta: -g.num("CETA"),
+            fn_n: g.num("FN"),
+            fx_n: g.num("FX"),
+            fy_n: -g.num("FS"),
         })
         .collect()
 }

@@ -2,6 +2,8 @@
 //! every wheel-case of it against a brute force over the wheel's surface, and the mirror
 //! image of a yaw that grows with the shift.
 
+mod common;
+
 use wheelrail::pipeline;
 use wheelrail::rigid::{self, Position, RigidSweep, SideContact};
 use wheelrail::scene::Scene;
@@ -41,30 +43,15 @@ struct Given {
 }
 
 fn given() -> Vec<Given> {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/contact/manchester_a22_given.csv"
-    ))
-    .unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let at = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let num = |name: &str| f[at(name)].trim_end_matches('.').parse::<f64>().unwrap();
-            Given {
-                side: if f[at("side")] == "left" {
-                    Side::Left
-                } else {
-                    Side::Right
-                },
-                y_contact_mm: num("y_ws_mm"),
-                x_track_mm: num("XCP_tr"),
-                lead_mm: num("XCP_w"),
-                y_rail_mm: num("YCP_r"),
-                delta_rad: num("DELTCP_tr"),
-            }
+    common::manchester_given()
+        .into_iter()
+        .map(|g| Given {
+            side: g.side,
+            y_contact_mm: g.num("y_ws_mm"),
+            x_track_mm: g.num("XCP_tr"),
+            lead_mm: g.num("XCP_w"),
+            y_rail_mm: g.num("YCP_r"),
+            delta_rad: g.num("DELTCP_tr"),
         })
         .collect()
 }
