@@ -286,16 +286,11 @@ fn run_recorded(
                 results.epsilon = Some(e);
             }
             Stage::Hertz => {
-                let contacts = match scene.hertz_contact {
-                    hertz::sweep::ContactSource::Rigid => {
-                        let rigid = results.rigid.as_ref().expect("rigid runs before Hertz");
-                        hertz::sweep::Contacts::Rigid(rigid)
-                    }
-                    hertz::sweep::ContactSource::QuasiElastic => {
-                        let qe = results.quasi_elastic.as_ref();
-                        hertz::sweep::Contacts::QuasiElastic(qe.expect("its contacts run first"))
-                    }
-                };
+                let contacts = contacts(
+                    results.rigid.as_deref(),
+                    results.quasi_elastic.as_ref(),
+                    scene.hertz_contact,
+                );
                 let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
                 let h = record.time(stage, || {
                     let load = scene.wheel_load_n;
@@ -317,16 +312,11 @@ fn run_recorded(
             }
             Stage::Creep => {
                 let creep = &scene.creep;
-                let contacts = match creep.contact {
-                    hertz::sweep::ContactSource::Rigid => {
-                        let rigid = results.rigid.as_ref().expect("rigid runs before creep");
-                        hertz::sweep::Contacts::Rigid(rigid)
-                    }
-                    hertz::sweep::ContactSource::QuasiElastic => {
-                        let qe = results.quasi_elastic.as_ref();
-                        hertz::sweep::Contacts::QuasiElastic(qe.expect("its contacts run first"))
-                    }
-                };
+                let contacts = contacts(
+                    results.rigid.as_deref(),
+                    results.quasi_elastic.as_ref(),
+                    creep.contact,
+                );
                 let c = record.time(stage, || {
                     crate::creep::sweep::sweep(
                         &results.placement,
@@ -359,6 +349,23 @@ fn run_recorded(
         }
     }
     results
+}
+
+/// The contacts of `source`: the rigid sweep or the quasi-elastic one (the stage graph ran
+/// their stage first).
+fn contacts<'a>(
+    rigid: Option<&'a RigidSweep>,
+    quasi_elastic: Option<&'a QuasiElasticSweep>,
+    source: hertz::sweep::ContactSource,
+) -> hertz::sweep::Contacts<'a> {
+    match source {
+        hertz::sweep::ContactSource::Rigid => {
+            hertz::sweep::Contacts::Rigid(rigid.expect("rigid runs first"))
+        }
+        hertz::sweep::ContactSource::QuasiElastic => {
+            hertz::sweep::Contacts::QuasiElastic(quasi_elastic.expect("its contacts run first"))
+        }
+    }
 }
 
 /// Loads the scene's four profiles and places them: [`place_wheels`], [`place_rails`] and

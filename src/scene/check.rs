@@ -672,35 +672,45 @@ fn yawed(raw: &RawScene, sweep: Sweep) -> Result<Sweep, Invalid> {
 
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
 fn sweep(raw: &RawSweep) -> Result<Sweep, (&'static str, String)> {
-    let from = raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0);
-    let to = raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1);
-    let step = raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM);
-    for (key, v) in [
-        ("sweep.from_mm", from),
-        ("sweep.to_mm", to),
-        ("sweep.step_mm", step),
-    ] {
+    shifts(
+        raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0),
+        raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1),
+        raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM),
+        ["sweep.from_mm", "sweep.to_mm", "sweep.step_mm"],
+    )
+}
+
+/// The lateral shifts `from` to `to` by `step` (mm), or the offending key of `keys` (from,
+/// to, step: `[sweep]`'s or `[table]`'s) and a message.
+pub(super) fn shifts(
+    from: f64,
+    to: f64,
+    step: f64,
+    keys: [&'static str; 3],
+) -> Result<Sweep, (&'static str, String)> {
+    let [from_key, to_key, step_key] = keys;
+    for (key, v) in [(from_key, from), (to_key, to), (step_key, step)] {
         if !v.is_finite() {
             return Err((key, format!("{} must be a finite number", Number(v))));
         }
     }
     // `Sweep::range` checks the step and the number of positions; the keys' own
     // conditions (the order of the ends, their bounds) come in between, as before.
-    let step_error = |e: SweepError| ("sweep.step_mm", e.to_string());
+    let step_error = |e: SweepError| (step_key, e.to_string());
     if let Err(e @ SweepError::StepTooSmall { .. }) = Sweep::range(0.0, 0.0, step) {
         return Err(step_error(e));
     }
     if to < from {
         return Err((
-            "sweep.to_mm",
+            to_key,
             format!(
-                "{} is below sweep.from_mm = {}: the sweep is empty",
+                "{} is below {from_key} = {}: the sweep is empty",
                 Number(to),
                 Number(from)
             ),
         ));
     }
-    for (key, v) in [("sweep.from_mm", from), ("sweep.to_mm", to)] {
+    for (key, v) in [(from_key, from), (to_key, to)] {
         if v.abs() > 100.0 {
             return Err((
                 key,

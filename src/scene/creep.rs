@@ -10,7 +10,7 @@ use crate::gap::YawModel;
 use crate::hertz::Material;
 use crate::hertz::sweep::ContactSource;
 use crate::message::Number;
-use crate::sweep::{MAX_YAW_RAD, Sweep};
+use crate::sweep::MAX_YAW_RAD;
 
 /// Millimetres per metre (the scene gives the speed in m/s).
 const MM_PER_M: f64 = 1000.0;
@@ -178,24 +178,12 @@ pub(super) fn table(raw: &RawTable, model: YawModel) -> Result<Grid, Invalid> {
     let from = need("table.from_mm", raw.from_mm)?;
     let to = need("table.to_mm", raw.to_mm)?;
     let step = need("table.step_mm", raw.step_mm)?;
-    for (key, v) in [("table.from_mm", from), ("table.to_mm", to)] {
-        if v.abs() > 100.0 {
-            return Err((
-                key,
-                format!(
-                    "{} mm is beyond any flange clearance (expected -100 to 100 mm)",
-                    Number(v)
-                ),
-            ));
-        }
-    }
-    if to < from {
-        return Err((
-            "table.to_mm",
-            format!("{} is below table.from_mm = {}", Number(to), Number(from)),
-        ));
-    }
-    let shifts = Sweep::range(from, to, step).map_err(|e| ("table.step_mm", e.to_string()))?;
+    let shifts = super::check::shifts(
+        from,
+        to,
+        step,
+        ["table.from_mm", "table.to_mm", "table.step_mm"],
+    )?;
     let yaw_from = need("table.yaw_from_mrad", raw.yaw_from_mrad)?;
     let yaw_to = need("table.yaw_to_mrad", raw.yaw_to_mrad)?;
     let yaw_step = need("table.yaw_step_mrad", raw.yaw_step_mrad)?;
