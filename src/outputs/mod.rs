@@ -275,7 +275,7 @@ pub(crate) fn caption(fig: Figure, scene: &Scene) -> String {
                 scene.wheel_load_n / 1000.0
             )
         }
-        Figure::CreepCurve => "Force against creepage on one patch, the one of the sweep that uses the largest part of its friction (named in the title): its creepages xi, eta, phi scaled together from free rolling (0) through the patch as the sweep found it (the mark) towards full sliding, on its ellipse at its normal force. Kalker's linear theory is the slope at the origin; FASTSIM (the scene's bound and grid) and Polach saturate at mu FN (the dashed line at 1).".into(),
+        Figure::CreepCurve => "Force against creepage on one patch, the one of the sweep that uses the largest part of its friction (named in the title): its creepages xi, eta, phi scaled together from free rolling (0) through the patch as the sweep found it (the mark) towards full sliding, on its ellipse at its normal force. Kalker's linear theory is the slope at the origin; FASTSIM (the scene's bound and grid) saturates at mu FN (the dashed line at 1). Polach's method with spin levels off lower where the spin is large: it divides the force along (xi, eta) by the creepage with spin, sqrt(xi^2 + (eta + a phi)^2), and adds a bounded lateral force of the spin.".into(),
         Figure::HertzAccuracy => "Accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
     }
 }
