@@ -8,12 +8,13 @@ use divan::black_box;
 use std::path::Path;
 use std::sync::{Arc, OnceLock};
 use wheelrail::cache::PlacementCache;
+use wheelrail::gap::YawModel;
 use wheelrail::profile::read::PointProfile;
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::scene::Scene;
-use wheelrail::sweep::Sweep;
+use wheelrail::sweep::{Sweep, YawRule};
 use wheelrail::track::{PlacedRail, PlacedWheel, Placement, SidePair};
 use wheelrail::{hertz, pipeline};
 
@@ -177,6 +178,39 @@ fn rigid_default_unmirrored() -> RigidSweep {
         scene().sweep(),
         black_box(Solver::default()),
     )
+}
+
+/// The paper sweep with the wheelset at a fixed yaw of 10 mrad (a wheelset in a curve; a row
+/// of a contact table), solved at every position: the wheel's outline prepared once.
+/// Compare with `rigid_default_unmirrored` (the same positions without yaw).
+#[divan::bench]
+fn rigid_yawed() -> RigidSweep {
+    static S: OnceLock<Sweep> = OnceLock::new();
+    let sweep = S.get_or_init(|| yawed(YawRule::new(0.01, 0.0, YawModel::Exact)));
+    rigid::search(
+        black_box(placement_unmirrored()),
+        sweep,
+        black_box(Solver::default()),
+    )
+}
+
+/// The same sweep with the yaw growing with the shift as the Manchester benchmark's does
+/// (2.4 mrad per mm, 36 mrad at 15 mm): the outline prepared again for every position and
+/// every step of a jump's refinement.
+#[divan::bench]
+fn rigid_yawed_growing() -> RigidSweep {
+    static S: OnceLock<Sweep> = OnceLock::new();
+    let sweep = S.get_or_init(|| yawed(YawRule::new(0.0, 2.4e-3, YawModel::Exact)));
+    rigid::search(
+        black_box(placement_unmirrored()),
+        sweep,
+        black_box(Solver::default()),
+    )
+}
+
+/// The paper sweep with the wheelset yawed by `yaw`.
+fn yawed(yaw: YawRule) -> Sweep {
+    scene().sweep().clone().with_yaw(yaw).unwrap()
 }
 
 /// The rigid sweep with the paper's solver.

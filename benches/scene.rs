@@ -143,3 +143,56 @@ fn rigid_sweep_one_call(bencher: divan::Bencher) {
     let placement = pipeline::place(&scene).unwrap();
     bencher.bench(|| wheelrail::rigid::search(&placement, scene.sweep(), scene.rigid_solver()));
 }
+
+/// The Manchester scene (A-2.2, 21 positions) as committed, with `[creep]` and its two creep
+/// figures: placement, rigid, quasi-elastic, Hertz and creep, no rendering.
+fn manchester() -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/manchester_a22/scene.toml");
+    Scene::load(&path).unwrap()
+}
+
+/// The same scene without its `[creep]` table and creep figures: the ratio of the two is
+/// the cost of the creep stage (issue goal: at most 2).
+fn manchester_without_creep() -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/manchester_a22/scene.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let start = text.find("[creep]").unwrap();
+    let end = text.find("[outputs]").unwrap();
+    let text = format!("{}{}", &text[..start], &text[end..])
+        .replace("\"creep_forces\", \"creep_curve\",", "");
+    let scene = Scene::from_toml(&text, "manchester", path.parent().unwrap()).unwrap();
+    assert!(!pipeline::needed_stages(&scene).contains(&pipeline::Stage::Creep));
+    scene
+}
+
+#[divan::bench(sample_count = 20)]
+fn manchester_scene_with_creep(bencher: divan::Bencher) {
+    let scene = manchester();
+    bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
+}
+
+#[divan::bench(sample_count = 20)]
+fn manchester_scene_without_creep(bencher: divan::Bencher) {
+    let scene = manchester_without_creep();
+    bencher.bench(|| pipeline::run(divan::black_box(&scene)).unwrap());
+}
+
+/// The creep stage alone on the Manchester scene's quasi-elastic patches (42 wheel-cases,
+/// 44 patches): what `manchester_scene_with_creep` adds to `manchester_scene_without_creep`.
+#[divan::bench(sample_count = 50)]
+fn manchester_creep_stage_alone(bencher: divan::Bencher) {
+    let scene = manchester();
+    let results = pipeline::run(&scene).unwrap();
+    let qe = results.quasi_elastic.as_ref().unwrap();
+    let creep = scene.creep();
+    bencher.bench(|| {
+        wheelrail::creep::sweep::sweep(
+            &results.placement,
+            wheelrail::hertz::Contacts::QuasiElastic(divan::black_box(qe)),
+            scene.wheel_load_n(),
+            &creep.kinematics,
+            &creep.settings,
+        )
+        .unwrap()
+    });
+}

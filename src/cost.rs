@@ -120,21 +120,33 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     let mut drivers: Vec<(&'static str, String)> = Vec::new();
     let images = (scene.figures.len() * scene.formats.len()) as f64;
     let bytes = written_bytes(scene, &stages) + images * IMAGE_BYTES;
+    let rigid = match scene.rigid_solver {
+        crate::rigid::Solver::Paper => RIGID_PAPER_FACTOR * RIGID_DEFAULT_PER_WHEEL,
+        _ => RIGID_DEFAULT_PER_WHEEL,
+    };
+    // The contact table: one rigid sweep of both wheels per yaw of its grid.
+    let table = match (&scene.contact_table, stages.contains(&Stage::ContactTable)) {
+        (Some(grid), true) => {
+            let nodes = grid.shifts().len() * grid.yaws_rad().len();
+            drivers.push((
+                "table.step_mm, table.yaw_step_mrad",
+                format!("{nodes} shift x yaw nodes"),
+            ));
+            2.0 * nodes as f64 * rigid
+        }
+        _ => 0.0,
+    };
     if !stages.contains(&Stage::Rigid) {
         return Estimate {
-            evaluations: 0.0,
+            evaluations: table,
             bytes,
             drivers,
         };
     }
     drivers.push(("sweep.step_mm", format!("{} positions", scene.sweep.len())));
-    let rigid = match scene.rigid_solver {
-        crate::rigid::Solver::Paper => {
-            drivers.push(("rigid.solver", "\"paper\"".into()));
-            RIGID_PAPER_FACTOR * RIGID_DEFAULT_PER_WHEEL
-        }
-        _ => RIGID_DEFAULT_PER_WHEEL,
-    };
+    if matches!(scene.rigid_solver, crate::rigid::Solver::Paper) {
+        drivers.push(("rigid.solver", "\"paper\"".into()));
+    }
     let mut per_wheel = rigid;
 
     let mut passes: Vec<f64> = Vec::new();
@@ -170,7 +182,7 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
             ));
         }
     }
-    let mut evaluations = 2.0 * positions * per_wheel;
+    let mut evaluations = 2.0 * positions * per_wheel + table;
     if stages.contains(&Stage::EquivalentConicity) {
         let amplitudes = scene.conicity.amplitudes_mm.as_ref().map_or(96, Vec::len) as f64;
         evaluations += amplitudes * positions / CONICITY_PIECES_PER_EVALUATION;
@@ -295,6 +307,23 @@ mod tests {
         assert!(
             text.contains("quasi_elastic.max_step_mm") && text.contains("quasi_elastic.cutoff"),
             "{text}"
+        );
+    }
+
+    /// A contact table of 401 yaws by 20001 shifts is eight million rigid positions: refused,
+    /// naming its keys, even where no figure asks for a contact search.
+    #[test]
+    fn a_huge_contact_table_is_refused_naming_its_keys() {
+        let e = estimate_of(
+            "[table]\nfrom_mm = -10.0\nto_mm = 10.0\nstep_mm = 0.001\n\
+             yaw_from_mrad = -20.0\nyaw_to_mrad = 20.0\nyaw_step_mrad = 0.1\n\
+             [outputs]\nfigures = [\"profiles\"]",
+        );
+        assert!(!e.within_budget(), "{}", e.describe());
+        assert!(
+            e.describe().contains("table.yaw_step_mrad"),
+            "{}",
+            e.describe()
         );
     }
 

@@ -33,6 +33,8 @@ pub enum Error {
     DeltaR(crate::conicity::DeltaRError),
     /// A Δr table whose text cannot be read.
     DeltaRCsv(crate::conicity::DeltaRCsvError),
+    /// Creep-force inputs out of their range, or a patch the creep forces cannot be found for.
+    Creep(crate::creep::CreepError),
     /// Fleet inputs that cannot be used (a pairs file, a shard, no items).
     Fleet(crate::fleet::FleetError),
     /// Why a fleet's item failed (its row's status).
@@ -81,6 +83,9 @@ pub enum Error {
     /// Arguments of `wheelrail hertz` outside what a wheel and rail can be.
     #[cfg(feature = "cli")]
     HertzArgs(crate::hertz::cli::RunError),
+    /// Arguments of `wheelrail creep` outside what a contact patch can be.
+    #[cfg(feature = "cli")]
+    CreepArgs(crate::creep::cli::CliError),
 }
 
 impl fmt::Display for Error {
@@ -98,6 +103,7 @@ impl fmt::Display for Error {
             Error::ConicitySettings(e) => write!(f, "{e}"),
             Error::DeltaR(e) => write!(f, "{e}"),
             Error::DeltaRCsv(e) => write!(f, "{e}"),
+            Error::Creep(e) => write!(f, "creep stage: {e}"),
             Error::Fleet(e) => write!(f, "{e}"),
             Error::Row(e) => write!(f, "{e}"),
             Error::Io { path, source } => write!(f, "{}: {source}", path.display()),
@@ -117,6 +123,8 @@ impl fmt::Display for Error {
             Error::Chart(name, e) => write!(f, "figure {name}: {e}"),
             #[cfg(feature = "cli")]
             Error::HertzArgs(e) => write!(f, "{e}"),
+            #[cfg(feature = "cli")]
+            Error::CreepArgs(e) => write!(f, "{e}"),
         }
     }
 }
@@ -154,6 +162,7 @@ from! {
     ConicitySettings(crate::conicity::ConicitySettingsError),
     DeltaR(crate::conicity::DeltaRError),
     DeltaRCsv(crate::conicity::DeltaRCsvError),
+    Creep(crate::creep::CreepError),
     Fleet(crate::fleet::FleetError),
     Row(crate::fleet::RowError),
     ThreadPool(rayon::ThreadPoolBuildError),
@@ -166,4 +175,5 @@ from! {
 #[cfg(feature = "cli")]
 from! {
     HertzArgs(crate::hertz::cli::RunError),
+    CreepArgs(crate::creep::cli::CliError),
 }

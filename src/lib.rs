@@ -14,6 +14,9 @@
 //! 5. [`hertz`]: the Hertz contact ellipse (paper Eqs. 9-20), one or over a sweep;
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
+//! 7. [`creep`]: creepages from the wheelset's motion and the creep forces of a patch
+//!    (Kalker's linear theory, FASTSIM, Polach), and over a sweep ([`creep::sweep`]);
+//! 8. [`contact_table`]: the contact table a vehicle model reads (shift × yaw);
 //!
 //! and beside the contact pipeline, [`maintenance`]: a wheel's flange dimensions Sh, Sd, qR
 //! (EN 15313) against their limits, a rail's wear against its nominal profile.
@@ -91,11 +94,13 @@ pub mod app;
 #[doc(hidden)]
 pub mod cache;
 pub mod conicity;
+pub mod contact_table;
 // The work budget of a run: public for the adversarial scenes' test, not part of the API.
 #[doc(hidden)]
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
+pub mod creep;
 pub mod delimited;
 mod error;
 pub mod fleet;

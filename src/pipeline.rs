@@ -5,7 +5,9 @@
 //! Profiles ──> Rigid ──> QuasiElastic ──> Hertz
 //!                    ├─> EpsilonSensitivity
 //!                    └─> EquivalentConicity
+//!                    └─> Creep (QuasiElastic first when `[creep] contact` is quasi-elastic)
 //! HertzAccuracy (no inputs: the paper's Hertz numerics against the exact ones)
+//! Profiles ──> ContactTable (a rigid and a Hertz sweep per yaw of `[table]`)
 //! ```
 //!
 //! Every figure declares the one stage whose result it draws ([`Figure::stage`]); the run
@@ -83,15 +85,27 @@ pub struct Results {
     pub conicity: Option<conicity::PairConicity>,
     /// Accuracy of the paper's Hertz numerics.
     pub hertz_accuracy: Option<hertz::accuracy::HertzAccuracy>,
+    /// Creep forces over the sweep (or why the stage could not run).
+    pub creep: Option<Result<crate::creep::sweep::CreepSweep, crate::creep::CreepError>>,
+    /// The contact table.
+    pub contact_table: Option<crate::contact_table::ContactTable>,
     /// What ran, and how long it took.
     pub record: RunRecord,
 }
 
-/// The stages `scene`'s outputs need, closed under dependencies, in run order. The
-/// profile stage always runs (placement is validated for every scene).
+/// The stages `scene`'s outputs need, closed under dependencies, in run order: those of
+/// its figures, the creep stage for a scene with `[creep]` (`creep.csv`), the contact table
+/// for one with `[table]`. The profile stage always runs (placement is validated for every
+/// scene).
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
-    let figures: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
-    closed_stages(scene, &figures)
+    let mut wanted: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
+    if scene.asks_for_creep {
+        wanted.push(Stage::Creep);
+    }
+    if scene.contact_table.is_some() {
+        wanted.push(Stage::ContactTable);
+    }
+    closed_stages(scene, &wanted)
 }
 
 /// `wanted` and the stages they depend on ([`Stage::requires`]; Hertz also needs the
@@ -104,7 +118,12 @@ pub(crate) fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
     while let Some(s) = wanted.pop() {
         if closed.insert(s) {
             wanted.extend_from_slice(s.requires());
-            if s == Stage::Hertz && scene.hertz_contact == hertz::ContactSource::QuasiElastic {
+            let quasi_elastic = match s {
+                Stage::Hertz => scene.hertz_contact,
+                Stage::Creep => scene.creep().contact,
+                _ => hertz::ContactSource::Rigid,
+            };
+            if quasi_elastic == hertz::ContactSource::QuasiElastic {
                 wanted.push(Stage::QuasiElastic);
             }
         }
@@ -267,6 +286,8 @@ fn run_recorded(
         hertz: None,
         conicity: None,
         hertz_accuracy: None,
+        creep: None,
+        contact_table: None,
         record,
     };
     for &stage in stages {
@@ -316,6 +337,42 @@ fn run_recorded(
                 let a = record.time(stage, progress, hertz::accuracy::study);
                 results.hertz_accuracy = Some(a);
             }
+            Stage::Creep => {
+                let creep = &scene.creep;
+                let contacts = contacts(
+                    results.rigid.as_deref(),
+                    results.quasi_elastic.as_ref(),
+                    creep.contact,
+                );
+                let c = record.time(stage, progress, || {
+                    crate::creep::sweep::sweep(
+                        &results.placement,
+                        contacts,
+                        scene.wheel_load_n,
+                        &creep.kinematics,
+                        &creep.settings,
+                    )
+                });
+                results.creep = Some(c);
+            }
+            Stage::ContactTable => {
+                if let Some(grid) = &scene.contact_table {
+                    let e_star =
+                        hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+                    let t = record.time(stage, progress, || {
+                        crate::contact_table::compute(
+                            &results.placement,
+                            grid,
+                            scene.rigid_solver,
+                            scene.wheel_load_n,
+                            e_star,
+                            &scene.hertz,
+                            scene.creep.settings.poisson(),
+                        )
+                    });
+                    results.contact_table = Some(t);
+                }
+            }
         }
     }
     results
@@ -328,16 +385,24 @@ fn hertz_sweep(
     rigid: Option<&Arc<RigidSweep>>,
     quasi_elastic: Option<&QuasiElasticSweep>,
 ) -> hertz::HertzSweep {
-    let contacts = match scene.hertz_contact {
-        hertz::ContactSource::Rigid => {
-            hertz::Contacts::Rigid(rigid.expect("rigid runs before Hertz"))
-        }
+    let contacts = contacts(rigid.map(|r| &**r), quasi_elastic, scene.hertz_contact);
+    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+    hertz::sweep(contacts, scene.wheel_load_n, e_star, &scene.hertz)
+}
+
+/// The contacts of `source`: the rigid sweep or the quasi-elastic one (the stage graph ran
+/// their stage first).
+fn contacts<'a>(
+    rigid: Option<&'a RigidSweep>,
+    quasi_elastic: Option<&'a QuasiElasticSweep>,
+    source: hertz::ContactSource,
+) -> hertz::Contacts<'a> {
+    match source {
+        hertz::ContactSource::Rigid => hertz::Contacts::Rigid(rigid.expect("rigid runs first")),
         hertz::ContactSource::QuasiElastic => {
             hertz::Contacts::QuasiElastic(quasi_elastic.expect("its contacts run first"))
         }
-    };
-    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
-    hertz::sweep(contacts, scene.wheel_load_n, e_star, &scene.hertz)
+    }
 }
 
 /// The quasi-elastic search on `rigid` at each of the scene's sensitivity values of eps.

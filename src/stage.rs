@@ -18,11 +18,16 @@ pub enum Stage {
     EquivalentConicity,
     /// Accuracy of the paper's Hertz numerics against the exact method (scene-independent).
     HertzAccuracy,
+    /// Creep forces of every patch over the sweep (`[creep]`).
+    Creep,
+    /// The contact table on a grid of shift × yaw (`[table]`): a rigid and a Hertz sweep
+    /// per yaw, computed on the placement.
+    ContactTable,
 }
 
 impl Stage {
     /// Every stage, in an order that respects the dependencies.
-    pub const ALL: [Stage; 7] = [
+    pub const ALL: [Stage; 9] = [
         Stage::Profiles,
         Stage::Rigid,
         Stage::QuasiElastic,
@@ -30,6 +35,8 @@ impl Stage {
         Stage::Hertz,
         Stage::EquivalentConicity,
         Stage::HertzAccuracy,
+        Stage::Creep,
+        Stage::ContactTable,
     ];
 
     /// The stage's name as printed in run records.
@@ -42,6 +49,8 @@ impl Stage {
             Stage::Hertz => "hertz",
             Stage::EquivalentConicity => "equivalent_conicity",
             Stage::HertzAccuracy => "hertz_accuracy",
+            Stage::Creep => "creep",
+            Stage::ContactTable => "contact_table",
         }
     }
 
@@ -60,13 +69,15 @@ impl Stage {
     pub fn requires(self) -> &'static [Stage] {
         match self {
             Stage::Profiles | Stage::HertzAccuracy => &[],
-            Stage::Rigid => &[Stage::Profiles],
+            Stage::Rigid | Stage::ContactTable => &[Stage::Profiles],
             Stage::QuasiElastic | Stage::EpsilonSensitivity | Stage::EquivalentConicity => {
                 &[Stage::Rigid]
             }
             // Hertz may use the rigid contact only; the closure below adds QuasiElastic when
             // the scene says so (see `needed_stages`).
             Stage::Hertz => &[Stage::Rigid],
+            // Creep too, with QuasiElastic added for `[creep] contact = "quasi_elastic"`.
+            Stage::Creep => &[Stage::Rigid],
         }
     }
 }
@@ -86,6 +97,8 @@ pub enum Figure {
     RollingRadius,
     /// Contact angles against the shift (paper Fig. 2).
     ContactAngles,
+    /// Lead of each wheel's contact ahead of the axle against the shift (yaw).
+    ContactLead,
     /// Roll angle against the shift (paper Fig. 2).
     Roll,
     /// Wickens' contact angle parameter against the shift (paper Fig. 2).
@@ -108,11 +121,15 @@ pub enum Figure {
     EquivalentConicity,
     /// Δr with the linear function of the equivalent cone at 3 mm.
     DeltaRLinearised,
+    /// Longitudinal and lateral creep forces of each wheel against the shift.
+    CreepForces,
+    /// Force against creepage on one patch: the three tangential models.
+    CreepCurve,
 }
 
 impl Figure {
     /// Every figure, in report order.
-    pub const ALL: [Figure; 17] = [
+    pub const ALL: [Figure; 20] = [
         Figure::Profiles,
         Figure::Conicity,
         Figure::Curvature,
@@ -121,6 +138,7 @@ impl Figure {
         Figure::EquivalentConicity,
         Figure::DeltaRLinearised,
         Figure::ContactAngles,
+        Figure::ContactLead,
         Figure::Roll,
         Figure::ContactAngleParameter,
         Figure::ContactMap,
@@ -130,6 +148,8 @@ impl Figure {
         Figure::SemiAxes,
         Figure::Pressure,
         Figure::HertzAccuracy,
+        Figure::CreepForces,
+        Figure::CreepCurve,
     ];
 
     /// The name used in scene files and as the file stem.
@@ -141,6 +161,7 @@ impl Figure {
             Figure::ContactPoints => "contact_points",
             Figure::RollingRadius => "rolling_radius",
             Figure::ContactAngles => "contact_angles",
+            Figure::ContactLead => "contact_lead",
             Figure::Roll => "roll",
             Figure::ContactAngleParameter => "contact_angle_parameter",
             Figure::ContactMap => "contact_map",
@@ -152,6 +173,8 @@ impl Figure {
             Figure::HertzAccuracy => "hertz_accuracy",
             Figure::EquivalentConicity => "equivalent_conicity",
             Figure::DeltaRLinearised => "delta_r_linearised",
+            Figure::CreepForces => "creep_forces",
+            Figure::CreepCurve => "creep_curve",
         }
     }
 
@@ -167,6 +190,7 @@ impl Figure {
             Figure::ContactPoints
             | Figure::RollingRadius
             | Figure::ContactAngles
+            | Figure::ContactLead
             | Figure::Roll
             | Figure::ContactAngleParameter
             | Figure::ContactMap => Stage::Rigid,
@@ -175,6 +199,7 @@ impl Figure {
             Figure::SemiAxes | Figure::Pressure => Stage::Hertz,
             Figure::HertzAccuracy => Stage::HertzAccuracy,
             Figure::EquivalentConicity | Figure::DeltaRLinearised => Stage::EquivalentConicity,
+            Figure::CreepForces | Figure::CreepCurve => Stage::Creep,
         }
     }
 }

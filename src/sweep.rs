@@ -3,9 +3,15 @@
 //! and the one decision of which positions a stage computes and which it mirrors
 //! (`Mirror`), shared by the rigid search, the quasi-elastic pass and the Hertz sweep.
 
+pub use crate::gap::YawModel;
 use crate::message::Number;
 use crate::track::Placement;
 use std::fmt;
+
+/// The largest yaw of the wheelset a sweep may reach (rad): 50 mrad, beyond the angle of
+/// attack of a wheelset in the tightest curves (about 40 mrad at 150 m radius); a larger
+/// value is almost certainly a unit mistake (degrees or milliradians for radians).
+pub const MAX_YAW_RAD: f64 = 0.05;
 
 /// The largest number of positions [`Sweep::range`] makes: a sweep of a million positions
 /// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
@@ -56,6 +62,13 @@ pub enum SweepError {
         /// Its end (mm).
         to_mm: f64,
     },
+    /// A yaw that is not finite, or reaches beyond [`MAX_YAW_RAD`] at an end of the sweep.
+    Yaw {
+        /// The yaw at that end (rad).
+        yaw_rad: f64,
+        /// The shift of that end (mm).
+        y_ws_mm: f64,
+    },
     /// A range of more than 100001 positions.
     TooManyPositions {
         /// The step (mm).
@@ -93,6 +106,13 @@ impl fmt::Display for SweepError {
                 Number(to_mm),
                 Number(from_mm)
             ),
+            SweepError::Yaw { yaw_rad, y_ws_mm } => write!(
+                f,
+                "the yaw reaches {} mrad at the shift {} mm; at most {} mrad either way is a wheelset's yaw",
+                Number(yaw_rad * 1e3),
+                Number(y_ws_mm),
+                Number(MAX_YAW_RAD * 1e3)
+            ),
             SweepError::TooManyPositions { step_mm, positions } => write!(
                 f,
                 "{} mm gives {} positions; at most {MAX_POSITIONS} are allowed",
@@ -126,6 +146,78 @@ impl std::error::Error for SweepError {}
 pub struct Sweep {
     shifts_mm: Vec<f64>,
     symmetric: bool,
+    yaw: YawRule,
+}
+
+/// The yaw of the wheelset along a sweep: `psi(y_ws) = yaw_rad + yaw_rad_per_mm y_ws`, a
+/// fixed yaw (a wheelset in a curve) and one that grows with the shift (as the Manchester
+/// benchmark's case sets it), with the model of its outline ([`YawModel`]).
+///
+/// # Frames and signs
+///
+/// A right-hand rotation about the track's z (up): positive yaw turns the wheelset's
+/// forward axis to the left (+y), moving the left wheel back (-x) and the right one forward.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct YawRule {
+    yaw_rad: f64,
+    yaw_rad_per_mm: f64,
+    model: YawModel,
+}
+
+impl YawRule {
+    /// No yaw.
+    pub const NONE: YawRule = YawRule {
+        yaw_rad: 0.0,
+        yaw_rad_per_mm: 0.0,
+        model: YawModel::Exact,
+    };
+
+    /// `psi(y_ws) = yaw_rad + yaw_rad_per_mm y_ws`; checked against a sweep by
+    /// [`Sweep::with_yaw`].
+    pub fn new(yaw_rad: f64, yaw_rad_per_mm: f64, model: YawModel) -> YawRule {
+        YawRule {
+            yaw_rad,
+            yaw_rad_per_mm,
+            model,
+        }
+    }
+
+    /// The yaw at the shift `y_ws` (rad).
+    #[inline]
+    pub fn at(&self, y_ws: f64) -> f64 {
+        self.yaw_rad + self.yaw_rad_per_mm * y_ws
+    }
+
+    /// The fixed part (rad).
+    pub fn yaw_rad(&self) -> f64 {
+        self.yaw_rad
+    }
+
+    /// The part that grows with the shift (rad/mm).
+    pub fn yaw_rad_per_mm(&self) -> f64 {
+        self.yaw_rad_per_mm
+    }
+
+    /// The model of the yawed wheel's outline.
+    pub fn model(&self) -> YawModel {
+        self.model
+    }
+
+    /// Whether the wheelset is yawed anywhere.
+    pub fn is_yawed(&self) -> bool {
+        self.yaw_rad != 0.0 || self.yaw_rad_per_mm != 0.0
+    }
+
+    /// Whether the yaw changes from position to position.
+    pub fn varies(&self) -> bool {
+        self.yaw_rad_per_mm != 0.0
+    }
+
+    /// Whether the yaw is odd in the shift (`psi(-y) = -psi(y)`: no fixed part), so that a
+    /// mirror-symmetric wheelset's positions at `-y` are the images of those at `y`.
+    pub fn is_odd(&self) -> bool {
+        self.yaw_rad == 0.0
+    }
 }
 
 impl Sweep {
@@ -155,7 +247,29 @@ impl Sweep {
         Ok(Sweep {
             shifts_mm: shifts_mm.to_vec(),
             symmetric,
+            yaw: YawRule::NONE,
         })
+    }
+
+    /// This sweep with the wheelset yawed by `yaw` along it.
+    ///
+    /// # Errors
+    /// [`SweepError::Yaw`] where the yaw is not finite or reaches beyond [`MAX_YAW_RAD`] at
+    /// an end of the sweep.
+    pub fn with_yaw(mut self, yaw: YawRule) -> Result<Sweep, SweepError> {
+        for y_ws_mm in [self.shifts_mm[0], self.shifts_mm[self.shifts_mm.len() - 1]] {
+            let yaw_rad = yaw.at(y_ws_mm);
+            if yaw_rad.is_nan() || yaw_rad.abs() > MAX_YAW_RAD {
+                return Err(SweepError::Yaw { yaw_rad, y_ws_mm });
+            }
+        }
+        self.yaw = yaw;
+        Ok(self)
+    }
+
+    /// The yaw of the wheelset along the sweep.
+    pub fn yaw(&self) -> &YawRule {
+        &self.yaw
     }
 
     /// The shifts `from_mm + i step_mm` up to `to_mm` (included when the step divides the
@@ -230,7 +344,8 @@ impl Mirror {
     /// joins the decision here: the image of `(y, psi)` is `(-y, -psi)`, so it must be odd
     /// in `y` for the images to be the positions before the middle.
     pub(crate) fn of(placement: &Placement, sweep: &Sweep) -> Option<Mirror> {
-        (placement.mirrors() && sweep.is_symmetric()).then_some(Mirror { len: sweep.len() })
+        (placement.mirrors() && sweep.is_symmetric() && sweep.yaw().is_odd())
+            .then_some(Mirror { len: sweep.len() })
     }
 
     /// The first position computed: the middle one (`n / 2`).

@@ -89,6 +89,9 @@ pub enum Command {
     Fleet(fleet::FleetArgs),
     /// Hertz contact ellipse for given curvatures and load; prints a CSV header and row.
     Hertz(crate::hertz::cli::HertzArgs),
+    /// Creep forces of one elliptic patch (Kalker's linear theory, FASTSIM or Polach);
+    /// prints a CSV header and row (forces of the wheel on the rail).
+    Creep(crate::creep::cli::CreepArgs),
     /// Equivalent conicity (EN 15302) from a Δr table; prints CSV (amplitude_mm,
     /// tan_gamma_e, centre_mm, status).
     Conicity {
@@ -191,6 +194,14 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
         Some(Command::Fleet(args)) => fleet::run(&args),
         Some(Command::Hertz(args)) => {
             let solved = crate::hertz::cli::run(&args)?;
+            print!("{}", solved.csv);
+            if let Some(note) = solved.note {
+                eprintln!("note: {note}");
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(Command::Creep(args)) => {
+            let solved = crate::creep::cli::run(&args)?;
             print!("{}", solved.csv);
             if let Some(note) = solved.note {
                 eprintln!("note: {note}");

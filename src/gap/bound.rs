@@ -236,8 +236,8 @@ impl SideGap<'_> {
             return;
         }
         let wheel = match cell.coarse {
-            Some((i, j)) => cells.over(i, j),
-            None => self.pair.wheel.cell(a, b, &self.joints),
+            Some((i, j)) => self.cells_over(cells, i, j),
+            None => self.sub_cell(a, b),
         };
         let Some((lb, m)) = self.lower_bound(&cell, &wheel, pose) else {
             return;
@@ -248,9 +248,15 @@ impl SideGap<'_> {
         if let (Some(pa), Some(pb), true) = (cell.a.p, cell.b.p, m >= 0.0 && wheel.jump == 0.0) {
             // Convex: the minimum is an end or the one stationary point between, and the
             // gap lies above the tangent at any point: at a known minimum inside, flat.
+            // The cell's length along Yw, which `dg` is taken along.
+            let length = if self.yawed() {
+                pb.wheel.y - pa.wheel.y
+            } else {
+                b - a
+            };
             let flat = known
                 .iter()
-                .find(|k| a < k.s && k.s < b && k.dg.abs() * (b - a) <= 0.5 * CERTIFY_TOL_MM);
+                .find(|k| a < k.s && k.s < b && k.dg.abs() * length <= 0.5 * CERTIFY_TOL_MM);
             if let Some(k) = flat {
                 search.consider(Some(*k), cell.slack);
             } else if pa.dg >= 0.0 || pb.dg <= 0.0 {
@@ -291,8 +297,7 @@ impl SideGap<'_> {
     /// rail.
     fn lower_bound(&self, cell: &Cell, wheel: &WheelCell, pose: &SidePose) -> Option<(f64, f64)> {
         let (a, b) = (cell.a.s, cell.b.s);
-        let t = self.pair.wheel.taping_line_mm();
-        let [y_lo, y_hi, z_lo] = span(pose, (t + a, t + b), wheel.z);
+        let [y_lo, y_hi, z_lo] = span(pose, self.yw_range(a, b)?, wheel.z);
         let rail = &self.pair.rail;
         let r = if cell.depth <= BINNED_DEPTH {
             rail.binned_bounds(y_lo, y_hi)?
@@ -304,10 +309,16 @@ impl SideGap<'_> {
             return Some((zeroth, f64::NEG_INFINITY));
         };
         let (m, big_m) = curvature_range(pose_trig(pose), &wheel.d, &r);
-        let h = b - a;
+        // Along Yw, which the derivatives are taken along: `s` itself without yaw.
+        let (ya, yb) = if self.yawed() {
+            (pa.wheel.y, pb.wheel.y)
+        } else {
+            (a, b)
+        };
+        let h = yb - ya;
         let jump = joint_terms(wheel.jump, &r, pose.sin.abs());
         let interpolated = pa.g.min(pb.g) - big_m.max(0.0) * h * h / 8.0 - jump;
-        let taylor = from_both_ends(a, b, (pa.g, pa.dg), (pb.g, pb.dg), m) - jump;
+        let taylor = from_both_ends(ya, yb, (pa.g, pa.dg), (pb.g, pb.dg), m) - jump;
         // NaN (unbounded products) falls back to the zeroth order.
         let lb = [interpolated, taylor]
             .into_iter()

@@ -1,7 +1,7 @@
 //! The certificate against a full fine scan (brute force) on noisy measured-like profiles,
 //! and on the paper's profiles.
 
-use super::super::{GapPoint, SideGap, SidePose};
+use super::super::{GapPoint, SideGap, SidePose, Yaw, YawModel};
 use super::CERTIFY_TOL_MM;
 use crate::profile::read::{ProfileFormat, parse_str};
 use crate::profile::{Profile, ProfileKind};
@@ -132,6 +132,54 @@ fn the_certified_minimum_is_the_lowest_of_a_fine_scan_on_noisy_profiles() {
     );
 }
 
+/// The certificate of a yawed wheel (its outline in place of the profile) against the fine
+/// scan of the same outline: on the paper's profiles and on noisy ones, both sides, yaws up
+/// to 30 mrad either way and shifts onto the flange; every certificate completes and
+/// nothing the fine scan finds lies lower than the certified minimum by more than the
+/// tolerance (plus S1002's value jump at its joints, which the scan may straddle).
+#[test]
+fn the_certified_minimum_of_a_yawed_wheel_is_the_lowest_of_a_fine_scan() {
+    let mut cases = vec![(
+        "analytic 1:40".to_string(),
+        pair(Profile::s1002(), Profile::uic60e1(), "1:40"),
+    )];
+    for (seed, incl) in [(21u64, "1:40"), (22, "vertical")] {
+        let wheel = noisy(&Profile::s1002(), 0.55, 20.0, seed);
+        let rail = noisy(&Profile::uic60e1(), 0.55, 5.0, seed ^ 1);
+        cases.push((format!("noisy seed {seed} {incl}"), pair(wheel, rail, incl)));
+    }
+    let mut poses = 0;
+    for (name, pair) in &cases {
+        for sign in [1.0, -1.0] {
+            for yaw_rad in [0.03, -0.024, 0.01] {
+                let mut side = SideGap::new(pair, sign);
+                side.set_yaw(Yaw::new(sign, yaw_rad, YawModel::Exact));
+                for i in 0..=24 {
+                    for roll in [-2e-3, 1e-3] {
+                        let y_ws = -12.0 + f64::from(i);
+                        let pose = SidePose::yawed(sign, y_ws, roll, yaw_rad);
+                        let Some((best, minima)) = basin_minimum(&side, &pose) else {
+                            continue;
+                        };
+                        let cert = side.certify(&pose, best, &minima);
+                        assert!(cert.complete, "{name} yaw {yaw_rad} y {y_ws}: {cert:?}");
+                        let certified = cert.lower.unwrap_or(best);
+                        let (s, brute) = fine_scan(&side, &pose, 0.002).unwrap();
+                        assert!(
+                            certified.g <= brute + CERTIFY_TOL_MM + 1.2e-4,
+                            "{name} yaw {yaw_rad} y {y_ws}: {} at {} above the scan's {brute} at {s}",
+                            certified.g,
+                            certified.s
+                        );
+                        poses += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(poses > 800, "{poses}");
+}
+
 /// On the paper's S1002 and UIC60 at 1:40 the basins' minimum is already global: the
 /// certificate finds nothing lower, and is cheap (few cells where the contact lies).
 #[test]
@@ -221,21 +269,26 @@ fn the_cushion_and_convexity_bounds_lie_below_a_dense_sample() {
         |lo: f64, hi: f64| lo + (hi - lo) * (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut blocks, mut tight_cushion, mut convex, mut tight_convex, mut curved) = (0, 0, 0, 0, 0);
     for (name, pair) in bound_cases() {
-        for sign in [1.0, -1.0] {
-            let side = SideGap::new(&pair, sign);
+        for (sign, yaw_rad) in [(1.0, 0.0), (-1.0, 0.0), (1.0, 0.03), (-1.0, -0.025)] {
+            let mut side = SideGap::new(&pair, sign);
+            side.set_yaw(Yaw::new(sign, yaw_rad, YawModel::Exact));
             let n = side.coarse.len() - 1;
             let cells = side.pair.wheel.cells(n);
             let h = side.coarse[1][0] - side.coarse[0][0];
             for _ in 0..12 {
                 let (y_ws, roll) = (uniform(-11.0, 11.0), uniform(-3e-3, 3e-3));
-                let pose = SidePose::new(sign, y_ws, roll);
+                let pose = SidePose::yawed(sign, y_ws, roll, yaw_rad);
                 let Some((best, _)) = basin_minimum(&side, &pose) else {
                     continue;
                 };
                 // A box about a pose nearby that holds `pose`.
                 let mut pose_box = PoseBox::default();
-                let near =
-                    SidePose::new(sign, y_ws + uniform(-0.9, 0.9), roll + uniform(-8e-4, 8e-4));
+                let near = SidePose::yawed(
+                    sign,
+                    y_ws + uniform(-0.9, 0.9),
+                    roll + uniform(-8e-4, 8e-4),
+                    yaw_rad,
+                );
                 side.fill_pose_box(&near, &mut pose_box);
                 assert!(pose_box.holds(&pose));
                 // The block of the contact, its neighbours and a random one.
@@ -276,7 +329,7 @@ fn the_cushion_and_convexity_bounds_lie_below_a_dense_sample() {
                     blocks += 1;
                     // The second differences every 0.01 mm on each joint-free cell.
                     for c in i..j {
-                        let w = cells.cells()[c];
+                        let w = side.cells_over(&cells, c, c + 1);
                         let [y_lo, y_hi, _] =
                             span(&pose, (side.coarse[c][1], side.coarse[c + 1][1]), w.z);
                         let Some(r) = side.pair.rail.binned_bounds(y_lo, y_hi) else {
@@ -289,8 +342,11 @@ fn the_cushion_and_convexity_bounds_lie_below_a_dense_sample() {
                         let d = 0.01;
                         for k in 1..25 {
                             let s = side.coarse[c][0] + d * f64::from(k);
-                            let g = |s: f64| side.at(s, &pose).map(|p| p.g);
-                            let (Some(g0), Some(g1), Some(g2)) = (g(s - d), g(s), g(s + d)) else {
+                            // The gap against Yw, which its derivatives are taken along.
+                            let g = |s: f64| side.at(s, &pose).map(|p| (p.wheel.y, p.g));
+                            let (Some((y0, g0)), Some((y1, g1)), Some((y2, g2))) =
+                                (g(s - d), g(s), g(s + d))
+                            else {
                                 continue;
                             };
                             // The second difference is g'' at a point within d of s (inside
@@ -299,7 +355,11 @@ fn the_cushion_and_convexity_bounds_lie_below_a_dense_sample() {
                             // mm, and rounding near 460 mm): 4 x 1e-11 / d^2 = 4e-7 per mm.
                             // Seen: 4.7e-8 on the analytic cone (g'' = 0 exactly) in cells
                             // the blocks of 16 samples bring into the test.
-                            let second = (g0 - 2.0 * g1 + g2) / (d * d);
+                            let second = if side.yawed() {
+                                2.0 * ((g2 - g1) / (y2 - y1) - (g1 - g0) / (y1 - y0)) / (y2 - y0)
+                            } else {
+                                (g0 - 2.0 * g1 + g2) / (d * d)
+                            };
                             let slack = 4.0 * super::super::certify::EXACT_PAD_MM / (d * d);
                             assert!(
                                 second >= m - slack && second <= big_m + slack,

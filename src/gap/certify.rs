@@ -112,12 +112,17 @@ impl SideGap<'_> {
             cells: &cells,
             known,
             zones: &mut zones,
-            slack: self.pair.wheel.value_jump_mm() + self.pair.rail.value_jump_mm(),
+            slack: self.value_jumps(),
             hard: 0,
         };
+        // The cushions read the outline's bounds at one yaw: made again at another.
+        if pose_box.cushion_yaw != pose.yaw.to_bits() {
+            pose_box.cushions.fill(f64::NAN);
+            pose_box.cushion_yaw = pose.yaw.to_bits();
+        }
         let (first, last) = scanned.range;
         if last >= first + 2 {
-            let [yc, zc] = self.box_reference();
+            let [yc, zc] = pose_box.reference;
             let common = pose.sin * yc + pose.cos * zc;
             for b in first / SCAN_BLOCK..=(last - 2) / SCAN_BLOCK {
                 // Step 1 for most blocks, in the loop: a block the scan skipped whose bound
@@ -151,7 +156,7 @@ impl SideGap<'_> {
         let (first, last) = scanned.range;
         let t = pass.threshold();
         if !scanned.evaluated(b) {
-            let [yc, zc] = self.box_reference();
+            let [yc, zc] = pose_box.reference;
             let common = pose.sin * yc + pose.cos * zc;
             if pose_box.certified[b] + common >= t || self.certified_block_bound(b, pose) >= t {
                 return;
@@ -217,7 +222,8 @@ impl SideGap<'_> {
         let [y_lo, y_hi] = pose_box.spans[b];
         let trig = pose_box.trig;
         let sin_abs = trig[1].0.abs().max(trig[1].1.abs());
-        self.cushion(cells.over(i, j), (y_lo, y_hi), trig, sin_abs)
+        let w = self.cells_over(cells, i, j);
+        self.cushion(w, (y_lo, y_hi), trig, sin_abs, self.cell_width(b))
     }
 
     /// What the interpolation bound on the coarse samples of a cell of block `b` subtracts
@@ -226,19 +232,21 @@ impl SideGap<'_> {
     /// `+inf` where the rail is not bounded there.
     pub(super) fn block_cushion(&self, b: usize, cells: &WheelCells, pose: &SidePose) -> f64 {
         let (i, j) = self.block_cells(b);
-        let w = cells.over(i, j);
+        let w = self.cells_over(cells, i, j);
         let [y_lo, y_hi, _] = span(pose, (self.coarse[i][1], self.coarse[j][1]), w.z);
-        self.cushion(w, (y_lo, y_hi), pose_trig(pose), pose.sin.abs())
+        let h = self.cell_width(b);
+        self.cushion(w, (y_lo, y_hi), pose_trig(pose), pose.sin.abs(), h)
     }
 
-    /// The cushion of wheel cells `w` over the lateral span `y` with `cos phi`, `sin phi` in
-    /// `trig` and `|sin phi| <= sin_abs`.
+    /// The cushion of wheel cells `w`, none wider than `h` along `Yw`, over the lateral span
+    /// `y` with `cos phi`, `sin phi` in `trig` and `|sin phi| <= sin_abs`.
     fn cushion(
         &self,
         w: crate::track::WheelCell,
         (y_lo, y_hi): (f64, f64),
         trig: [(f64, f64); 2],
         sin_abs: f64,
+        h: f64,
     ) -> f64 {
         // The table's samples interpolate exact heights up to a step outside the span.
         let step = HEIGHT_TABLE_STEP_MM;
@@ -246,7 +254,6 @@ impl SideGap<'_> {
             return f64::INFINITY;
         };
         let (_, big_m) = curvature_range(trig, &w.d, &r);
-        let h = self.coarse[1][0] - self.coarse[0][0];
         let table = (-r.d2.0).max(0.0) * step * step / 8.0 * (1.0 + TABLE_PAD);
         big_m.max(0.0) * h * h / 8.0 + joint_terms(w.jump, &r, sin_abs) + table + EXACT_PAD_MM
     }
@@ -254,7 +261,7 @@ impl SideGap<'_> {
     /// A coarse cell the interpolation bound left: its zeroth-order bound, convexity about a
     /// known minimum, or the deep search.
     fn certify_cell(&self, i: usize, pose: &SidePose, pass: &mut Pass) {
-        let w = pass.cells.cells()[i];
+        let w = self.cells_over(pass.cells, i, i + 1);
         let [y_lo, y_hi, z_lo] = span(pose, (self.coarse[i][1], self.coarse[i + 1][1]), w.z);
         match self.pair.rail.binned_max_height(y_lo, y_hi) {
             // No point of the cell over the rail.
@@ -313,7 +320,7 @@ impl SideGap<'_> {
         let h = self.coarse[1][0] - self.coarse[0][0];
         let ik = (((p.s - self.coarse[0][0]) / h).max(0.0) as usize).min(n - 1);
         let (lo, hi) = (i.min(ik), (i + 1).max(ik + 1));
-        let w = cells.over(lo, hi);
+        let w = self.cells_over(cells, lo, hi);
         let [y_lo, y_hi, _] = span(pose, (self.coarse[lo][1], self.coarse[hi][1]), w.z);
         let (r_lo, r_hi) = self.pair.rail.y_range();
         if y_lo < r_lo || y_hi > r_hi {
@@ -327,6 +334,12 @@ impl SideGap<'_> {
         let length = self.coarse[hi][0] - self.coarse[lo][0];
         // The wheel's slope jumps count over the whole length, not a cell's.
         let jumps = joint_terms(w.jump * (length / h).max(1.0), &r, pose.sin.abs());
-        Some((p.g - p.dg.abs() * length - jumps - EXACT_PAD_MM, lo, hi))
+        // The tangent's lever along Yw, which `dg` is taken along.
+        let lever = if self.yawed() {
+            self.coarse[hi][1] - self.coarse[lo][1]
+        } else {
+            length
+        };
+        Some((p.g - p.dg.abs() * lever - jumps - EXACT_PAD_MM, lo, hi))
     }
 }

@@ -41,6 +41,12 @@ pub struct ContactPoint {
     pub wheel_curvature: f64,
     /// Lateral curvature of the rail at the point, convex positive (1/mm).
     pub rail_curvature: f64,
+    /// Longitudinal position along the track (mm, x forward) relative to the wheelset
+    /// centre: 0 without yaw.
+    pub x: f64,
+    /// Distance ahead of the axle along the wheelset's own forward axis (mm): 0 without
+    /// yaw.
+    pub lead: f64,
 }
 
 impl ContactPoint {
@@ -54,5 +60,7 @@ impl ContactPoint {
         rail_tan_gamma: f64::NAN,
         wheel_curvature: f64::NAN,
         rail_curvature: f64::NAN,
+        x: f64::NAN,
+        lead: f64::NAN,
     };
 }

@@ -49,6 +49,7 @@ impl SideGap<'_> {
         out: &mut Vec<(f64, f64)>,
     ) {
         out.clear();
+        self.check_yaw(pose);
         // Samples outside `first..last` cannot lie above the rail (see `basins`): they are
         // not low, exactly as the table would answer.
         let (first, last) = self.over_rail(pose);
@@ -150,12 +151,14 @@ impl SideGap<'_> {
     }
 
     /// The wheel extents of the groups of [`GROUP_BLOCKS`] blocks aligned on its multiples
-    /// (the last group holding the blocks left), for [`SideGap::new`].
-    pub(super) fn group_extents(&self) -> Vec<[f64; 4]> {
-        (0..self.blocks.len())
-            .step_by(GROUP_BLOCKS)
-            .map(|g| self.extent(g..(g + GROUP_BLOCKS).min(self.blocks.len())))
-            .collect()
+    /// (the last group holding the blocks left), into `out`, for [`SideGap::new`].
+    pub(super) fn group_extents(&self, out: &mut Vec<[f64; 4]>) {
+        out.clear();
+        out.extend(
+            (0..self.blocks.len())
+                .step_by(GROUP_BLOCKS)
+                .map(|g| self.extent(g..(g + GROUP_BLOCKS).min(self.blocks.len()))),
+        );
     }
 
     /// The wheel extents `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of a run of blocks.

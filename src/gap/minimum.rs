@@ -146,7 +146,8 @@ impl SideGap<'_> {
                 lo = p.s;
                 p_lo = Some(Some(p));
             }
-            let newton = p.s - p.dg / p.ddg;
+            // A Newton step along Yw, which the derivatives are taken along, in `s`.
+            let newton = p.s - p.dg / p.ddg / p.wheel.dy_ds;
             let is_newton = p.ddg > 0.0 && newton > lo && newton < hi;
             if !is_newton
                 && let Some(end) = self.falling_out_at_end(&p, lo, hi, &mut p_lo, &mut p_hi, pose)

@@ -19,10 +19,12 @@ mod certify;
 mod contact;
 mod low;
 mod minimum;
+mod outline;
 mod scan;
 mod tabulated;
 #[cfg(test)]
 pub(crate) mod tests;
+mod yaw;
 
 use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
 use scan::SCAN_BLOCK;
@@ -32,6 +34,7 @@ pub use bound::CERTIFY_TOL_MM;
 pub use certify::Certificate;
 pub use contact::ContactPoint;
 pub(crate) use scan::{PoseBox, Scanned};
+pub use yaw::{MAX_SLOPE_TAN, MIN_DY_DS, Yaw, YawModel};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
 /// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].
@@ -50,6 +53,11 @@ pub const SAME_BASIN_MM: f64 = 0.5;
 /// lateral position and height of a wheel point, `delta + cos s - sin z` and its height,
 /// with the axle height solved separately; a general 2-D transform would carry what this
 /// loop does not use.
+///
+/// The yaw is not applied here: it changes which points of the wheel the rail sees (its
+/// outline, [`Yaw`]), which the side's [`SideGap`] holds for one yaw at a time
+/// ([`SideGap::set_yaw`]); `yaw` names that yaw, so that a pose of another yaw is never
+/// mistaken for this one.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SidePose {
     /// `sign * y_ws` (mm).
@@ -58,16 +66,28 @@ pub struct SidePose {
     pub cos: f64,
     /// `sin(sign * roll)`.
     pub sin: f64,
+    /// `sign * yaw` (rad): the side's yaw ([`Yaw::psi`]).
+    pub yaw: f64,
 }
 
 impl SidePose {
-    /// The pose of the side with `sign` (+1 left, -1 right) for a wheelset shift and roll.
+    /// The pose of the side with `sign` (+1 left, -1 right) for a wheelset shift and roll,
+    /// without yaw.
     pub fn new(sign: f64, y_ws: f64, roll: f64) -> SidePose {
         let (sin, cos) = (sign * roll).sin_cos();
         SidePose {
             delta: sign * y_ws,
             cos,
             sin,
+            yaw: 0.0,
+        }
+    }
+
+    /// The pose of the side with `sign` for a wheelset shift, roll and yaw (rad).
+    pub fn yawed(sign: f64, y_ws: f64, roll: f64, yaw_rad: f64) -> SidePose {
+        SidePose {
+            yaw: Yaw::side_psi(sign, yaw_rad),
+            ..SidePose::new(sign, y_ws, roll)
         }
     }
 
@@ -98,21 +118,25 @@ impl SidePose {
 }
 
 /// The gap at one wheel point, with everything the contact quantities need.
+///
+/// Its derivatives are taken along the wheel point's lateral coordinate `Yw` (relative to
+/// the wheelset centre, before roll): `Yw = s +` taping line without yaw, the outline's
+/// lateral coordinate with yaw (`wheel.dy_ds` per mm of `s`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GapPoint {
     /// Wheel profile coordinate (mm).
     pub s: f64,
     /// `g(s) = z - h - Zrail`: the gap without the axle height (mm).
     pub g: f64,
-    /// `dg/ds`.
+    /// `dg/dYw` (`dg/ds` without yaw).
     pub dg: f64,
-    /// `d2g/ds2` (1/mm).
+    /// `d2g/dYw2` (1/mm).
     pub ddg: f64,
     /// Side-frame lateral position of the wheel point (mm).
     pub y: f64,
     /// Height of the wheel point above the axle (mm, negative).
     pub z_rel: f64,
-    /// The wheel point (no roll).
+    /// The wheel point (no roll): the outline's point on the circle of `s` with yaw.
     pub wheel: WheelPoint,
     /// The rail under it.
     pub rail: RailPoint,
@@ -150,9 +174,25 @@ pub struct SideGap<'a> {
     /// The extents of `blocks` over the groups of the low-region scan (`low.rs`).
     group_extents: Vec<[f64; 4]>,
     tabulated: Option<Tables>,
-    /// The wheel profile's domain: beyond it the profile is clamped, and a point there
-    /// would be a phantom of the wheel's end displaced sideways.
+    /// Where the wheel takes part: the profile's domain (beyond it the profile is clamped,
+    /// and a point there would be a phantom of the wheel's end displaced sideways), with
+    /// yaw the part of it whose outline the rail sees (`outline.rs`).
     domain: (f64, f64),
+    /// The yaw whose outline `coarse`, `blocks`, `cert_blocks`, `group_extents`, the
+    /// tables and `domain` hold ([`SideGap::set_yaw`]).
+    yaw: Yaw,
+    /// What the outline of a yaw is made from (`outline.rs`), made on the first yaw.
+    outline_base: std::sync::Arc<std::sync::OnceLock<outline::OutlineBase>>,
+    /// With a yaw that moves the outline: per block, the widest lateral extent of one of
+    /// its coarse cells (mm), and the largest step of the outline at a section joint,
+    /// vertical plus the rail's steepest slope times sideways (mm).
+    outline_widths: Vec<f64>,
+    outline_jump: f64,
+    /// With a yaw that moves the outline: the first and last coarse sample that take part.
+    outline_samples: (usize, usize),
+    /// Whether the side's yaw changes from pose to pose (a sweep whose yaw grows with the
+    /// shift): its boxes of poses then span yaws ([`SideGap::set_yaw_varies`]).
+    yaw_varies: bool,
     /// Section joints of the wheel profile (where its value may jump).
     joints: Vec<f64>,
     /// Side-frame lateral positions of the rail profile's breaks
@@ -162,20 +202,22 @@ pub struct SideGap<'a> {
     wheel_breaks: Vec<f64>,
 }
 
-/// `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of the wheel over the cells `b B..(b + 1) B` of the coarse
-/// grid (`B` = [`SCAN_BLOCK`]; the last block's one cell where it holds the last sample
-/// alone), for each of the `count` blocks.
-fn certified_blocks(wheel: &PlacedWheel, coarse: &[[f64; 3]], count: usize) -> Vec<[f64; 4]> {
-    let n = coarse.len() - 1;
-    let cells = wheel.cells(n);
-    (0..count)
-        .map(|b| {
-            let i = (b * SCAN_BLOCK).min(n - 1);
-            let j = ((b + 1) * SCAN_BLOCK).min(n);
-            let z = cells.over(i, j).z;
-            [coarse[i][1], coarse[j][1], z.0, z.1]
-        })
-        .collect()
+/// `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]` of the coarse samples of each block of [`SCAN_BLOCK`].
+fn sample_blocks(coarse: &[[f64; 3]], out: &mut Vec<[f64; 4]>) {
+    out.clear();
+    out.extend(coarse.chunks(SCAN_BLOCK).map(|c| {
+        // Plain compares: heights are finite or +inf, never NaN (as f64::min and max).
+        let (mut z_lo, mut z_hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in c {
+            if p[2] < z_lo {
+                z_lo = p[2];
+            }
+            if p[2] > z_hi {
+                z_hi = p[2];
+            }
+        }
+        [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
+    }));
 }
 
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
@@ -201,28 +243,24 @@ impl<'a> SideGap<'a> {
                 [s, p.y, p.z]
             })
             .collect();
-        let blocks: Vec<[f64; 4]> = coarse
-            .chunks(SCAN_BLOCK)
-            .map(|c| {
-                let (z_lo, z_hi) = c
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-                        (a.min(p[2]), b.max(p[2]))
-                    });
-                [c[0][1], c[c.len() - 1][1], z_lo, z_hi]
-            })
-            .collect();
-        let cert_blocks = certified_blocks(&pair.wheel, &coarse, blocks.len());
+        let mut blocks = Vec::new();
+        sample_blocks(&coarse, &mut blocks);
         let mut side = SideGap {
             pair,
             rail: pair.rail(),
             sign,
             coarse,
             blocks,
-            cert_blocks,
+            cert_blocks: Vec::new(),
             group_extents: Vec::new(),
             tabulated: None,
             domain: (lo, hi),
+            yaw: Yaw::NONE,
+            outline_base: Default::default(),
+            outline_widths: Vec::new(),
+            outline_jump: 0.0,
+            outline_samples: (0, n),
+            yaw_varies: false,
             joints: pair.wheel.profile().joints(),
             rail_break_ys: {
                 // The ends of the running surface too: beyond them the gap is undefined.
@@ -245,7 +283,10 @@ impl<'a> SideGap<'a> {
                 b
             },
         };
-        side.group_extents = side.group_extents();
+        let (mut cert_blocks, mut group_extents) = (Vec::new(), Vec::new());
+        side.certified_blocks(&mut cert_blocks);
+        side.group_extents(&mut group_extents);
+        (side.cert_blocks, side.group_extents) = (cert_blocks, group_extents);
         side
     }
     /// Where the wheel profile's second derivative may jump (joints, spline knots) and the
@@ -291,6 +332,7 @@ impl<'a> SideGap<'a> {
         pose: &SidePose,
     ) -> Option<GapPoint> {
         count!(ExactGap, 1);
+        let wheel = self.outline(wheel)?;
         let yz = pose.apply(wheel.y, wheel.z);
         let rail = self.rail.at(yz[0])?;
         Some(Self::gap_point(s, wheel, pose, yz, rail))
@@ -309,6 +351,17 @@ impl<'a> SideGap<'a> {
         pose: &SidePose,
         mut visit: impl FnMut(usize, GapPoint),
     ) {
+        if !self.yaw.keeps_profile() {
+            // The outline point by point: no lanes for the yawed wheel.
+            for i in 0..4 {
+                if self.in_domain(s[i])
+                    && let Some(p) = self.at_wheel_point(s[i], wheel[i], pose)
+                {
+                    visit(i, p);
+                }
+            }
+            return;
+        }
         let yz = wheel.map(|w| pose.apply(w.y, w.z));
         let rail = self.rail.at_x4(yz.map(|p| p[0]));
         for i in 0..4 {
@@ -332,7 +385,8 @@ impl<'a> SideGap<'a> {
         [y, z_rel]: [f64; 2],
         rail: RailPoint,
     ) -> GapPoint {
-        // dZw/ds = -F' and dYw/ds = 1; wheel.slope = -F', wheel.d2 = -F''.
+        // Derivatives along Yw: wheel.slope = dZw/dYw (-F' without yaw), wheel.d2 =
+        // d2Zw/dYw2 (-F'').
         let f1 = -wheel.slope;
         let f2 = -wheel.d2;
         let dy = pose.cos + pose.sin * f1;

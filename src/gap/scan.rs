@@ -34,6 +34,12 @@ pub(crate) const POSE_BOX_DELTA_MM: f64 = 1.0;
 /// (half the profile's width, about 70 mm) vertically relative to it, and by 1e-3 x 500 mm
 /// laterally (the common motion of the whole wheel is taken out, see [`PoseBox`]).
 pub(crate) const POSE_BOX_SIN: f64 = 1e-3;
+/// Half the width in yaw of the box of poses a [`PoseBox`] holds where the yaw moves the
+/// wheel's outline (rad): four positions of a sweep at 0.1 mm steps whose yaw grows 2.4
+/// mrad per mm (the Manchester benchmark's). The outline of a flange moves 0.1 mm
+/// vertically per mrad at 20 mrad (less on the tread), which loosens the bounds of the
+/// blocks near the contact only, and those are evaluated anyway.
+pub(crate) const POSE_BOX_YAW_RAD: f64 = 1e-3;
 
 /// Lower bounds of every block's coarse gaps that hold for a whole box of poses:
 /// `|delta - delta0| <=` [`POSE_BOX_DELTA_MM`] and `|sin phi - sin phi0| <=`
@@ -53,10 +59,26 @@ pub(crate) const POSE_BOX_SIN: f64 = 1e-3;
 /// the bound. The unit test
 /// `pose_box_bounds_are_below_every_sample_of_their_block_in_the_box` checks the bound on
 /// the corners of boxes along the paper sweep.
+///
+/// With a yaw that moves the wheel's outline, the box also spans yaws within
+/// [`POSE_BOX_YAW_RAD`] of its own, so that a sweep whose yaw changes with the shift keeps
+/// its boxes from position to position: each block's extents are widened by how far its
+/// outline can move over those yaws ([`SideGap::outline_motion`], where the part of the wheel
+/// that takes part is the same at both ends of the range; otherwise the box holds its own
+/// yaw only), `(Yc, Zc)` is kept with the box, and the certificate's cushions, which read
+/// the outline's bounds at one yaw, are made again when the yaw changes.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct PoseBox {
-    /// `(delta0, sin phi0)`, `None` until made.
-    centre: Option<(f64, f64)>,
+    /// `(delta0, sin phi0, psi0)`, `None` until made.
+    centre: Option<(f64, f64, f64)>,
+    /// How far from `psi0` the side's yaw may be (rad): 0 where the outline is the profile.
+    pub(super) yaw_half: f64,
+    /// `(Yc, Zc)`, the point whose motion with the roll the bounds take out.
+    pub(super) reference: [f64; 2],
+    /// The bits of the side's yaw the `cushions` were made at.
+    pub(super) cushion_yaw: u64,
+    /// Per block, how far its outline may move over the box's yaws (a buffer reused).
+    motions: Vec<(f64, f64)>,
     /// Per block, the lower bound of `g - (s Yc + c Zc)` over the box.
     pub(super) bounds: Vec<f64>,
     /// Per block, the same for every point of its cells against the exact rail (the
@@ -74,9 +96,10 @@ impl PoseBox {
     /// Whether `pose` lies in the box (false before the first scan).
     #[inline]
     pub(super) fn holds(&self, pose: &SidePose) -> bool {
-        self.centre.is_some_and(|(delta, sin)| {
+        self.centre.is_some_and(|(delta, sin, yaw)| {
             (pose.delta - delta).abs() <= POSE_BOX_DELTA_MM
                 && (pose.sin - sin).abs() <= POSE_BOX_SIN
+                && (pose.yaw - yaw).abs() <= self.yaw_half
         })
     }
 }
@@ -244,6 +267,7 @@ impl SideGap<'_> {
     ) {
         out.clear();
         count!(Scan, 1);
+        self.check_yaw(pose);
         // Only wheel samples that can lie above the rail.
         let (first, last) = self.over_rail(pose);
         let coarse = &self.coarse[first..last];
@@ -272,7 +296,7 @@ impl SideGap<'_> {
         if !pose_box.holds(pose) || pose_box.bounds.len() != self.blocks.len() {
             self.fill_pose_box(pose, pose_box);
         }
-        let [yc, zc] = self.box_reference();
+        let [yc, zc] = pose_box.reference;
         let common = pose.sin * yc + pose.cos * zc;
         let boxed = &pose_box.bounds;
         let blocks = first / SCAN_BLOCK..(last - 1) / SCAN_BLOCK + 1;
@@ -469,6 +493,26 @@ impl SideGap<'_> {
     /// cushions of the box are computed when first asked for.
     pub(super) fn fill_pose_box(&self, pose: &SidePose, pose_box: &mut PoseBox) {
         let [yc, zc] = self.box_reference();
+        // With a yaw, how far each block's outline can move over the box's yaws; where that
+        // is not bounded (the part of the wheel that takes part may change), the box holds
+        // its own yaw only.
+        let mut motions = std::mem::take(&mut pose_box.motions);
+        let mut yaw_half = self.box_yaw_half(POSE_BOX_YAW_RAD);
+        motions.clear();
+        if yaw_half > 0.0 {
+            motions.extend((0..self.blocks.len()).map(|b| self.outline_motion(b, yaw_half)));
+            if motions.iter().any(|m| !m.0.is_finite() || !m.1.is_finite()) {
+                yaw_half = 0.0;
+            }
+        }
+        let widened = |b: usize, [yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4]| {
+            if yaw_half > 0.0 {
+                let (my, mz) = motions[b];
+                [yw_lo - my, yw_hi + my, zw_lo - mz, zw_hi + mz]
+            } else {
+                [yw_lo, yw_hi, zw_lo, zw_hi]
+            }
+        };
         let (d, sin) = (pose.delta, pose.sin);
         let s = (sin - POSE_BOX_SIN, sin + POSE_BOX_SIN);
         // cos phi = sqrt(1 - sin^2) (|phi| < 90 degrees) falls with |sin phi|.
@@ -494,21 +538,26 @@ impl SideGap<'_> {
             ]
         };
         let heights = self.rail.heights();
-        pose_box.centre = Some((d, sin));
+        pose_box.centre = Some((d, sin, pose.yaw));
+        pose_box.yaw_half = yaw_half;
+        pose_box.reference = [yc, zc];
+        pose_box.cushion_yaw = pose.yaw.to_bits();
         pose_box.trig = [c, s];
         pose_box.bounds.clear();
-        pose_box.bounds.extend(self.blocks.iter().map(|&block| {
-            let [y_lo, y_hi, z_lo] = extent(block);
-            heights
-                .max_over(y_lo, y_hi)
-                .map_or(f64::INFINITY, |rail| z_lo - rail)
-        }));
+        pose_box
+            .bounds
+            .extend(self.blocks.iter().enumerate().map(|(b, &block)| {
+                let [y_lo, y_hi, z_lo] = extent(widened(b, block));
+                heights
+                    .max_over(y_lo, y_hi)
+                    .map_or(f64::INFINITY, |rail| z_lo - rail)
+            }));
         // As in `certified_block_bound`: a step of the height table wider.
         let w = crate::track::HEIGHT_TABLE_STEP_MM;
         pose_box.certified.clear();
         pose_box.spans.clear();
-        for &block in &self.cert_blocks {
-            let [y_lo, y_hi, z_lo] = extent(block);
+        for (b, &block) in self.cert_blocks.iter().enumerate() {
+            let [y_lo, y_hi, z_lo] = extent(widened(b, block));
             pose_box.spans.push([y_lo, y_hi]);
             pose_box.certified.push(
                 self.rail
@@ -518,6 +567,7 @@ impl SideGap<'_> {
         }
         pose_box.cushions.clear();
         pose_box.cushions.resize(self.cert_blocks.len(), f64::NAN);
+        pose_box.motions = motions;
     }
 
     /// The index range of the coarse samples that can lie above the rail at `pose`:

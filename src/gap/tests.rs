@@ -11,6 +11,29 @@ pub(crate) fn placement() -> crate::track::Placement {
     crate::pipeline::place(&scene).unwrap()
 }
 
+/// The yaws the scans are checked at (rad): none, and the outline of a yaw either way.
+const YAWS: [f64; 3] = [0.0, 0.03, -0.02];
+
+/// The left side of `placement` seen through the outline of `yaw`, its boxes of poses
+/// spanning nearby yaws.
+fn left_at_yaw(placement: &crate::track::Placement, yaw: f64) -> SideGap<'_> {
+    let mut side = SideGap::new(&placement.left, 1.0);
+    side.set_yaw_varies(true);
+    side.set_yaw(Yaw::new(1.0, yaw, YawModel::Exact));
+    side
+}
+
+/// [`poses`] of the left side at `yaw`.
+fn poses_at_yaw(yaw: f64) -> Vec<SidePose> {
+    poses()
+        .into_iter()
+        .map(|p| SidePose {
+            yaw: Yaw::side_psi(1.0, yaw),
+            ..p
+        })
+        .collect()
+}
+
 /// Poses over the paper sweep and beyond, with rolls up to 0.02 rad, and the solved
 /// poses around the paper's jumps, where two minima lie within the margin.
 fn poses() -> Vec<SidePose> {
@@ -97,144 +120,150 @@ fn assert_scanned_gaps_exact(side: &SideGap, pose: &SidePose, scanned: &Scanned)
 #[test]
 fn block_gaps_are_the_coarse_gaps_to_the_bit() {
     let placement = placement();
-    let side = SideGap::new(&placement.left, 1.0);
-    let n = side.coarse.len();
-    let mut scanned = Scanned::default();
-    scanned.gaps = vec![f64::NAN; n];
-    let (mut mixed, mut lanes_and_tail) = (0, 0);
-    for pose in poses() {
-        for start in (0..n).step_by(SCAN_BLOCK) {
-            for (cut_start, cut_end) in [(0, 0), (1, 0), (0, 1), (3, 2), (5, 7)] {
-                let range = (start + cut_start).min(n)..(start + SCAN_BLOCK - cut_end).min(n);
-                if range.is_empty() {
-                    continue;
-                }
-                lanes_and_tail += usize::from(range.len() >= 4 && range.len() % 4 != 0);
-                let (lowest, on_rail) = side.block_gaps(range.clone(), &pose, &mut scanned);
-                let (mut expected_low, mut expected_on) = (f64::INFINITY, true);
-                for i in range.clone() {
-                    let g = side.coarse_gap(i, &pose);
-                    assert_eq!(scanned.gaps[i].to_bits(), g.to_bits(), "{i} at {pose:?}");
-                    if g < expected_low {
-                        expected_low = g;
+    for yaw in YAWS {
+        let side = left_at_yaw(&placement, yaw);
+        let n = side.coarse.len();
+        let mut scanned = Scanned::default();
+        scanned.gaps = vec![f64::NAN; n];
+        let (mut mixed, mut lanes_and_tail) = (0, 0);
+        for pose in poses_at_yaw(yaw) {
+            for start in (0..n).step_by(SCAN_BLOCK) {
+                for (cut_start, cut_end) in [(0, 0), (1, 0), (0, 1), (3, 2), (5, 7)] {
+                    let range = (start + cut_start).min(n)..(start + SCAN_BLOCK - cut_end).min(n);
+                    if range.is_empty() {
+                        continue;
                     }
-                    expected_on &= g < f64::INFINITY;
+                    lanes_and_tail += usize::from(range.len() >= 4 && range.len() % 4 != 0);
+                    let (lowest, on_rail) = side.block_gaps(range.clone(), &pose, &mut scanned);
+                    let (mut expected_low, mut expected_on) = (f64::INFINITY, true);
+                    for i in range.clone() {
+                        let g = side.coarse_gap(i, &pose);
+                        assert_eq!(scanned.gaps[i].to_bits(), g.to_bits(), "{i} at {pose:?}");
+                        if g < expected_low {
+                            expected_low = g;
+                        }
+                        expected_on &= g < f64::INFINITY;
+                    }
+                    let at = format!("{range:?} at {pose:?}");
+                    assert_eq!(lowest.to_bits(), expected_low.to_bits(), "{at}");
+                    assert_eq!(on_rail, expected_on, "{at}");
+                    mixed += usize::from(!on_rail && lowest < f64::INFINITY);
                 }
-                let at = format!("{range:?} at {pose:?}");
-                assert_eq!(lowest.to_bits(), expected_low.to_bits(), "{at}");
-                assert_eq!(on_rail, expected_on, "{at}");
-                mixed += usize::from(!on_rail && lowest < f64::INFINITY);
             }
         }
+        assert!(mixed > 100, "blocks partly off the rail: {mixed}");
+        assert!(
+            lanes_and_tail > 100,
+            "blocks with samples left over the lanes"
+        );
     }
-    assert!(mixed > 100, "blocks partly off the rail: {mixed}");
-    assert!(
-        lanes_and_tail > 100,
-        "blocks with samples left over the lanes"
-    );
 }
 
 #[test]
 fn skipping_blocks_finds_the_basins_and_low_regions_of_a_full_scan() {
     let placement = placement();
-    let side = SideGap::new(&placement.left, 1.0);
-    let (mut basins, mut regions) = (Vec::new(), Vec::new());
-    // One box carried from pose to pose (the poses near the jumps lie in each other's
-    // boxes), and one made afresh at every pose: both scans find the same basins.
-    let (mut carried, mut carried_held) = (PoseBox::default(), 0);
-    let mut fresh_basins = Vec::new();
-    let mut skipped_any = false;
-    let mut several_basins = 0;
-    for pose in poses() {
-        let gaps = all_gaps(&side, &pose);
-        let Some(lowest) = gaps.iter().map(|g| g.1).min_by(f64::total_cmp) else {
-            continue;
-        };
-        // Basins: brackets around the sampled local minima within the margin.
-        carried_held += usize::from(carried.holds(&pose));
-        let mut scanned = Scanned::default();
-        side.basins(&pose, &mut carried, &mut scanned, &mut basins);
-        assert_scanned_gaps_exact(&side, &pose, &scanned);
-        side.basins(
-            &pose,
-            &mut PoseBox::default(),
-            &mut Scanned::default(),
-            &mut fresh_basins,
-        );
-        assert_eq!(basins, fresh_basins, "carried and fresh box at {pose:?}");
-        let mut expected: Vec<(f64, Basin)> = Vec::new();
-        for (k, &(i, g)) in gaps.iter().enumerate() {
-            let prev = if k > 0 { gaps[k - 1].1 } else { f64::INFINITY };
-            let next = gaps.get(k + 1).map_or(f64::INFINITY, |n| n.1);
-            if g < f64::INFINITY && g <= prev && g <= next && g <= lowest + COARSE_MARGIN_MM {
-                let lo = side.coarse[i.saturating_sub(1).max(gaps[0].0)][0];
-                let hi = side.coarse[(i + 1).min(gaps[gaps.len() - 1].0)][0];
-                expected.push((g, (lo, hi)));
+    for yaw in YAWS {
+        let side = left_at_yaw(&placement, yaw);
+        let (mut basins, mut regions) = (Vec::new(), Vec::new());
+        // One box carried from pose to pose (the poses near the jumps lie in each other's
+        // boxes), and one made afresh at every pose: both scans find the same basins.
+        let (mut carried, mut carried_held) = (PoseBox::default(), 0);
+        let mut fresh_basins = Vec::new();
+        let mut skipped_any = false;
+        let mut several_basins = 0;
+        for pose in poses_at_yaw(yaw) {
+            let gaps = all_gaps(&side, &pose);
+            let Some(lowest) = gaps.iter().map(|g| g.1).min_by(f64::total_cmp) else {
+                continue;
+            };
+            // Basins: brackets around the sampled local minima within the margin.
+            carried_held += usize::from(carried.holds(&pose));
+            let mut scanned = Scanned::default();
+            side.basins(&pose, &mut carried, &mut scanned, &mut basins);
+            assert_scanned_gaps_exact(&side, &pose, &scanned);
+            side.basins(
+                &pose,
+                &mut PoseBox::default(),
+                &mut Scanned::default(),
+                &mut fresh_basins,
+            );
+            assert_eq!(basins, fresh_basins, "carried and fresh box at {pose:?}");
+            let mut expected: Vec<(f64, Basin)> = Vec::new();
+            for (k, &(i, g)) in gaps.iter().enumerate() {
+                let prev = if k > 0 { gaps[k - 1].1 } else { f64::INFINITY };
+                let next = gaps.get(k + 1).map_or(f64::INFINITY, |n| n.1);
+                if g < f64::INFINITY && g <= prev && g <= next && g <= lowest + COARSE_MARGIN_MM {
+                    let lo = side.coarse[i.saturating_sub(1).max(gaps[0].0)][0];
+                    let hi = side.coarse[(i + 1).min(gaps[gaps.len() - 1].0)][0];
+                    expected.push((g, (lo, hi)));
+                }
             }
-        }
-        expected.sort_by(|a, b| a.0.total_cmp(&b.0));
-        if expected.len() > 1 {
-            several_basins += 1;
-        }
-        let expected: Vec<Basin> = expected.into_iter().map(|e| e.1).collect();
-        assert_eq!(basins, expected, "basins at {pose:?}");
-        // Low regions at a threshold 0.3 mm above the lowest sample.
-        let threshold = lowest + 0.3;
-        side.low_regions(&pose, threshold, &mut regions);
-        // Runs of low samples, each from the sample before its first to its end.
-        let n = side.coarse.len();
-        let mut expected: Vec<(f64, f64)> = Vec::new();
-        let mut k = 0;
-        while k < gaps.len() {
-            if gaps[k].1 < threshold {
-                let start = gaps[k].0;
-                while k < gaps.len() && gaps[k].1 < threshold {
+            expected.sort_by(|a, b| a.0.total_cmp(&b.0));
+            if expected.len() > 1 {
+                several_basins += 1;
+            }
+            let expected: Vec<Basin> = expected.into_iter().map(|e| e.1).collect();
+            assert_eq!(basins, expected, "basins at {pose:?}");
+            // Low regions at a threshold 0.3 mm above the lowest sample.
+            let threshold = lowest + 0.3;
+            side.low_regions(&pose, threshold, &mut regions);
+            // Runs of low samples, each from the sample before its first to its end.
+            let n = side.coarse.len();
+            let mut expected: Vec<(f64, f64)> = Vec::new();
+            let mut k = 0;
+            while k < gaps.len() {
+                if gaps[k].1 < threshold {
+                    let start = gaps[k].0;
+                    while k < gaps.len() && gaps[k].1 < threshold {
+                        k += 1;
+                    }
+                    let end = gaps.get(k).map_or(gaps[gaps.len() - 1].0 + 1, |g| g.0);
+                    let (lo, hi) = (
+                        side.coarse[start.saturating_sub(1)][0],
+                        side.coarse[end.min(n - 1)][0],
+                    );
+                    match expected.last_mut() {
+                        Some(last) if last.1 >= lo => last.1 = hi,
+                        _ => expected.push((lo, hi)),
+                    }
+                } else {
                     k += 1;
                 }
-                let end = gaps.get(k).map_or(gaps[gaps.len() - 1].0 + 1, |g| g.0);
-                let (lo, hi) = (
-                    side.coarse[start.saturating_sub(1)][0],
-                    side.coarse[end.min(n - 1)][0],
-                );
-                match expected.last_mut() {
-                    Some(last) if last.1 >= lo => last.1 = hi,
-                    _ => expected.push((lo, hi)),
-                }
-            } else {
-                k += 1;
             }
+            assert_eq!(regions, expected, "low regions at {pose:?}");
+            let blocks = gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1;
+            skipped_any |= blocks
+                .into_iter()
+                .any(|b| side.block_bound(b, &pose) >= threshold);
         }
-        assert_eq!(regions, expected, "low regions at {pose:?}");
-        let blocks = gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1;
-        skipped_any |= blocks
-            .into_iter()
-            .any(|b| side.block_bound(b, &pose) >= threshold);
+        assert!(
+            skipped_any,
+            "the bounds never allowed a skip: the test proves nothing"
+        );
+        assert!(
+            several_basins > 10,
+            "{several_basins} poses with two basins to refine"
+        );
+        assert!(
+            carried_held > 50,
+            "the carried box held {carried_held} times"
+        );
     }
-    assert!(
-        skipped_any,
-        "the bounds never allowed a skip: the test proves nothing"
-    );
-    assert!(
-        several_basins > 10,
-        "{several_basins} poses with two basins to refine"
-    );
-    assert!(
-        carried_held > 50,
-        "the carried box held {carried_held} times"
-    );
 }
 
 #[test]
 fn block_bounds_are_below_every_sample_of_their_block() {
     let placement = placement();
-    let side = SideGap::new(&placement.left, 1.0);
-    for pose in poses() {
-        for (i, g) in all_gaps(&side, &pose) {
-            let bound = side.block_bound(i / SCAN_BLOCK, &pose);
-            assert!(
-                bound <= g,
-                "sample {i}: bound {bound} above gap {g} at {pose:?}"
-            );
+    for yaw in YAWS {
+        let side = left_at_yaw(&placement, yaw);
+        for pose in poses_at_yaw(yaw) {
+            for (i, g) in all_gaps(&side, &pose) {
+                let bound = side.block_bound(i / SCAN_BLOCK, &pose);
+                assert!(
+                    bound <= g,
+                    "sample {i}: bound {bound} above gap {g} at {pose:?}"
+                );
+            }
         }
     }
 }
@@ -245,57 +274,85 @@ fn pose_of(delta: f64, sin: f64) -> SidePose {
         delta,
         cos: (1.0 - sin * sin).sqrt(),
         sin,
+        yaw: 0.0,
     }
 }
 
 #[test]
 fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
+    use super::scan::POSE_BOX_YAW_RAD;
     let placement = placement();
-    let side = SideGap::new(&placement.left, 1.0);
-    let [yc, zc] = side.box_reference();
-    let mut pose_box = PoseBox::default();
-    // Blocks within the margin of the lowest sample by the box bound but not by the bound
-    // at the pose: where the box loosens the bound (it must, a little).
-    let (mut looser, mut skipped) = (0, 0);
-    for centre in poses().iter().step_by(7) {
-        side.fill_pose_box(centre, &mut pose_box);
-        // The corners of the box (a hair inside it), the centre and the middles of its edges.
-        let (dd, ds) = (
-            POSE_BOX_DELTA_MM * (1.0 - 1e-12),
-            POSE_BOX_SIN * (1.0 - 1e-12),
-        );
-        for (fd, fs) in [-1.0, 0.0, 1.0]
-            .iter()
-            .flat_map(|&a| [-1.0, 0.0, 1.0].map(|b| (a, b)))
-        {
-            let pose = pose_of(centre.delta + fd * dd, centre.sin + fs * ds);
-            assert!(
-                pose_box.holds(&pose),
-                "{pose:?} not in the box at {centre:?}"
-            );
-            let common = pose.sin * yc + pose.cos * zc;
-            let gaps = all_gaps(&side, &pose);
-            let lowest = gaps.iter().map(|g| g.1).fold(f64::INFINITY, f64::min);
-            for &(i, g) in &gaps {
-                let bound = pose_box.bounds[i / SCAN_BLOCK] + common;
-                assert!(
-                    bound <= g,
-                    "sample {i}: box bound {bound} above gap {g} at {pose:?} (box at {centre:?})"
+    for yaw in YAWS {
+        let side = left_at_yaw(&placement, yaw);
+        let mut pose_box = PoseBox::default();
+        // Blocks within the margin of the lowest sample by the box bound but not by the bound
+        // at the pose: where the box loosens the bound (it must, a little).
+        let (mut looser, mut skipped) = (0, 0);
+        let (mut spanning, mut boxes) = (0, 0);
+        // With yaw, the box spans yaws about its own: the side at either end of them too.
+        let yaw_ends: &[f64] = if yaw == 0.0 {
+            &[0.0]
+        } else {
+            &[-1.0, 0.0, 1.0]
+        };
+        for centre in poses_at_yaw(yaw).iter().step_by(7) {
+            side.fill_pose_box(centre, &mut pose_box);
+            let [yc, zc] = pose_box.reference;
+            spanning += usize::from(pose_box.yaw_half > 0.0);
+            boxes += 1;
+            for &fy in yaw_ends {
+                if fy != 0.0 && pose_box.yaw_half == 0.0 {
+                    continue;
+                }
+                let psi = yaw + fy * POSE_BOX_YAW_RAD * (1.0 - 1e-12);
+                let side = left_at_yaw(&placement, psi);
+                // The corners of the box (a hair inside it), the centre and the middles of
+                // its edges.
+                let (dd, ds) = (
+                    POSE_BOX_DELTA_MM * (1.0 - 1e-12),
+                    POSE_BOX_SIN * (1.0 - 1e-12),
                 );
-            }
-            for b in gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1 {
-                let (boxed, here) = (pose_box.bounds[b] + common, side.block_bound(b, &pose));
-                let cut = lowest + COARSE_MARGIN_MM;
-                looser += usize::from(boxed <= cut && here > cut);
-                skipped += usize::from(boxed > cut);
+                for (fd, fs) in [-1.0, 0.0, 1.0]
+                    .iter()
+                    .flat_map(|&a| [-1.0, 0.0, 1.0].map(|b| (a, b)))
+                {
+                    let pose = SidePose {
+                        yaw: Yaw::side_psi(1.0, psi),
+                        ..pose_of(centre.delta + fd * dd, centre.sin + fs * ds)
+                    };
+                    assert!(
+                        pose_box.holds(&pose),
+                        "{pose:?} not in the box at {centre:?}"
+                    );
+                    let common = pose.sin * yc + pose.cos * zc;
+                    let gaps = all_gaps(&side, &pose);
+                    let lowest = gaps.iter().map(|g| g.1).fold(f64::INFINITY, f64::min);
+                    for &(i, g) in &gaps {
+                        let bound = pose_box.bounds[i / SCAN_BLOCK] + common;
+                        assert!(
+                            bound <= g,
+                            "sample {i}: box bound {bound} above gap {g} at {pose:?} (box at {centre:?})"
+                        );
+                    }
+                    for b in gaps[0].0 / SCAN_BLOCK..gaps[gaps.len() - 1].0 / SCAN_BLOCK + 1 {
+                        let (boxed, here) =
+                            (pose_box.bounds[b] + common, side.block_bound(b, &pose));
+                        let cut = lowest + COARSE_MARGIN_MM;
+                        looser += usize::from(boxed <= cut && here > cut);
+                        skipped += usize::from(boxed > cut);
+                    }
+                }
             }
         }
+        assert!(
+            looser > 0,
+            "the box bounds never looser than the bounds at the pose"
+        );
+        assert!(skipped > 1000, "the box bounds skipped {skipped} blocks");
+        // Every box of a yawed side spans yaws (on S1002 the part of the wheel that takes
+        // part is the same within a milliradian of these yaws).
+        assert_eq!(spanning, if yaw == 0.0 { 0 } else { boxes }, "yaw {yaw}");
     }
-    assert!(
-        looser > 0,
-        "the box bounds never looser than the bounds at the pose"
-    );
-    assert!(skipped > 1000, "the box bounds skipped {skipped} blocks");
 }
 
 /// [`SideGap::each_x4`] on the wheel points of [`PlacedWheel::at_x4`] is [`SideGap::at`] to
@@ -304,28 +361,31 @@ fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
 #[test]
 fn four_gaps_at_once_are_at_to_the_bit() {
     let placement = placement();
-    let side = SideGap::new(&placement.left, 1.0);
-    let (lo, hi) = side.domain;
-    let bits = |p: Option<GapPoint>| p.map(|p| [p.g, p.dg, p.ddg, p.y, p.z_rel].map(f64::to_bits));
-    let (mut nones, mut somes) = (0, 0);
-    for pose in poses() {
-        for i in 0..=400 {
-            let s0 = lo - 2.0 + (hi - lo + 4.0) * f64::from(i) / 400.0;
-            for spread in [0.01, 0.3] {
-                let s = [0.0, 1.0, 2.0, 3.0].map(|k| s0 + spread * k);
-                let mut four = [None; 4];
-                side.each_x4(s, side.wheel().at_x4(s), &pose, |i, p| four[i] = Some(p));
-                for (lane, &si) in four.into_iter().zip(&s) {
-                    let one = side.at(si, &pose);
-                    (nones, somes) = (
-                        nones + usize::from(one.is_none()),
-                        somes + usize::from(one.is_some()),
-                    );
-                    assert_eq!(lane, one, "s = {si}");
-                    assert_eq!(bits(lane), bits(one), "s = {si}");
+    for yaw in YAWS {
+        let side = left_at_yaw(&placement, yaw);
+        let (lo, hi) = side.domain;
+        let bits =
+            |p: Option<GapPoint>| p.map(|p| [p.g, p.dg, p.ddg, p.y, p.z_rel].map(f64::to_bits));
+        let (mut nones, mut somes) = (0, 0);
+        for pose in poses_at_yaw(yaw) {
+            for i in 0..=400 {
+                let s0 = lo - 2.0 + (hi - lo + 4.0) * f64::from(i) / 400.0;
+                for spread in [0.01, 0.3] {
+                    let s = [0.0, 1.0, 2.0, 3.0].map(|k| s0 + spread * k);
+                    let mut four = [None; 4];
+                    side.each_x4(s, side.wheel().at_x4(s), &pose, |i, p| four[i] = Some(p));
+                    for (lane, &si) in four.into_iter().zip(&s) {
+                        let one = side.at(si, &pose);
+                        (nones, somes) = (
+                            nones + usize::from(one.is_none()),
+                            somes + usize::from(one.is_some()),
+                        );
+                        assert_eq!(lane, one, "s = {si}");
+                        assert_eq!(bits(lane), bits(one), "s = {si}");
+                    }
                 }
             }
         }
+        assert!(nones > 0 && somes > 0);
     }
-    assert!(nones > 0 && somes > 0);
 }

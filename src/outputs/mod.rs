@@ -9,6 +9,7 @@
 //! `outputs/figures/` (one file per stage) taking that stage's result, a caption in `caption`,
 //! an arm in `figure`.
 
+pub mod creep;
 #[cfg(feature = "cli")]
 mod figures;
 pub mod fleet;
@@ -144,6 +145,20 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
             tables::parameters(&c.parameters).map_err(table_error)?,
         );
     }
+    if let Some(Ok(c)) = &results.creep {
+        push(
+            "creep.csv",
+            "creep forces of every patch over the sweep",
+            creep::creep(c).map_err(table_error)?,
+        );
+    }
+    if let Some(t) = &results.contact_table {
+        push(
+            "contact_table.csv",
+            "contact table: rigid contact, Hertz ellipse and Kalker's coefficients on a grid of shift x yaw",
+            creep::contact_table(t).map_err(table_error)?,
+        );
+    }
     if let Some(a) = &results.hertz_accuracy {
         let (series, ratio) = tables::hertz_accuracy(a).map_err(table_error)?;
         push(
@@ -180,6 +195,7 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
         Figure::ContactPoints => figures::contact_points(p, rigid()?),
         Figure::RollingRadius => figures::rolling_radius(rigid()?),
         Figure::ContactAngles => figures::contact_angles(rigid()?),
+        Figure::ContactLead => figures::contact_lead(rigid()?),
         Figure::Roll => figures::roll(rigid()?),
         Figure::ContactAngleParameter => figures::contact_angle_parameter(rigid()?),
         Figure::ContactMap => figures::contact_map(p, rigid()?),
@@ -210,7 +226,24 @@ pub fn figure(fig: Figure, results: &Results) -> Result<report::Figure, Error> {
         Figure::DeltaRLinearised => {
             figures::delta_r_linearised(results.conicity.as_ref().ok_or_else(missing)?)
         }
+        Figure::CreepForces => figures::creep_forces(creep_result(results, missing)?),
+        Figure::CreepCurve => figures::creep_curve(
+            crate::creep::sweep::curve(creep_result(results, missing)?).as_ref(),
+        ),
     })
+}
+
+#[cfg(feature = "cli")]
+/// The creep stage's result, its error, or `missing()` where it did not run.
+fn creep_result(
+    results: &Results,
+    missing: impl Fn() -> Error,
+) -> Result<&crate::creep::sweep::CreepSweep, Error> {
+    match &results.creep {
+        Some(Ok(c)) => Ok(c),
+        Some(Err(e)) => Err(Error::Creep(e.clone())),
+        None => Err(missing()),
+    }
 }
 
 /// The figure of the paper (Onat, Voltr & Lata 2014) that `fig` redraws, if any.
@@ -249,6 +282,15 @@ pub(crate) fn caption(fig: Figure, scene: &Scene, results: &Results) -> String {
         Figure::ContactPoints => "rigid contact points on the wheel (profile coordinate) and on the rail (from the top of rail) against the lateral shift. Jumps of a contact point are gaps, not lines.".into(),
         Figure::RollingRadius => "rolling radius difference r_left - r_right of the rigid contact.".into(),
         Figure::ContactAngles => "contact angles of the rigid contact in the track frame, roll included, mirrored per side.".into(),
+        Figure::ContactLead => {
+            let yaw = scene.sweep().yaw();
+            format!(
+                "lead of each wheel's rigid contact point ahead of the axle, along the wheelset's own forward axis, for the wheelset yawed by {} mrad + {} mrad/mm × y_ws ({} outline: the points of the wheel the rail sees); on the tread a fraction of a millimetre, on the flange about r tan γ ψ. Without yaw the lead is 0.",
+                crate::message::Number(yaw.yaw_rad() * 1e3),
+                crate::message::Number(yaw.yaw_rad_per_mm() * 1e3),
+                yaw.model().name()
+            )
+        }
         Figure::Roll => "roll angle of the wheelset solved with the contact (paper Eqs. 2-5).".into(),
         Figure::ContactAngleParameter => "Wickens' contact angle parameter; undefined at y_ws = 0.".into(),
         Figure::ContactMap => "contact map: each rigid contact point of the sweep on the wheel (drawn 8 mm above its resting place) linked to its point on the rail; where contact lives and where it jumps.".into(),
@@ -262,6 +304,22 @@ pub(crate) fn caption(fig: Figure, scene: &Scene, results: &Results) -> String {
         Figure::Pressure => "maximum Hertz pressure p0 = 3P / (2 pi a b) (paper Eq. 11).".into(),
         Figure::EquivalentConicity => format!("equivalent conicity tan γe against the amplitude ŷ of the kinematic motion (EN 15302): Klingel wavelength of the nonlinear motion (Annex B, exact closed-form integral) and harmonically weighted regression of Δr (Annex C); tan γe(3 mm) by the scene's method ({}) marked. Gauge and rolling radius cancel.", scene.conicity.method.name()),
         Figure::DeltaRLinearised => "rolling radius difference of the rigid sweep (jumps as steps) and the linear function 2 tan γe(3 mm) (y - y_eq) of the equivalent cone over the motion y_eq ± 3 mm.".into(),
+        Figure::CreepForces => {
+            let c = scene.creep();
+            format!(
+                "creep forces of the wheel on the rail in each patch's contact frame (Fx along the rail, Fy in the contact plane; a positive creepage gives a negative force), {} with mu = {}, from the {} contacts; the heaviest patch as a line, a second patch as markers; patches that did not converge left out. The wheelset {}, at the speed {} m/s, each patch carrying its weight share of the {} kN wheel load with the normal force solved for it (FN cos δ - Fy sin δ = load).",
+                c.settings.method(),
+                c.settings.friction(),
+                c.contact.name(),
+                match c.kinematics.pitch_rate {
+                    crate::creep::sweep::PitchRate::FreeRolling => "rolls freely (pitch rate from the mean rolling radius of the two wheels' contacts)",
+                    crate::creep::sweep::PitchRate::Given(_) => "rolls at the pitch rates the scene gives",
+                },
+                c.kinematics.speed_mm_s / 1000.0,
+                scene.wheel_load_n / 1000.0
+            )
+        }
+        Figure::CreepCurve => "force against creepage on one patch, the one of the sweep that uses the largest part of its friction (named in the title): its creepages xi, eta, phi scaled together from free rolling (0) through the patch as the sweep found it (the mark) towards full sliding, on its ellipse at its normal force. Kalker's linear theory is the slope at the origin; FASTSIM (the scene's bound and grid) saturates at mu FN (the dashed line at 1). Polach's method with spin levels off lower where the spin is large: it divides the force along (xi, eta) by the creepage with spin, sqrt(xi^2 + (eta + a phi)^2), and adds a bounded lateral force of the spin.".into(),
         Figure::HertzAccuracy => "accuracy of the paper's Hertz numerics: its truncated series for K and E (Eqs. 15-18) against the arithmetic-geometric mean, and its fixed-point iteration for b/a against the exact inversion; the exact method's b/a against 50-digit mpmath references.".into(),
     };
     match paper_figure(fig) {

@@ -13,8 +13,21 @@ use crate::track::{PlacedRail, PlacedWheel, Side};
 /// Sampling step of the profile tables (mm).
 pub const PROFILE_TABLE_STEP_MM: f64 = 0.1;
 
-const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
-const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
+pub(super) const TRACK_FRAME: &str = "frame: track, x forward, y lateral positive to the left, z up, origin on the track centre line at the top of the rails; roll positive lifts the left wheel";
+pub(super) const PER_WHEEL: &str = "per wheel: s_mm wheel coordinate from the taping line, positive towards the field side (flange at s < 0); gamma contact angle in the track frame with roll, mirrored per side, positive on tread and flange; curvatures convex positive";
+
+/// What the yaw columns of a yawed sweep mean.
+const YAW_COLUMNS: &str = "yaw_rad right-hand about z (up): positive turns the wheelset's forward axis to the left (the left wheel back, the right forward); per wheel: x_mm the contact's position along the track (x forward) from the wheelset centre, lead_mm its distance ahead of the axle along the wheelset's own forward axis; with yaw the rail meets the wheel's outline seen along the track (its points whose normal has no x component), not its profile";
+
+/// The yaw comment of a sweep yawed by `yaw`: the rule and the outline's model.
+fn yaw_comment(yaw: &crate::sweep::YawRule) -> String {
+    format!(
+        "{YAW_COLUMNS}; yaw = {} mrad + {} mrad/mm * y_ws, outline {}",
+        crate::message::Number(yaw.yaw_rad() * 1e3),
+        crate::message::Number(yaw.yaw_rad_per_mm() * 1e3),
+        yaw.model().name()
+    )
+}
 
 /// The wheel's side frame as the profile tables state it.
 const WHEEL_SIDE_FRAME: &str = "s_mm from the taping line, positive towards the field side (flange at s < 0); F_mm radius increase over the nominal radius, positive towards the flange tip";
@@ -146,8 +159,22 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
         .comment(TRACK_FRAME)
         .comment(PER_WHEEL)
         .comment("z_ws_mm relative to the centred wheelset; r_mm rolling radius; second_s_mm a second contact point within 0.01 mm of touching (NaN if none); jump_after 1 where the contact point jumps before the next position (see rigid_jumps.csv)")
-        .comment(format!("Wickens: lambda = delta_r/(2 y_ws), epsilon = l0 (tan gamma_l - tan gamma_r)/(2 y_ws), sigma = l0 roll/y_ws, l0 = {l0:.6} mm; NaN at y_ws = 0"))
-        .numeric("y_ws_mm", sweep.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>())
+        .comment(format!("Wickens: lambda = delta_r/(2 y_ws), epsilon = l0 (tan gamma_l - tan gamma_r)/(2 y_ws), sigma = l0 roll/y_ws, l0 = {l0:.6} mm; NaN at y_ws = 0"));
+    let yawed = sweep.yaw().is_yawed();
+    if yawed {
+        t = t.comment(yaw_comment(sweep.yaw()));
+    }
+    t = t.numeric(
+        "y_ws_mm",
+        sweep.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>(),
+    );
+    if yawed {
+        t = t.numeric(
+            "yaw_rad",
+            sweep.positions().iter().map(|p| p.yaw).collect::<Vec<_>>(),
+        );
+    }
+    t = t
         .numeric("roll_rad", converged(sweep, |p| p.roll))
         .numeric("z_ws_mm", converged(sweep, |p| sweep.z_ws(p)));
     for side in [Side::Left, Side::Right] {
@@ -202,16 +229,22 @@ fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableB
             .any(|j| j.side == side && j.y_from >= y0 && j.y_to <= y1);
         if jumps { 1.0 } else { 0.0 }
     });
-    contact_columns(t, side, &points, RailSlopeColumn::Written)
-        .numeric(
-            format!("{name}_second_s_mm"),
-            sweep
-                .positions()
-                .iter()
-                .map(|p| contact(p).and_then(|c| c.second).map_or(f64::NAN, |s| s.0))
-                .collect::<Vec<_>>(),
-        )
-        .numeric(format!("{name}_jump_after"), jump_after.collect::<Vec<_>>())
+    contact_columns(
+        t,
+        side,
+        &points,
+        RailSlopeColumn::Written,
+        sweep.yaw().is_yawed(),
+    )
+    .numeric(
+        format!("{name}_second_s_mm"),
+        sweep
+            .positions()
+            .iter()
+            .map(|p| contact(p).and_then(|c| c.second).map_or(f64::NAN, |s| s.0))
+            .collect::<Vec<_>>(),
+    )
+    .numeric(format!("{name}_jump_after"), jump_after.collect::<Vec<_>>())
 }
 
 /// The `status` of one position in `rigid.csv`: the stop reason in words, two-point
@@ -233,7 +266,7 @@ fn rigid_status(p: &crate::rigid::RigidPosition, centred_reference: bool) -> Str
 
 /// Whether [`contact_columns`] writes the rail's contact angle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum RailSlopeColumn {
+pub(super) enum RailSlopeColumn {
     /// `{side}_rail_tan_gamma` after `gamma_rad` (`rigid.csv`).
     Written,
     /// Not written (`quasi_elastic.csv`).
@@ -241,20 +274,29 @@ enum RailSlopeColumn {
 }
 
 /// The contact-point columns of one wheel, one row per point (NaN rows where there is no
-/// contact): `{side}_s_mm, _y_mm, _z_mm, _r_mm, _gamma_rad`, then `_rail_tan_gamma` where
-/// written, then `_wheel_curvature_per_mm, _rail_curvature_per_mm`.
-fn contact_columns(
+/// contact): `{side}_s_mm`, with yaw `_x_mm`, then `_y_mm, _z_mm`, with yaw `_lead_mm`,
+/// then `_r_mm, _gamma_rad`, `_rail_tan_gamma` where written, and
+/// `_wheel_curvature_per_mm, _rail_curvature_per_mm`.
+pub(super) fn contact_columns(
     t: TableBuilder,
     side: Side,
     points: &[ContactPoint],
     rail_slope: RailSlopeColumn,
+    yawed: bool,
 ) -> TableBuilder {
     let name = side.name();
     let column = |f: fn(&ContactPoint) -> f64| points.iter().map(f).collect::<Vec<_>>();
-    let mut t = t
-        .numeric(format!("{name}_s_mm"), column(|c| c.s))
+    let mut t = t.numeric(format!("{name}_s_mm"), column(|c| c.s));
+    if yawed {
+        t = t.numeric(format!("{name}_x_mm"), column(|c| c.x));
+    }
+    t = t
         .numeric(format!("{name}_y_mm"), column(|c| c.y))
-        .numeric(format!("{name}_z_mm"), column(|c| c.z))
+        .numeric(format!("{name}_z_mm"), column(|c| c.z));
+    if yawed {
+        t = t.numeric(format!("{name}_lead_mm"), column(|c| c.lead));
+    }
+    let mut t = t
         .numeric(format!("{name}_r_mm"), column(|c| c.r))
         .numeric(format!("{name}_gamma_rad"), column(|c| c.gamma));
     if rail_slope == RailSlopeColumn::Written {
@@ -319,8 +361,24 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
         ))
         .comment(TRACK_FRAME)
         .comment(PER_WHEEL)
-        .comment("the heaviest patch (local minimum of the gap) per wheel; second_* the next heaviest (NaN if none); weight_share its share of the wheel's total weight")
-        .numeric("y_ws_mm", q.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>());
+        .comment("the heaviest patch (local minimum of the gap) per wheel; second_* the next heaviest (NaN if none); weight_share its share of the wheel's total weight");
+    let yaw = q.rigid().yaw();
+    if yaw.is_yawed() {
+        t = t.comment(yaw_comment(yaw));
+    }
+    t = t.numeric(
+        "y_ws_mm",
+        q.positions().iter().map(|p| p.y_ws).collect::<Vec<_>>(),
+    );
+    if yaw.is_yawed() {
+        let yaws = q
+            .rigid()
+            .positions()
+            .iter()
+            .map(|p| p.yaw)
+            .collect::<Vec<_>>();
+        t = t.numeric("yaw_rad", yaws);
+    }
     for side in [Side::Left, Side::Right] {
         let name = side.name();
         let main = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
@@ -340,7 +398,7 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
             .iter()
             .map(|p| p.side(side).main().map_or(ContactPoint::NAN, |c| c.point()))
             .collect();
-        t = contact_columns(t, side, &points, RailSlopeColumn::Omitted)
+        t = contact_columns(t, side, &points, RailSlopeColumn::Omitted, yaw.is_yawed())
             .numeric(format!("{name}_weight_share"), main(&|c| c.weight_share))
             .numeric(
                 format!("{name}_patches"),

@@ -72,29 +72,34 @@ pub(super) fn gauss_region(
     // The rail's breaks under the region: the wheel coordinate whose point lies above each,
     // Y(s) = Y_break (Newton: dY/ds = cos + sin F', close to 1, so Y grows with s).
     let y_of = |s: f64| {
-        let w = side.wheel().at(s);
+        let w = side.wheel_point(s)?;
         let [y, _] = pose.apply(w.y, w.z);
-        (y, pose.cos - pose.sin * w.slope)
+        Some((y, (pose.cos - pose.sin * w.slope) * w.dy_ds))
     };
     let rail = side.rail_break_ys();
-    let (y_lo, y_hi) = (y_of(lo).0, y_of(hi).0);
-    let from = rail.partition_point(|&y| y < y_lo.min(y_hi) - 1.0);
-    let to = rail.partition_point(|&y| y <= y_lo.max(y_hi) + 1.0);
-    let mut s = lo;
-    for &target in &rail[from..to] {
-        // From the previous break's wheel coordinate (the targets increase).
-        for _ in 0..20 {
-            let (y, dy) = y_of(s);
-            let step = (y - target) / dy;
-            s -= step;
-            if step.abs() < 1e-12 || !(s > lo - 1.0 && s < hi + 1.0) {
-                break;
+    // (With yaw, a region's end may lie just beyond the part of the wheel that takes part:
+    // its nodes there are not over the rail, and no rail break is mapped.)
+    if let (Some((y_lo, _)), Some((y_hi, _))) = (y_of(lo), y_of(hi)) {
+        let from = rail.partition_point(|&y| y < y_lo.min(y_hi) - 1.0);
+        let to = rail.partition_point(|&y| y <= y_lo.max(y_hi) + 1.0);
+        let mut s = lo;
+        for &target in &rail[from..to] {
+            // From the previous break's wheel coordinate (the targets increase).
+            for _ in 0..20 {
+                let Some((y, dy)) = y_of(s) else {
+                    break;
+                };
+                let step = (y - target) / dy;
+                s -= step;
+                if step.abs() < 1e-12 || !(s > lo - 1.0 && s < hi + 1.0) {
+                    break;
+                }
             }
-        }
-        if s > lo && s < hi {
-            breaks.push((s, false));
-        } else {
-            s = s.clamp(lo, hi);
+            if s > lo && s < hi {
+                breaks.push((s, false));
+            } else {
+                s = s.clamp(lo, hi);
+            }
         }
     }
     breaks.sort_by(|x, y| x.0.total_cmp(&y.0));

@@ -23,7 +23,7 @@
 //! * Separate low regions of the gap (tread and flange) are averaged separately: one
 //!   [`Patch`] per local minimum, split where a barrier higher than `eps` separates minima.
 
-use crate::gap::{ContactPoint, SideGap, SidePose};
+use crate::gap::{ContactPoint, SideGap, SidePose, Yaw};
 use crate::rigid::{RigidSweep, Stop};
 use crate::sweep::{Mirror, Mirrored};
 use crate::track::{Placement, Side};
@@ -66,6 +66,12 @@ pub struct Patch {
     pub wheel_curvature: f64,
     /// Averaged lateral rail curvature, convex positive (1/mm).
     pub rail_curvature: f64,
+    /// Averaged longitudinal position along the track (mm, x forward) relative to the
+    /// wheelset centre: 0 without yaw.
+    pub x: f64,
+    /// Averaged distance ahead of the axle along the wheelset's own forward axis (mm): 0
+    /// without yaw.
+    pub lead: f64,
     /// Share of the total weight of the wheel that falls in this patch (0-1).
     pub weight_share: f64,
     /// Smallest gap in the patch above the rigid minimum (mm).
@@ -94,6 +100,8 @@ impl Patch {
             rail_tan_gamma: self.rail_tan_gamma,
             wheel_curvature: self.wheel_curvature,
             rail_curvature: self.rail_curvature,
+            x: self.x,
+            lead: self.lead,
         }
     }
 
@@ -108,6 +116,8 @@ impl Patch {
             self.rail_tan_gamma,
             self.wheel_curvature,
             self.rail_curvature,
+            self.x,
+            self.lead,
             self.weight_share,
         ]
         .iter()
@@ -231,7 +241,15 @@ pub fn search(
     settings: &QuasiElasticSettings,
 ) -> QuasiElasticSweep {
     let rigid: Arc<RigidSweep> = rigid.into();
-    let sides = SideGap::both(placement);
+    let yaw = *rigid.yaw();
+    // Prepared for the yaw of a position (once where it is fixed along the sweep).
+    let prepare = |sides: &mut [SideGap; 2], y_ws: f64| {
+        for side in sides {
+            side.set_yaw(Yaw::new(side.sign, yaw.at(y_ws), yaw.model()));
+        }
+    };
+    let mut sides = SideGap::both(placement);
+    prepare(&mut sides, 0.0);
     // Where the rigid positions before the middle are the mirror images of those after it,
     // a wheel at a position is averaged exactly as the other wheel at the mirrored
     // position, operation for operation (both in their side frames): the images are what
@@ -243,23 +261,33 @@ pub fn search(
     use rayon::prelude::*;
     let solved: Vec<QuasiElasticPosition> = all[first..]
         .par_iter()
-        .map_init(Work::default, |work, p| {
-            let mut result = [SideResult::default(), SideResult::default()];
-            if p.stop == Stop::Converged {
-                for k in 0..2 {
-                    if let Some(c) = p.contact[k] {
-                        let (y_ws, roll, height) = (p.y_ws, p.roll, p.axle_height);
-                        let side = &sides[k];
-                        result[k] = side_average(side, y_ws, roll, height, c.s, settings, work);
+        .map_init(
+            || (Work::default(), yaw.varies().then(|| sides.clone())),
+            |(work, own), p| {
+                let mut result = [SideResult::default(), SideResult::default()];
+                let sides = match own {
+                    Some(own) => {
+                        prepare(own, p.y_ws);
+                        &*own
+                    }
+                    None => &sides,
+                };
+                if p.stop == Stop::Converged {
+                    for k in 0..2 {
+                        if let Some(c) = p.contact[k] {
+                            let (y_ws, roll, height) = (p.y_ws, p.roll, p.axle_height);
+                            let side = &sides[k];
+                            result[k] = side_average(side, y_ws, roll, height, c.s, settings, work);
+                        }
                     }
                 }
-            }
-            QuasiElasticPosition {
-                y_ws: p.y_ws,
-                sides: result,
-                rigid_stop: p.stop,
-            }
-        })
+                QuasiElasticPosition {
+                    y_ws: p.y_ws,
+                    sides: result,
+                    rigid_stop: p.stop,
+                }
+            },
+        )
         .collect();
     let positions = match mirror {
         Some(mirror) => mirror.complete(solved, |i| all[i].y_ws),
@@ -274,7 +302,7 @@ pub fn search(
 }
 
 /// Number of averaged fields per node (see [`side_average`]).
-const FIELDS: usize = 8;
+const FIELDS: usize = 9;
 
 /// Buffers reused across positions.
 #[derive(Debug, Default)]
@@ -286,16 +314,34 @@ struct Work {
     breaks: Vec<(f64, bool)>,
 }
 
+/// The fields averaged at one node: `s`, track-frame `y`, the rail's height, `F` (the
+/// rolling radius less `r0`), the wheel's slope as the rail sees it (the outline's with
+/// yaw), the rail's slope, the profile's and the rail's curvatures, the lead.
 fn fields_of(side: &SideGap, p: &crate::gap::GapPoint) -> [f64; FIELDS] {
+    let (f, wheel_curvature, lead) = if side.has_yaw() {
+        let profile = side.yaw().profile_point(&p.wheel);
+        (
+            -profile.z - side.wheel().nominal_radius_mm(),
+            profile.curvature(),
+            side.yaw().lead(&profile),
+        )
+    } else {
+        (
+            -p.wheel.z - side.wheel().nominal_radius_mm(),
+            p.wheel.curvature(),
+            0.0,
+        )
+    };
     [
         p.s,
         side.sign * p.y,
         p.rail.z,
-        -p.wheel.z - side.wheel().nominal_radius_mm(),
+        f,
         p.wheel.slope,
         p.rail.slope,
-        p.wheel.curvature(),
+        wheel_curvature,
         p.rail.curvature(),
+        lead,
     ]
 }
 
@@ -326,7 +372,7 @@ fn side_average(
     work: &mut Work,
 ) -> SideResult {
     let eps = settings.epsilon_mm;
-    let pose = SidePose::new(side.sign, y_ws, roll);
+    let pose = side.pose(y_ws, roll);
     let Some(at_rigid) = side.at(s_rigid, &pose) else {
         return SideResult::default();
     };
@@ -466,7 +512,13 @@ fn patches_of(side: &SideGap, roll: f64, averages: &[Average<FIELDS>]) -> SideRe
         .iter()
         .filter(|a| a.weight > 0.0)
         .map(|a| {
-            let [s, y, z, f, wheel_slope, rail_slope, kw, kr] = a.mean;
+            let [s, y, z, f, wheel_slope, rail_slope, kw, kr, lead] = a.mean;
+            let (x, lead) = if side.has_yaw() {
+                let yw = side.wheel().taping_line_mm() + s;
+                (side.yaw().x_of(yw, lead), lead)
+            } else {
+                (0.0, 0.0)
+            };
             Patch {
                 s,
                 y,
@@ -476,6 +528,8 @@ fn patches_of(side: &SideGap, roll: f64, averages: &[Average<FIELDS>]) -> SideRe
                 rail_tan_gamma: rail_slope,
                 wheel_curvature: kw,
                 rail_curvature: kr,
+                x,
+                lead,
                 weight_share: a.weight / total_weight,
                 gap_above_min: a.min_gap,
             }

@@ -4,11 +4,69 @@
 //! [`PositionSolver`].
 
 use super::continuation::Continuation;
-use super::jumps::{Refinement, find_jumps};
+use super::jumps::{Ask, Refine, Refinement, find_jumps};
 use super::minima::Scratch;
 use super::solve::PositionSolver;
 use super::{Jump, RigidPosition, Solver};
+use crate::gap::SideGap;
 use crate::sweep::{Mirror, Sweep};
+
+/// The solver a continuation or a refinement solves with: the sweep's own where the yaw is
+/// fixed; where it changes along the sweep, copies prepared for the yaws of the last few
+/// shifts asked for (a refinement goes back and forth between the two ends of its window
+/// and the point between them), the least recently used prepared again.
+struct Local<'s, 'a> {
+    shared: &'s PositionSolver<'a>,
+    /// Copies, most recently used last.
+    own: Vec<PositionSolver<'a>>,
+}
+
+/// Copies a [`Local`] keeps: the two ends of a refinement's window and its next point.
+const PREPARED_YAWS: usize = 3;
+
+impl<'s, 'a> Local<'s, 'a> {
+    fn new(shared: &'s PositionSolver<'a>) -> Local<'s, 'a> {
+        Local {
+            shared,
+            own: Vec::new(),
+        }
+    }
+
+    /// The solver prepared for the shift `y_ws`.
+    fn at(&mut self, y_ws: f64) -> &PositionSolver<'a> {
+        if !self.shared.yaw_varies() {
+            return self.shared;
+        }
+        // As the sides store it: no yaw as +0.
+        let key = (self.shared.yaw_at(y_ws) + 0.0).to_bits();
+        let k = match self
+            .own
+            .iter()
+            .position(|s| s.prepared_yaw().to_bits() == key)
+        {
+            Some(k) => k,
+            None if self.own.len() < PREPARED_YAWS => {
+                self.own.push(self.shared.clone());
+                self.own.len() - 1
+            }
+            None => 0,
+        };
+        let mut solver = self.own.remove(k);
+        solver.prepare(y_ws);
+        self.own.push(solver);
+        self.own.last().expect("pushed")
+    }
+}
+
+impl<'a> Refine<'a> for Local<'_, 'a> {
+    fn solve(&mut self, y_ws: f64, theta0: f64, ask: Ask, scratch: &mut Scratch) -> RigidPosition {
+        self.at(y_ws).solve(y_ws, theta0, scratch, ask.only)
+    }
+
+    fn sides_at(&mut self, y_ws: f64) -> &[SideGap<'a>; 2] {
+        self.at(y_ws).sides()
+    }
+}
 
 /// Halves of a sweep shorter than this (positions) run one after the other on a calling
 /// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
@@ -69,6 +127,7 @@ fn continuation(
 ) -> Vec<RigidPosition> {
     let mut scratch = Scratch::default();
     let mut path = Continuation::new(centre_roll);
+    let mut local = Local::new(solve);
     indices
         .map(|i| {
             let y = shifts[i];
@@ -77,7 +136,7 @@ fn continuation(
             {
                 scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
             }
-            let p = solve.solve(y, path.predict(y), &mut scratch, None);
+            let p = local.at(y).solve(y, path.predict(y), &mut scratch, None);
             path.push(&p);
             p
         })
@@ -135,11 +194,5 @@ fn jumps_in(solve: &PositionSolver, part: &[RigidPosition], scratch: &mut Scratc
         // to skip.
         certifying: *solve.solver() != Solver::Paper,
     };
-    find_jumps(
-        solve.sides(),
-        part,
-        refinement,
-        scratch,
-        |y, theta0, ask, scratch| solve.solve(y, theta0, scratch, ask.only),
-    )
+    find_jumps(&mut Local::new(solve), part, refinement, scratch)
 }

@@ -5,8 +5,46 @@
 use super::level::join_sides;
 use super::minima::Scratch;
 use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, RigidPosition, side_index};
-use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap, SidePose};
+use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap};
 use crate::track::Side;
+
+/// What [`find_jumps`] refines with: a solve of one position, and the two sides' gaps as
+/// they are at a shift (prepared for the yaw there, which may change along a sweep).
+pub(super) trait Refine<'a> {
+    /// The position at `y_ws` from the start roll `theta0`, as `ask` and `scratch` say.
+    fn solve(&mut self, y_ws: f64, theta0: f64, ask: Ask, scratch: &mut Scratch) -> RigidPosition;
+    /// The two sides' gaps at the shift `y_ws`.
+    fn sides_at(&mut self, y_ws: f64) -> &[SideGap<'a>; 2];
+}
+
+/// Fixed sides (one yaw for the whole sweep) and a solve closure: what the unit tests
+/// refine with.
+#[cfg(test)]
+pub(super) struct Fixed<'s, 'a, F> {
+    /// The sides, prepared for the sweep's yaw.
+    pub(super) sides: &'s [SideGap<'a>; 2],
+    /// `solve(y_ws, theta0, ask, scratch)`.
+    pub(super) solve: F,
+}
+
+#[cfg(test)]
+impl<'s, 'a, F: FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition> Fixed<'s, 'a, F> {
+    /// `solve` on `sides`.
+    pub(super) fn new(sides: &'s [SideGap<'a>; 2], solve: F) -> Fixed<'s, 'a, F> {
+        Fixed { sides, solve }
+    }
+}
+
+#[cfg(test)]
+impl<'a, F: FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition> Refine<'a> for Fixed<'_, 'a, F> {
+    fn solve(&mut self, y_ws: f64, theta0: f64, ask: Ask, scratch: &mut Scratch) -> RigidPosition {
+        (self.solve)(y_ws, theta0, ask, scratch)
+    }
+
+    fn sides_at(&mut self, _y_ws: f64) -> &[SideGap<'a>; 2] {
+        self.sides
+    }
+}
 
 /// What the refinement of a jump may ask of the solver.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -58,15 +96,14 @@ pub(super) struct Refinement {
 /// the jumps are those of such a refinement, bit for bit: the tests below and in
 /// `level.rs`). A solver that certifies nothing (not [`certifying`](Refinement::certifying):
 /// the paper's iteration) steers by the positions it reports.
-pub(super) fn find_jumps(
-    sides: &[SideGap; 2],
+pub(super) fn find_jumps<'a>(
+    solver: &mut impl Refine<'a>,
     positions: &[RigidPosition],
     Refinement {
         separable,
         certifying,
     }: Refinement,
     scratch: &mut Scratch,
-    mut solve: impl FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition,
 ) -> Vec<Jump> {
     let mut jumps = Vec::new();
     let mut steps = Steps::default();
@@ -79,26 +116,22 @@ pub(super) fn find_jumps(
                 continue;
             }
             let k = side_index(side);
-            let task = Task {
-                sides,
-                side,
-                separable,
-            };
+            let task = Task { side, separable };
             steps.clear();
             let record = certifying.then_some(&mut steps);
-            let mut ends = task.refine(w, record, &[], scratch, &mut solve);
+            let mut ends = task.refine(w, record, &[], scratch, solver);
             let mut provisional = [ends[0].1, ends[1].1].into_iter().flatten();
-            if !provisional.all(|i| steps.certified(sides, i, task.wheels())) {
+            if !provisional.all(|i| steps.certified(solver, i, task.wheels())) {
                 // The certified steps stand where the solver's positions depend on the shift
                 // alone; the first step a certificate rejects is solved again, certified.
                 let good = if separable {
                     (0..steps.len())
-                        .find(|&i| !steps.certified(sides, i, task.wheels()))
+                        .find(|&i| !steps.certified(solver, i, task.wheels()))
                         .unwrap_or(steps.len())
                 } else {
                     0
                 };
-                ends = task.refine(w, None, &steps.positions(good), scratch, &mut solve);
+                ends = task.refine(w, None, &steps.positions(good), scratch, solver);
             }
             let [(pa, _), (pb, _)] = ends;
             let (Some(ca), Some(cb)) = (pa.0.side(side), pb.0.side(side)) else {
@@ -117,7 +150,7 @@ pub(super) fn find_jumps(
                     only: Some(1 - k),
                     certified: true,
                 };
-                join_sides(&p, &ask.solve(&mut solve, p.y_ws, p.roll, scratch), k)
+                join_sides(&p, &ask.solve(solver, p.y_ws, p.roll, scratch), k)
             };
             let (pa, pb) = (whole(pa), whole(pb));
             jumps.push(Jump {
@@ -149,23 +182,22 @@ pub(super) struct Ask {
 impl Ask {
     /// `solve(y_ws, theta0, self)`: from no warm basins when cold, provisional
     /// ([`Scratch::provisional`]) unless certified.
-    fn solve(
+    fn solve<'a>(
         self,
-        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition,
+        solver: &mut impl Refine<'a>,
         y_ws: f64,
         theta0: f64,
         scratch: &mut Scratch,
     ) -> RigidPosition {
         scratch.warm &= !self.cold;
         scratch.provisional = !self.certified;
-        solve(y_ws, theta0, self, scratch)
+        solver.solve(y_ws, theta0, self, scratch)
     }
 }
 
 /// One wheel's candidate jumps in a sweep.
 #[derive(Clone, Copy)]
-struct Task<'a, 'b> {
-    sides: &'a [SideGap<'b>; 2],
+struct Task {
     side: Side,
     separable: bool,
 }
@@ -226,13 +258,14 @@ impl Steps {
     /// saw at the step's pose, with the minima the solve found, as the solve's own
     /// certificate would have; a solve that stopped on a pose it did not scan (an
     /// iteration cap) is scanned again.
-    fn certified(&mut self, sides: &[SideGap; 2], i: usize, wheels: &[usize]) -> bool {
+    fn certified<'a>(&mut self, solver: &mut impl Refine<'a>, i: usize, wheels: &[usize]) -> bool {
         let (p, seen) = &mut self.done[i];
+        let sides = solver.sides_at(p.y_ws);
         wheels.iter().all(|&w| {
             let (side, Some(c)) = (&sides[w], p.contact[w]) else {
                 return true;
             };
-            let pose = SidePose::new(side.sign, p.y_ws, p.roll);
+            let pose = side.pose(p.y_ws, p.roll);
             let minima = &seen.minima[w];
             let found = minima.iter().find(|m| m.s.to_bits() == c.s.to_bits());
             let Some(best) = found.copied().or_else(|| side.at(c.s, &pose)) else {
@@ -249,7 +282,7 @@ impl Steps {
     }
 }
 
-impl Task<'_, '_> {
+impl Task {
     /// The wheels whose minima a position's certificate covers: wheel `k` alone for a
     /// separable solver (its ends are halves), both otherwise (their minima balance the roll).
     fn wheels(&self) -> &'static [usize] {
@@ -263,13 +296,13 @@ impl Task<'_, '_> {
     /// Narrows the window `w` on this wheel (see [`find_jumps`]): provisionally, recording
     /// each solve in `steps`, or (`None`) certified, the first solves being `known` (the
     /// certified positions of those steps).
-    fn refine(
+    fn refine<'a>(
         &self,
         w: &[RigidPosition],
         mut steps: Option<&mut Steps>,
         known: &[RigidPosition],
         scratch: &mut Scratch,
-        solve: &mut impl FnMut(f64, f64, Ask, &mut Scratch) -> RigidPosition,
+        solver: &mut impl Refine<'a>,
     ) -> [End; 2] {
         let (side, k) = (self.side, side_index(self.side));
         let mut ends: [End; 2] = [((w[0], false), None), ((w[1], false), None)];
@@ -289,7 +322,7 @@ impl Task<'_, '_> {
             let (pa, pb) = (ends[0].0.0, ends[1].0.0);
             let width = pb.y_ws - pa.y_ws;
             let root = (secant_steps < MAX_SECANT_STEPS)
-                .then(|| competing_root(&self.sides[k], &pa, &pb, contact_s(&pa), contact_s(&pb)))
+                .then(|| competing_root(solver, k, &pa, &pb, contact_s(&pa), contact_s(&pb)))
                 .flatten();
             // Without two competing minima now, bisection to the end; across an
             // interval wider than SECANT_RETRY_WIDTH_MM the minima may only have moved
@@ -328,7 +361,7 @@ impl Task<'_, '_> {
                 };
                 let mid = match known.get(solved) {
                     Some(p) => *p,
-                    None => ask.solve(solve, y, a.roll, scratch),
+                    None => ask.solve(solver, y, a.roll, scratch),
                 };
                 (cold, solved) = (false, solved + 1);
                 let Some(m) = mid.side(side) else {
@@ -363,15 +396,17 @@ const STRADDLE_WIDTHS: f64 = 100.0;
 /// minimum of the gap at `s_a` (the contact at `pa`) and `B` the one at `s_b`, each followed
 /// at both poses; `None` when a minimum cannot be followed, `A` and `B` merge, or `h` does
 /// not change sign.
-fn competing_root(
-    side: &SideGap,
+fn competing_root<'a>(
+    solver: &mut impl Refine<'a>,
+    k: usize,
     pa: &RigidPosition,
     pb: &RigidPosition,
     s_a: f64,
     s_b: f64,
 ) -> Option<f64> {
-    let h = |p: &RigidPosition| -> Option<f64> {
-        let pose = SidePose::new(side.sign, p.y_ws, p.roll);
+    let mut h = |p: &RigidPosition| -> Option<f64> {
+        let side = &solver.sides_at(p.y_ws)[k];
+        let pose = side.pose(p.y_ws, p.roll);
         let reach = FOLLOW_REACH_MM;
         let a = side.minimum_within((s_a - reach, s_a + reach), s_a, &pose)?;
         let b = side.minimum_within((s_b - reach, s_b + reach), s_b, &pose)?;
@@ -486,17 +521,16 @@ mod tests {
         let window = &wide.positions[10..12];
         assert_eq!((window[0].y_ws, window[1].y_ws), (-5.0, -4.0));
         let jumps = find_jumps(
-            &sides,
+            &mut Fixed::new(&sides, |y, theta0, _, scratch| {
+                solves += 1;
+                solve_default(&sides, &settings, y, theta0, scratch)
+            }),
             window,
             Refinement {
                 separable: false,
                 certifying: true,
             },
             &mut scratch,
-            |y, theta0, _, scratch| {
-                solves += 1;
-                solve_default(&sides, &settings, y, theta0, scratch)
-            },
         );
         assert_eq!(jumps.len(), 1, "{jumps:?}");
         // Measured: 9 solves (5 for the jump, 4 for the left wheel's candidate in the
@@ -518,18 +552,17 @@ mod tests {
         let [(certified, all), (steered, some)] = [false, true].map(|provisional| {
             let (mut scratch, mut certified) = (Scratch::default(), 0);
             let jumps = find_jumps(
-                &sides,
+                &mut Fixed::new(&sides, |y, theta0, ask, s| {
+                    s.provisional = provisional && !ask.certified;
+                    certified += usize::from(!s.provisional);
+                    solve_default(&sides, &settings, y, theta0, s)
+                }),
                 &sweep.positions,
                 Refinement {
                     separable: false,
                     certifying: true,
                 },
                 &mut scratch,
-                |y, theta0, ask, s| {
-                    s.provisional = provisional && !ask.certified;
-                    certified += usize::from(!s.provisional);
-                    solve_default(&sides, &settings, y, theta0, s)
-                },
             );
             (format!("{jumps:?}"), certified)
         });

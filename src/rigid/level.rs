@@ -8,9 +8,9 @@
 //! gives, bit for bit (the unit test `joined_halves_are_the_whole_position` checks it).
 
 use super::minima::{Scratch, certify_minimum, side_minimum};
-use super::solve::{finish, no_contact, side_contact};
+use super::solve::{finish, no_contact, side_contact, yaw_of};
 use super::{RigidPosition, RollSettings, Stop};
-use crate::gap::{GapPoint, SideGap, SidePose};
+use crate::gap::{GapPoint, SideGap};
 
 /// Each wheel at roll 0 on its own rail: the global minimum of each side's gap over a fresh
 /// scan of its basins, certified global (`gap::certify`) unless the solve is provisional
@@ -32,7 +32,7 @@ pub(super) fn solve_no_roll(
         if only.is_some_and(|j| j != k) {
             continue;
         }
-        let pose = SidePose::new(sides[k].sign, y_ws, 0.0);
+        let pose = sides[k].pose(y_ws, 0.0);
         sides[k].basins(
             &pose,
             &mut scratch.boxes[k],
@@ -64,6 +64,7 @@ pub(super) fn solve_no_roll(
             // As `finish` gives it, with the wheel's own height as the axle height.
             RigidPosition {
                 y_ws,
+                yaw: yaw_of(sides),
                 roll: 0.0,
                 axle_height: -m.0.g,
                 contact,
@@ -72,7 +73,7 @@ pub(super) fn solve_no_roll(
                 residual: 0.0,
             }
         }
-        _ => no_contact(y_ws, 0.0, 1),
+        _ => no_contact(y_ws, yaw_of(sides), 0.0, 1),
     }
 }
 
@@ -82,7 +83,7 @@ pub(super) fn solve_no_roll(
 /// `-(g_L + g_R) / 2` of a joint solve exactly (negation and halving are exact).
 pub(super) fn join_sides(a: &RigidPosition, b: &RigidPosition, k: usize) -> RigidPosition {
     if a.stop != Stop::Converged || b.stop != Stop::Converged {
-        return no_contact(a.y_ws, 0.0, 1);
+        return no_contact(a.y_ws, a.yaw, 0.0, 1);
     }
     let mut p = *a;
     p.contact[1 - k] = b.contact[1 - k];
@@ -92,7 +93,7 @@ pub(super) fn join_sides(a: &RigidPosition, b: &RigidPosition, k: usize) -> Rigi
 
 #[cfg(test)]
 mod tests {
-    use super::super::jumps::{Ask, Refinement, find_jumps};
+    use super::super::jumps::{Ask, Fixed, Refinement, find_jumps};
     use super::super::{Jump, Solver, search};
     use super::*;
     use crate::scene::Scene;
@@ -119,17 +120,16 @@ mod tests {
     ) -> Vec<Jump> {
         let mut scratch = Scratch::default();
         find_jumps(
-            sides,
+            &mut Fixed::new(sides, |y, _, ask, s| {
+                s.provisional = provisional(ask);
+                solve_no_roll(sides, y, s, ask.only)
+            }),
             positions,
             Refinement {
                 separable,
                 certifying: true,
             },
             &mut scratch,
-            |y, _, ask, s| {
-                s.provisional = provisional(ask);
-                solve_no_roll(sides, y, s, ask.only)
-            },
         )
     }
 

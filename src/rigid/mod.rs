@@ -41,7 +41,7 @@ pub use settings::{RollSettings, RollSettingsError};
 use solve::PositionSolver;
 
 use crate::gap::ContactPoint;
-use crate::sweep::{Mirror, Mirrored, Sweep};
+use crate::sweep::{Mirror, Mirrored, Sweep, YawRule};
 use crate::track::{Placement, Side};
 
 /// Why the roll iteration at one position stopped (shared with [`crate::hertz`]).
@@ -127,6 +127,12 @@ pub struct SideContact {
     pub wheel_curvature: f64,
     /// Lateral curvature of the rail at the point, convex positive (1/mm).
     pub rail_curvature: f64,
+    /// Longitudinal position of the contact point along the track (mm, x forward),
+    /// relative to the wheelset centre: 0 without yaw.
+    pub x: f64,
+    /// Distance of the contact point ahead of the axle along the wheelset's own forward
+    /// axis (mm): 0 without yaw ([`crate::gap::Yaw::lead`]).
+    pub lead: f64,
     /// A second contact point: another local minimum of the gap within
     /// `TWO_POINT_GAP_TOL_MM`; `(s, gap)` in mm.
     pub second: Option<(f64, f64)>,
@@ -154,6 +160,8 @@ impl SideContact {
             rail_tan_gamma: self.rail_tan_gamma,
             wheel_curvature: self.wheel_curvature,
             rail_curvature: self.rail_curvature,
+            x: self.x,
+            lead: self.lead,
         }
     }
 }
@@ -163,6 +171,9 @@ impl SideContact {
 pub struct RigidPosition {
     /// Lateral shift of the wheelset (mm).
     pub y_ws: f64,
+    /// Yaw of the wheelset (rad), right-hand about +z: positive turns its forward axis to
+    /// the left. Imposed by the sweep ([`crate::sweep::YawRule`]), not solved.
+    pub yaw: f64,
     /// Roll (rad), right-hand about +x: positive lifts the left wheel.
     pub roll: f64,
     /// Height of the axle above the track origin (mm).
@@ -179,11 +190,12 @@ pub struct RigidPosition {
 
 impl Mirrored for RigidPosition {
     /// The solution at the mirrored shift `y_ws` (`-self.y_ws`) of a mirror-symmetric
-    /// wheelset: the wheels swap, the roll changes sign, the height stays.
+    /// wheelset: the wheels swap, the roll and the yaw change sign, the height stays.
     fn mirrored(&self, y_ws: f64) -> RigidPosition {
         RigidPosition {
             y_ws,
-            // 0 - roll: a level wheelset's roll of 0 stays 0, not -0.
+            // 0 - roll: a level wheelset's roll of 0 stays 0, not -0 (and the yaw).
+            yaw: 0.0 - self.yaw,
             roll: 0.0 - self.roll,
             contact: [
                 self.contact[1].map(|c| c.mirrored()),
@@ -268,9 +280,17 @@ pub struct RigidSweep {
     jumps: Vec<Jump>,
     /// Whether the positions before the middle are the mirror images of those after it.
     mirror: Option<Mirror>,
+    /// The yaw of the wheelset along the sweep.
+    yaw: YawRule,
 }
 
 impl RigidSweep {
+    /// The yaw of the wheelset along the sweep (the positions' own in
+    /// [`Position::yaw`]).
+    pub fn yaw(&self) -> &YawRule {
+        &self.yaw
+    }
+
     /// The solver used.
     pub fn solver(&self) -> Solver {
         self.solver
@@ -446,7 +466,7 @@ fn side_index(side: Side) -> usize {
 /// assert!(sweep.positions()[1].roll > 0.0);
 /// ```
 pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSweep {
-    let solve = PositionSolver::new(placement, solver);
+    let solve = PositionSolver::new(placement, solver, *sweep.yaw());
     // The centre's buffers serve the jumps' refinements after it.
     let mut scratch = Scratch::default();
     let centre = solve.solve(0.0, 0.0, &mut scratch, None);
@@ -459,6 +479,7 @@ pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSwee
         centre,
         jumps,
         mirror,
+        yaw: *sweep.yaw(),
     }
 }
 

@@ -123,7 +123,7 @@ pub(super) fn solve_default(
                 continue;
             }
             scratch.warm = false;
-            return no_contact(y_ws, it.theta, it.iterations);
+            return no_contact(y_ws, super::solve::yaw_of(sides), it.theta, it.iterations);
         };
         it.observe(&e, settings);
         let mut verdict = it.check(&e, settings);
@@ -186,8 +186,8 @@ impl Iteration {
         scratch: &mut Scratch,
     ) -> Option<Evaluation> {
         let poses = [
-            SidePose::new(1.0, self.y_ws, self.theta),
-            SidePose::new(-1.0, self.y_ws, self.theta),
+            sides[0].pose(self.y_ws, self.theta),
+            sides[1].pose(self.y_ws, self.theta),
         ];
         if (self.theta - self.scanned_theta).abs() > settings.rescan_roll_rad {
             // The wheel has turned so far that its points moved by more than the basins can

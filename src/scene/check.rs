@@ -68,8 +68,19 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
     let nominal_radius_mm = nominal_radii(raw)?;
     let (layout, rail_profile_inclination, smoothing_wavelength_mm) = track(raw)?;
     let (wheel_load_n, wheel_material, rail_material) = load_and_materials(raw)?;
-    let sweep = sweep(&raw.sweep)?;
-    let (figures, formats) = outputs(raw)?;
+    let sweep = yawed(raw, sweep(&raw.sweep)?)?;
+    let (figures, formats) = outputs(raw, sweep.yaw().is_yawed())?;
+    let creep = super::creep::creep(
+        raw.creep.as_ref().unwrap_or(&Default::default()),
+        sweep.len(),
+        &wheel_material,
+        &rail_material,
+    )?;
+    let asks_for_creep = raw.creep.is_some();
+    let contact_table = match &raw.table {
+        Some(t) => Some(super::creep::table(t, sweep.yaw().model())?),
+        None => None,
+    };
     let rigid_solver = rigid_solver(raw)?;
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
     let (hertz, hertz_contact) = hertz(raw)?;
@@ -111,6 +122,9 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         fleet,
         limits,
         nominal_rails,
+        creep,
+        asks_for_creep,
+        contact_table,
     })
 }
 
@@ -357,10 +371,17 @@ fn load_and_materials(raw: &RawScene) -> Result<(f64, Material, Material), Inval
     Ok((wheel_load_n, wheel_material, rail_material))
 }
 
-/// The figures and image formats asked for.
-fn outputs(raw: &RawScene) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
+/// The figures and image formats asked for; by default every figure (the contact's lead
+/// only for a `yawed` wheelset: without yaw it is 0; the creep figures only for a scene
+/// with `[creep]`).
+fn outputs(raw: &RawScene, yawed: bool) -> Result<(Vec<Figure>, Vec<ImageFormat>), Invalid> {
+    let creep = raw.creep.is_some();
     let figures = match &raw.outputs.figures {
-        None => crate::stage::Figure::ALL.to_vec(),
+        None => crate::stage::Figure::ALL
+            .into_iter()
+            .filter(|&f| yawed || f != Figure::ContactLead)
+            .filter(|&f| creep || f.stage() != crate::stage::Stage::Creep)
+            .collect(),
         Some(names) => names
             .iter()
             .map(|n| {
@@ -617,37 +638,102 @@ fn within(v: f64, (lo, hi): (f64, f64), unit: &str, what: &str) -> Result<f64, S
     }
 }
 
+/// The largest `sweep.yaw_mrad_per_mm` (mrad/mm): faster, the yaw would pass the 50 mrad of
+/// [`crate::sweep::MAX_YAW_RAD`] within 5 mm of shift (the Manchester benchmark's is 2.4).
+const MAX_YAW_MRAD_PER_MM: f64 = 10.0;
+
+/// `sweep` with the wheelset's yaw of `[wheelset] yaw_mrad`, `yaw_model` and `[sweep]
+/// yaw_mrad_per_mm`, or the offending key and a message.
+fn yawed(raw: &RawScene, sweep: Sweep) -> Result<Sweep, Invalid> {
+    use crate::gap::YawModel;
+    let max_mrad = crate::sweep::MAX_YAW_RAD * 1e3;
+    let yaw_mrad = raw.wheelset.yaw_mrad.unwrap_or(0.0);
+    let per_mm = raw.sweep.yaw_mrad_per_mm.unwrap_or(0.0);
+    for (key, v, bound, what) in [
+        ("wheelset.yaw_mrad", yaw_mrad, max_mrad, "mrad"),
+        (
+            "sweep.yaw_mrad_per_mm",
+            per_mm,
+            MAX_YAW_MRAD_PER_MM,
+            "mrad/mm",
+        ),
+    ] {
+        if v.is_nan() || v.abs() > bound {
+            return Err(invalid(
+                key,
+                format!(
+                    "{} {what} is no wheelset's yaw; expected -{} to {} {what} (a yaw in radians or degrees would be a unit mistake)",
+                    Number(v),
+                    Number(bound),
+                    Number(bound)
+                ),
+            ));
+        }
+    }
+    let model = match raw.wheelset.yaw_model.as_deref() {
+        None => YawModel::Exact,
+        Some(name) => YawModel::from_name(name).ok_or_else(|| {
+            invalid(
+                "wheelset.yaw_model",
+                format!("unknown yaw model {name:?}; expected \"exact\" or \"small_angle\""),
+            )
+        })?,
+    };
+    let key = if per_mm != 0.0 {
+        "sweep.yaw_mrad_per_mm"
+    } else {
+        "wheelset.yaw_mrad"
+    };
+    sweep
+        .with_yaw(crate::sweep::YawRule::new(
+            yaw_mrad * 1e-3,
+            per_mm * 1e-3,
+            model,
+        ))
+        .map_err(|e| invalid(key, e.to_string()))
+}
+
 /// The lateral shifts of a `[sweep]`, or the offending key and a message.
 fn sweep(raw: &RawSweep) -> Result<Sweep, (&'static str, String)> {
-    let from = raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0);
-    let to = raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1);
-    let step = raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM);
-    for (key, v) in [
-        ("sweep.from_mm", from),
-        ("sweep.to_mm", to),
-        ("sweep.step_mm", step),
-    ] {
+    shifts(
+        raw.from_mm.unwrap_or(DEFAULT_SWEEP_MM.0),
+        raw.to_mm.unwrap_or(DEFAULT_SWEEP_MM.1),
+        raw.step_mm.unwrap_or(DEFAULT_SWEEP_STEP_MM),
+        ["sweep.from_mm", "sweep.to_mm", "sweep.step_mm"],
+    )
+}
+
+/// The lateral shifts `from` to `to` by `step` (mm), or the offending key of `keys` (from,
+/// to, step: `[sweep]`'s or `[table]`'s) and a message.
+pub(super) fn shifts(
+    from: f64,
+    to: f64,
+    step: f64,
+    keys: [&'static str; 3],
+) -> Result<Sweep, (&'static str, String)> {
+    let [from_key, to_key, step_key] = keys;
+    for (key, v) in [(from_key, from), (to_key, to), (step_key, step)] {
         if !v.is_finite() {
             return Err((key, format!("{} must be a finite number", Number(v))));
         }
     }
     // `Sweep::range` checks the step and the number of positions; the keys' own
     // conditions (the order of the ends, their bounds) come in between, as before.
-    let step_error = |e: SweepError| ("sweep.step_mm", e.to_string());
+    let step_error = |e: SweepError| (step_key, e.to_string());
     if let Err(e @ SweepError::StepTooSmall { .. }) = Sweep::range(0.0, 0.0, step) {
         return Err(step_error(e));
     }
     if to < from {
         return Err((
-            "sweep.to_mm",
+            to_key,
             format!(
-                "{} is below sweep.from_mm = {}: the sweep is empty",
+                "{} is below {from_key} = {}: the sweep is empty",
                 Number(to),
                 Number(from)
             ),
         ));
     }
-    for (key, v) in [("sweep.from_mm", from), ("sweep.to_mm", to)] {
+    for (key, v) in [(from_key, from), (to_key, to)] {
         if v.abs() > 100.0 {
             return Err((
                 key,

@@ -10,6 +10,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 mod check;
+mod creep;
 mod raw;
 
 use raw::RawScene;
@@ -205,6 +206,12 @@ pub struct Scene {
     /// Left and right nominal rails the rails' wear is measured against (`rail.nominal_profile`;
     /// a fleet of rails sets its template's rails); `None`: no rail wear.
     pub(crate) nominal_rails: Option<[ProfileRef; 2]>,
+    /// `[creep]`, its defaults where the scene has none (the material is the scene's).
+    pub(crate) creep: crate::creep::sweep::StageSettings,
+    /// Whether the scene has `[creep]` (and so asks for `creep.csv`).
+    pub(crate) asks_for_creep: bool,
+    /// The contact table's grid (`[table]`), when the scene has one.
+    pub(crate) contact_table: Option<crate::contact_table::Grid>,
 }
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
@@ -381,6 +388,23 @@ impl Scene {
     /// Left and right nominal rails the rails' wear is measured against, if any.
     pub fn nominal_rails(&self) -> Option<&[ProfileRef; 2]> {
         self.nominal_rails.as_ref()
+    }
+
+    /// The creep stage's settings: the scene's `[creep]` with the defaults for missing keys,
+    /// the material from `[material]` (the stage runs for `creep.csv` when `[creep]` is
+    /// there, and for the creep figures).
+    pub fn creep(&self) -> &crate::creep::sweep::StageSettings {
+        &self.creep
+    }
+
+    /// Whether the scene has a `[creep]` table (and so asks for `creep.csv`).
+    pub fn asks_for_creep(&self) -> bool {
+        self.asks_for_creep
+    }
+
+    /// The contact table's grid (`[table]`), if the scene asks for one.
+    pub fn contact_table(&self) -> Option<&crate::contact_table::Grid> {
+        self.contact_table.as_ref()
     }
 
     /// The scene with `figures` in place of its own (what a run computes follows them).

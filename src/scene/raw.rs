@@ -55,6 +55,10 @@ pub struct RawScene {
     /// `[limits]`.
     #[serde(default)]
     pub limits: RawLimits,
+    /// `[creep]`: present when the scene asks for creep forces.
+    pub creep: Option<RawCreep>,
+    /// `[table]`: present when the scene asks for the contact table.
+    pub table: Option<RawTable>,
 }
 
 /// `[limits]`: maintenance limits of the flange dimensions (mm), each overriding the
@@ -72,6 +76,57 @@ pub struct RawLimits {
     pub sd_max_mm: Option<f64>,
     /// Least qR.
     pub qr_min_mm: Option<f64>,
+}
+
+/// `[creep]`: the creep stage's motion and model.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawCreep {
+    /// Forward speed, m/s.
+    pub speed_m_s: Option<f64>,
+    /// Coefficient of friction.
+    pub friction: Option<f64>,
+    /// "fastsim" (default), "linear" or "polach".
+    pub method: Option<String>,
+    /// FASTSIM's traction bound: "parabolic" (default) or "elliptic".
+    pub bound: Option<String>,
+    /// The contacts: "quasi_elastic" (default: the heaviest patch and the second) or "rigid".
+    pub contact: Option<String>,
+    /// Lateral velocity of the wheelset, mm/s, positive to the left.
+    pub lateral_velocity_mm_s: Option<f64>,
+    /// Yaw rate of the wheelset, rad/s.
+    pub yaw_rate_rad_s: Option<f64>,
+    /// Pitch rate, rad/s (positive rolls forwards): one for every position or one per
+    /// position; default free rolling.
+    pub pitch_rate_rad_s: Option<OneOrMany>,
+}
+
+/// A number, or a list of numbers.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrMany {
+    /// One value for all.
+    One(f64),
+    /// One value each.
+    Many(Vec<f64>),
+}
+
+/// `[table]`: the grid of the contact table.
+#[derive(Debug, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct RawTable {
+    /// First lateral shift, mm.
+    pub from_mm: Option<f64>,
+    /// Last lateral shift, mm.
+    pub to_mm: Option<f64>,
+    /// Step of the shift, mm.
+    pub step_mm: Option<f64>,
+    /// First yaw, mrad.
+    pub yaw_from_mrad: Option<f64>,
+    /// Last yaw, mrad.
+    pub yaw_to_mrad: Option<f64>,
+    /// Step of the yaw, mrad.
+    pub yaw_step_mrad: Option<f64>,
 }
 
 /// `[fleet]`: settings of `wheelrail fleet` when this scene is its template.
@@ -194,6 +249,10 @@ pub struct RawTrack {
 pub struct RawWheelset {
     /// Distance between the inner faces of the wheels.
     pub flange_back_mm: Option<f64>,
+    /// A fixed yaw of the wheelset, mrad (right-hand about z up).
+    pub yaw_mrad: Option<f64>,
+    /// The model of the yawed wheel's outline: "exact" or "small_angle".
+    pub yaw_model: Option<String>,
 }
 
 /// `[load]`.
@@ -234,6 +293,8 @@ pub struct RawSweep {
     pub to_mm: Option<f64>,
     /// Step between lateral shifts.
     pub step_mm: Option<f64>,
+    /// Yaw growing with the shift, mrad per mm (added to `wheelset.yaw_mrad`).
+    pub yaw_mrad_per_mm: Option<f64>,
 }
 
 /// `[outputs]`.

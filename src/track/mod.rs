@@ -28,7 +28,7 @@ pub(crate) use layout::{
     TAPING_LINE_FROM_INNER_FACE_MM,
 };
 pub use layout::{Inclination, LayoutError, TrackLayout};
-pub(crate) use rail::SurfaceBounds;
+pub(crate) use rail::{MAX_RAIL_SLOPE, SurfaceBounds};
 pub use rail::{PlacedRail, RailPoint};
 pub(crate) use wheel::{NOMINAL_RADIUS_RANGE_MM, check_nominal_radius};
 pub use wheel::{PlacedWheel, WheelPoint};

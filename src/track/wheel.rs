@@ -66,7 +66,7 @@ impl WheelCells {
 impl WheelCell {
     /// The bounds over two runs of cells together.
     #[inline]
-    fn union(self, o: WheelCell) -> WheelCell {
+    pub(crate) fn union(self, o: WheelCell) -> WheelCell {
         WheelCell {
             d: self.d.union(o.d),
             z: (self.z.0.min(o.z.0), self.z.1.max(o.z.1)),
@@ -86,6 +86,9 @@ pub struct WheelPoint {
     pub slope: f64,
     /// `d2Z/dY2` (= `-d2F/ds2`, 1/mm).
     pub d2: f64,
+    /// `dY/ds`: 1 for a profile point; the rate at which a yawed wheel's outline
+    /// ([`crate::gap::Yaw::outline`]) moves sideways along the profile.
+    pub dy_ds: f64,
 }
 
 impl WheelPoint {
@@ -184,6 +187,7 @@ impl PlacedWheel {
             z: -(self.nominal_radius_mm + f),
             slope: -d1,
             d2: -d2,
+            dy_ds: 1.0,
         }
     }
 

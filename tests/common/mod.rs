@@ -190,3 +190,45 @@ pub fn y_ws_column(csv: &str) -> Option<Vec<f64>> {
 pub fn strictly_increasing(v: &[f64]) -> bool {
     v.windows(2).all(|w| w[0] < w[1])
 }
+
+/// One row of CONTACT's given wheel-cases of the Manchester case
+/// (`tests/data/contact/manchester_a22_given.csv`): its wheel and its numbers by column name,
+/// as printed (CONTACT's frame: read the file's header).
+pub struct GivenCase {
+    /// The wheel.
+    pub side: wheelrail::track::Side,
+    header: std::rc::Rc<Vec<String>>,
+    fields: Vec<String>,
+}
+
+impl GivenCase {
+    /// The number in column `name` (a trailing `.` of CONTACT's print dropped).
+    pub fn num(&self, name: &str) -> f64 {
+        let i = self.header.iter().position(|h| h == name).unwrap();
+        self.fields[i].trim_end_matches('.').parse().unwrap()
+    }
+}
+
+/// CONTACT's six given wheel-cases of, in the file's order.
+pub fn manchester_given() -> Vec<GivenCase> {
+    let text = std::fs::read_to_string(root().join("tests/data/contact/manchester_a22_given.csv"))
+        .unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    let header = std::rc::Rc::new(header);
+    lines
+        .map(|l| {
+            let fields: Vec<String> = l.split(',').map(String::from).collect();
+            let side = if fields[0] == "left" {
+                wheelrail::track::Side::Left
+            } else {
+                wheelrail::track::Side::Right
+            };
+            GivenCase {
+                side,
+                header: std::rc::Rc::clone(&header),
+                fields,
+            }
+        })
+        .collect()
+}

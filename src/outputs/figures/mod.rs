@@ -6,9 +6,11 @@
 //! not converge are left out, never joined across.
 //!
 //! One file per stage: [`profiles`], [`rigid`], [`quasi_elastic`], [`hertz`], [`conicity`],
+//! [`creep`],
 //! and the [`tradeoff`] study's chart.
 
 mod conicity;
+mod creep;
 mod hertz;
 mod profiles;
 mod quasi_elastic;
@@ -16,12 +18,13 @@ mod rigid;
 mod tradeoff;
 
 pub(crate) use conicity::{delta_r_linearised, equivalent_conicity};
+pub(crate) use creep::{creep_curve, creep_forces};
 pub(crate) use hertz::{hertz_accuracy, pressure, semi_axes};
 pub(crate) use profiles::{conicity, conicity_caption, curvature, profiles};
 pub(crate) use quasi_elastic::{epsilon_sensitivity, quasi_elastic_map, quasi_elastic_points};
 pub(crate) use rigid::{
-    contact_angle_parameter, contact_angles, contact_map, contact_points, flange_onsets, roll,
-    rolling_radius,
+    contact_angle_parameter, contact_angles, contact_lead, contact_map, contact_points,
+    flange_onsets, roll, rolling_radius,
 };
 pub(crate) use tradeoff::tradeoff;
 

@@ -145,6 +145,16 @@ pub(crate) fn contact_angles(sweep: &RigidSweep) -> Figure {
     ))
 }
 
+/// Lead of each wheel's contact ahead of the axle against the shift (yaw).
+pub(crate) fn contact_lead(sweep: &RigidSweep) -> Figure {
+    Figure::single(left_right(
+        sweep,
+        "Contact point ahead of the axle (yawed wheelset)",
+        "lead (mm, + ahead of the axle)",
+        |c| c.lead,
+    ))
+}
+
 /// Roll angle against the shift (paper Fig. 2).
 pub(crate) fn roll(sweep: &RigidSweep) -> Figure {
     Figure::single(with_onsets(
