@@ -339,19 +339,8 @@ impl Task<'_, '_> {
             } else {
                 MAX_SECANT_STEPS
             };
-            let ys: &[f64] = match root {
-                Some(r) if width <= STRADDLE_WIDTHS * JUMP_REFINE_MM => {
-                    let half = 0.49 * JUMP_REFINE_MM;
-                    &[
-                        (r - half).max(pa.y_ws + 0.01 * width),
-                        (r + half).min(pb.y_ws - 0.01 * width),
-                    ]
-                }
-                // Kept off the ends, so that the interval shrinks.
-                Some(r) => &[r.clamp(pa.y_ws + 0.01 * width, pb.y_ws - 0.01 * width)],
-                None => &[0.5 * (pa.y_ws + pb.y_ws)],
-            };
-            for &y in ys {
+            let (ys, n) = next_shifts(root, pa.y_ws, pb.y_ws);
+            for &y in &ys[..n] {
                 let (a, b) = (ends[0].0.0, ends[1].0.0);
                 // A second straddling position that the first already moved an end past
                 // is not solved: the interval only shrinks.
@@ -385,6 +374,23 @@ impl Task<'_, '_> {
             }
         }
         ends
+    }
+}
+
+/// The shifts to solve next in the interval `(lo, hi)`: around the secant `root` where the
+/// interval is narrow (two positions straddling it by less than half the refinement
+/// width), the root itself kept off the ends (so that the interval shrinks), or the
+/// midpoint without a root; the first `n` of the array.
+fn next_shifts(root: Option<f64>, lo: f64, hi: f64) -> ([f64; 2], usize) {
+    let width = hi - lo;
+    let (first, last) = (lo + 0.01 * width, hi - 0.01 * width);
+    match root {
+        Some(r) if width <= STRADDLE_WIDTHS * JUMP_REFINE_MM => {
+            let half = 0.49 * JUMP_REFINE_MM;
+            ([(r - half).max(first), (r + half).min(last)], 2)
+        }
+        Some(r) => ([r.clamp(first, last), f64::NAN], 1),
+        None => ([0.5 * (lo + hi), f64::NAN], 1),
     }
 }
 
