@@ -23,11 +23,8 @@ fn main() -> Result<(), Error> {
     let placement = Placement::symmetric(wheel, 460.0, rail, Inclination::VERTICAL, layout)?;
 
     // Lateral shifts of the wheelset from -10 to 10 mm every 0.1 mm, roll solved.
-    let sweep = rigid::search(
-        &placement,
-        &Sweep::range(-10.0, 10.0, 0.1)?,
-        Solver::default(),
-    );
+    let shifts = Sweep::range(-10.0, 10.0, 0.1)?;
+    let sweep = rigid::search(&placement, &shifts, Solver::default());
     let pair = conicity::assess(&sweep, &ConicitySettings::default());
 
     println!("y_ws_mm, delta_r_mm (every 2 mm)");

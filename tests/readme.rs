@@ -26,3 +26,26 @@ fn every_command_is_in_the_readme() {
         );
     }
 }
+
+/// The README's library example is `examples/own_profiles.rs` (which CI runs): each of its
+/// lines of code is a line of the example, in order.
+#[test]
+fn the_library_example_is_the_examples() {
+    let readme = readme();
+    let section = &readme[readme.find("## Use as a library").unwrap()..];
+    let start = section.find("```rust\n").unwrap() + "```rust\n".len();
+    let block = &section[start..start + section[start..].find("```").unwrap()];
+    let example = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/examples/own_profiles.rs"
+    ))
+    .unwrap();
+    let mut lines = example.lines().map(str::trim);
+    let code = |l: &&str| !l.is_empty() && !l.starts_with("//");
+    for wanted in block.lines().map(str::trim).filter(code) {
+        assert!(
+            lines.any(|l| l == wanted),
+            "README line {wanted:?} is not in examples/own_profiles.rs (in order)"
+        );
+    }
+}

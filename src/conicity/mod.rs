@@ -68,10 +68,6 @@ pub use pair::{
     delta_r_of,
 };
 
-/// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
-#[cfg(feature = "cli")]
-pub(crate) const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
-
 /// The default amplitudes: 0.5 to 10 mm in steps of 0.1 mm (96 values), exact decimals.
 #[doc(hidden)] // public for the conicity benchmarks
 pub fn default_amplitudes_mm() -> Vec<f64> {

@@ -208,6 +208,10 @@ impl ParameterRow {
 }
 
 impl Parameters {
+    /// The amplitude at which acceptance rules quote the equivalent conicity (mm):
+    /// [`Parameters::tan_gamma_e_3mm`]'s.
+    pub const REFERENCE_AMPLITUDE_MM: f64 = 3.0;
+
     /// Every parameter undefined (NaN, no jumps): the row of a pair that could not be
     /// assessed.
     pub fn undefined(method: ConicityMethod) -> Parameters {

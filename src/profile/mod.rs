@@ -85,11 +85,11 @@ pub struct Profile {
     shape: Shape,
 }
 
-/// Names of the built-in profiles accepted in scenes and by `wheelrail profile`.
-#[cfg(feature = "cli")]
-pub(crate) const BUILT_IN: [&str; 2] = ["S1002", "UIC60E1"];
-
 impl Profile {
+    /// Names of the built-in profiles accepted in scenes and by `wheelrail profile`
+    /// ([`Profile::built_in`]).
+    pub const BUILT_IN: [&'static str; 2] = ["S1002", "UIC60E1"];
+
     /// The S1002 wheel (EN 13715, 28 mm flange height, 32.5 mm flange thickness).
     pub fn s1002() -> Profile {
         Profile {

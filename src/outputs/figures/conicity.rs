@@ -5,7 +5,8 @@ use crate::report::{Chart, Figure, LegendPosition, Series};
 
 /// The equivalent conicity function by both methods, `tan γe(3 mm)` marked (EN 15302).
 pub(crate) fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Figure {
-    use crate::conicity::{ConicityMethod, REFERENCE_AMPLITUDE_MM};
+    use crate::conicity::ConicityMethod;
+    const REFERENCE_AMPLITUDE_MM: f64 = crate::conicity::Parameters::REFERENCE_AMPLITUDE_MM;
     let series = |m: ConicityMethod| -> Line {
         c.by(m)
             .points
@@ -52,7 +53,7 @@ pub(crate) fn equivalent_conicity(c: &crate::conicity::PairConicity) -> Figure {
 /// Δr of the rigid sweep with the linear function of the equivalent cone at ŷ = 3 mm,
 /// `2 tan γe(3 mm) (y - y_eq)`, over the motion `y_eq ± 3 mm`.
 pub(crate) fn delta_r_linearised(c: &crate::conicity::PairConicity) -> Figure {
-    use crate::conicity::REFERENCE_AMPLITUDE_MM;
+    const REFERENCE_AMPLITUDE_MM: f64 = crate::conicity::Parameters::REFERENCE_AMPLITUDE_MM;
     let p = &c.parameters;
     let eq = if p.equilibrium_mm.is_finite() {
         p.equilibrium_mm
