@@ -124,18 +124,7 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
         crate::rigid::Solver::Paper => RIGID_PAPER_FACTOR * RIGID_DEFAULT_PER_WHEEL,
         _ => RIGID_DEFAULT_PER_WHEEL,
     };
-    // The contact table: one rigid sweep of both wheels per yaw of its grid.
-    let table = match (&scene.contact_table, stages.contains(&Stage::ContactTable)) {
-        (Some(grid), true) => {
-            let nodes = grid.shifts().len() * grid.yaws_rad().len();
-            drivers.push((
-                "table.step_mm, table.yaw_step_mrad",
-                format!("{nodes} shift x yaw nodes"),
-            ));
-            2.0 * nodes as f64 * rigid
-        }
-        _ => 0.0,
-    };
+    let table = contact_table_work(scene, &stages, rigid, &mut drivers);
     if !stages.contains(&Stage::Rigid) {
         return Estimate {
             evaluations: table,
@@ -147,41 +136,7 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
     if matches!(scene.rigid_solver, crate::rigid::Solver::Paper) {
         drivers.push(("rigid.solver", "\"paper\"".into()));
     }
-    let mut per_wheel = rigid;
-
-    let mut passes: Vec<f64> = Vec::new();
-    if stages.contains(&Stage::QuasiElastic) {
-        passes.push(scene.quasi_elastic.epsilon_mm);
-    }
-    if stages.contains(&Stage::EpsilonSensitivity) {
-        passes.extend(&scene.epsilon_sensitivity_mm);
-        drivers.push((
-            "quasi_elastic.sensitivity_epsilon_mm",
-            format!("{} values", scene.epsilon_sensitivity_mm.len()),
-        ));
-    }
-    if !passes.is_empty() {
-        let (width_mm, breaks_per_mm) = break_density(placement);
-        let qe = &scene.quasi_elastic;
-        for eps in passes {
-            per_wheel += quadrature_nodes(qe.quadrature, qe.cutoff, eps, width_mm, breaks_per_mm);
-        }
-        drivers.push(("quasi_elastic.cutoff", format!("{}", qe.cutoff)));
-        match qe.quadrature {
-            Quadrature::GaussLegendre { panel_widths } => {
-                drivers.push(("quasi_elastic.panel_widths", format!("{panel_widths}")));
-            }
-            Quadrature::Trapezoid { max_step_mm } => {
-                drivers.push(("quasi_elastic.max_step_mm", format!("{max_step_mm}")));
-            }
-        }
-        if breaks_per_mm > 1.0 {
-            drivers.push((
-                "wheel.profile, rail.profile",
-                format!("{breaks_per_mm:.1} spline knots per mm"),
-            ));
-        }
-    }
+    let per_wheel = with_quasi_elastic_work(rigid, scene, &stages, placement, &mut drivers);
     let mut evaluations = 2.0 * positions * per_wheel + table;
     if stages.contains(&Stage::EquivalentConicity) {
         let amplitudes = scene.conicity.amplitudes_mm.as_ref().map_or(96, Vec::len) as f64;
@@ -205,6 +160,74 @@ pub fn estimate(scene: &Scene, placement: &Placement) -> Estimate {
         bytes,
         drivers,
     }
+}
+
+/// The work of the contact table when `stages` compute it: one rigid sweep of both wheels
+/// per yaw of its grid, `rigid` evaluations per position and wheel.
+fn contact_table_work(
+    scene: &Scene,
+    stages: &[Stage],
+    rigid: f64,
+    drivers: &mut Vec<(&'static str, String)>,
+) -> f64 {
+    match (&scene.contact_table, stages.contains(&Stage::ContactTable)) {
+        (Some(grid), true) => {
+            let nodes = grid.shifts().len() * grid.yaws_rad().len();
+            drivers.push((
+                "table.step_mm, table.yaw_step_mrad",
+                format!("{nodes} shift x yaw nodes"),
+            ));
+            2.0 * nodes as f64 * rigid
+        }
+        _ => 0.0,
+    }
+}
+
+/// `per_wheel` (the rigid work of a position and wheel) with the quadrature nodes of every
+/// quasi-elastic pass that `stages` run added: the quasi-elastic stage's eps, then each of
+/// the sensitivity's.
+fn with_quasi_elastic_work(
+    mut per_wheel: f64,
+    scene: &Scene,
+    stages: &[Stage],
+    placement: &Placement,
+    drivers: &mut Vec<(&'static str, String)>,
+) -> f64 {
+    let mut passes: Vec<f64> = Vec::new();
+    if stages.contains(&Stage::QuasiElastic) {
+        passes.push(scene.quasi_elastic.epsilon_mm);
+    }
+    if stages.contains(&Stage::EpsilonSensitivity) {
+        passes.extend(&scene.epsilon_sensitivity_mm);
+        drivers.push((
+            "quasi_elastic.sensitivity_epsilon_mm",
+            format!("{} values", scene.epsilon_sensitivity_mm.len()),
+        ));
+    }
+    if passes.is_empty() {
+        return per_wheel;
+    }
+    let (width_mm, breaks_per_mm) = break_density(placement);
+    let qe = &scene.quasi_elastic;
+    for eps in passes {
+        per_wheel += quadrature_nodes(qe.quadrature, qe.cutoff, eps, width_mm, breaks_per_mm);
+    }
+    drivers.push(("quasi_elastic.cutoff", format!("{}", qe.cutoff)));
+    match qe.quadrature {
+        Quadrature::GaussLegendre { panel_widths } => {
+            drivers.push(("quasi_elastic.panel_widths", format!("{panel_widths}")));
+        }
+        Quadrature::Trapezoid { max_step_mm } => {
+            drivers.push(("quasi_elastic.max_step_mm", format!("{max_step_mm}")));
+        }
+    }
+    if breaks_per_mm > 1.0 {
+        drivers.push((
+            "wheel.profile, rail.profile",
+            format!("{breaks_per_mm:.1} spline knots per mm"),
+        ));
+    }
+    per_wheel
 }
 
 /// Bytes of the tables of a run of `stages`, and its page.

@@ -291,91 +291,74 @@ fn run_recorded(
         record,
     };
     for &stage in stages {
-        let record = &mut results.record;
-        match stage {
-            Stage::Profiles => {}
-            Stage::Rigid => {
-                let r = record.time(stage, progress, || {
-                    rigid::search(&results.placement, &scene.sweep, scene.rigid_solver)
-                });
-                results.rigid = Some(Arc::new(r));
-            }
-            Stage::QuasiElastic => {
-                let rigid = results
-                    .rigid
-                    .as_ref()
-                    .expect("rigid runs before quasi-elastic");
-                let q = record.time(stage, progress, || {
-                    let rigid = Arc::clone(rigid);
-                    quasi_elastic::search(&results.placement, rigid, &scene.quasi_elastic)
-                });
-                results.quasi_elastic = Some(q);
-            }
-            Stage::EpsilonSensitivity => {
-                let rigid = results
-                    .rigid
-                    .as_ref()
-                    .expect("rigid runs before the sensitivity");
+        run_stage(scene, stage, &mut results, progress);
+    }
+    results
+}
+
+/// Runs `stage` of `scene` into `results`, which hold the stages it requires, timed in
+/// their record.
+fn run_stage(scene: &Scene, stage: Stage, results: &mut Results, progress: Progress) {
+    let record = &mut results.record;
+    match stage {
+        Stage::Profiles => {}
+        Stage::Rigid => {
+            let r = record.time(stage, progress, || {
+                rigid::search(&results.placement, &scene.sweep, scene.rigid_solver)
+            });
+            results.rigid = Some(Arc::new(r));
+        }
+        Stage::QuasiElastic => {
+            let rigid = results
+                .rigid
+                .as_ref()
+                .expect("rigid runs before quasi-elastic");
+            let q = record.time(stage, progress, || {
+                let rigid = Arc::clone(rigid);
+                quasi_elastic::search(&results.placement, rigid, &scene.quasi_elastic)
+            });
+            results.quasi_elastic = Some(q);
+        }
+        Stage::EpsilonSensitivity => {
+            let rigid = results
+                .rigid
+                .as_ref()
+                .expect("rigid runs before the sensitivity");
+            let placement = &results.placement;
+            let e = record.time(stage, progress, || epsilon_sweeps(scene, placement, rigid));
+            results.epsilon = Some(e);
+        }
+        Stage::Hertz => {
+            let (rigid, qe) = (results.rigid.as_ref(), results.quasi_elastic.as_ref());
+            let h = record.time(stage, progress, || hertz_sweep(scene, rigid, qe));
+            results.hertz = Some(h);
+        }
+        Stage::EquivalentConicity => {
+            let rigid = results
+                .rigid
+                .as_ref()
+                .expect("rigid runs before the equivalent conicity");
+            let c = record.time(stage, progress, || conicity::assess(rigid, &scene.conicity));
+            results.conicity = Some(c);
+        }
+        Stage::HertzAccuracy => {
+            let a = record.time(stage, progress, hertz::accuracy::study);
+            results.hertz_accuracy = Some(a);
+        }
+        Stage::Creep => {
+            let (rigid, qe) = (results.rigid.as_deref(), results.quasi_elastic.as_ref());
+            let placement = &results.placement;
+            let c = record.time(stage, progress, || creep_sweep(scene, placement, rigid, qe));
+            results.creep = Some(c);
+        }
+        Stage::ContactTable => {
+            if let Some(grid) = &scene.contact_table {
                 let placement = &results.placement;
-                let e = record.time(stage, progress, || epsilon_sweeps(scene, placement, rigid));
-                results.epsilon = Some(e);
-            }
-            Stage::Hertz => {
-                let (rigid, qe) = (results.rigid.as_ref(), results.quasi_elastic.as_ref());
-                let h = record.time(stage, progress, || hertz_sweep(scene, rigid, qe));
-                results.hertz = Some(h);
-            }
-            Stage::EquivalentConicity => {
-                let rigid = results
-                    .rigid
-                    .as_ref()
-                    .expect("rigid runs before the equivalent conicity");
-                let c = record.time(stage, progress, || conicity::assess(rigid, &scene.conicity));
-                results.conicity = Some(c);
-            }
-            Stage::HertzAccuracy => {
-                let a = record.time(stage, progress, hertz::accuracy::study);
-                results.hertz_accuracy = Some(a);
-            }
-            Stage::Creep => {
-                let creep = &scene.creep;
-                let contacts = contacts(
-                    results.rigid.as_deref(),
-                    results.quasi_elastic.as_ref(),
-                    creep.contact,
-                );
-                let c = record.time(stage, progress, || {
-                    crate::creep::sweep::sweep(
-                        &results.placement,
-                        contacts,
-                        scene.wheel_load_n,
-                        &creep.kinematics,
-                        &creep.settings,
-                    )
-                });
-                results.creep = Some(c);
-            }
-            Stage::ContactTable => {
-                if let Some(grid) = &scene.contact_table {
-                    let e_star =
-                        hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
-                    let t = record.time(stage, progress, || {
-                        crate::contact_table::compute(
-                            &results.placement,
-                            grid,
-                            scene.rigid_solver,
-                            scene.wheel_load_n,
-                            e_star,
-                            &scene.hertz,
-                            scene.creep.settings.poisson(),
-                        )
-                    });
-                    results.contact_table = Some(t);
-                }
+                let t = record.time(stage, progress, || contact_table(scene, placement, grid));
+                results.contact_table = Some(t);
             }
         }
     }
-    results
 }
 
 /// The Hertz ellipses of the scene's contacts (`[hertz] contact`: the rigid ones or the
@@ -388,6 +371,43 @@ fn hertz_sweep(
     let contacts = contacts(rigid.map(|r| &**r), quasi_elastic, scene.hertz_contact);
     let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
     hertz::sweep(contacts, scene.wheel_load_n, e_star, &scene.hertz)
+}
+
+/// The creep forces of the scene's contacts (`[creep] contact`: the rigid ones or the
+/// quasi-elastic ones, which run before).
+fn creep_sweep(
+    scene: &Scene,
+    placement: &Placement,
+    rigid: Option<&RigidSweep>,
+    quasi_elastic: Option<&QuasiElasticSweep>,
+) -> Result<crate::creep::sweep::CreepSweep, crate::creep::CreepError> {
+    let creep = &scene.creep;
+    crate::creep::sweep::sweep(
+        placement,
+        contacts(rigid, quasi_elastic, creep.contact),
+        scene.wheel_load_n,
+        &creep.kinematics,
+        &creep.settings,
+    )
+}
+
+/// The contact table of `grid` on `placement`, with the scene's rigid solver, load,
+/// materials and Hertz settings.
+fn contact_table(
+    scene: &Scene,
+    placement: &Placement,
+    grid: &crate::contact_table::Grid,
+) -> crate::contact_table::ContactTable {
+    let e_star = hertz::effective_modulus(&scene.wheel_material, &scene.rail_material);
+    crate::contact_table::compute(
+        placement,
+        grid,
+        scene.rigid_solver,
+        scene.wheel_load_n,
+        e_star,
+        &scene.hertz,
+        scene.creep.settings.poisson(),
+    )
 }
 
 /// The contacts of `source`: the rigid sweep or the quasi-elastic one (the stage graph ran

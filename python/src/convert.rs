@@ -6,6 +6,7 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::fmt::Display;
+use wheelrail::plausible::Range;
 use wheelrail::profile::read::PointProfile;
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::report::{Column, ColumnData, Table};
@@ -30,6 +31,23 @@ pub fn one_of<'a>(what: &str, name: &str, expected: impl IntoIterator<Item = &'a
         "{what}: unknown {name:?}; expected {}",
         expected.join(", ")
     ))
+}
+
+/// `values` of the argument `name` checked against `range` (the library's ranges of
+/// physical inputs, which the command line checks its flags against): the first outside it
+/// is an `InputError` with the range's message after the name, and `case i:` before it
+/// when the argument is one value per case (`scalar` false).
+pub fn plausible(name: &str, range: &'static Range, values: &[f64], scalar: bool) -> PyResult<()> {
+    for (i, &v) in values.iter().enumerate() {
+        if let Err(problem) = range.check(v) {
+            return Err(input(if scalar {
+                format!("{name}: {problem}")
+            } else {
+                format!("case {i}: {name}: {problem}")
+            }));
+        }
+    }
+    Ok(())
 }
 
 /// A number in a message as the library's messages write it (`70`, `0.5`, `NaN`).
@@ -116,8 +134,8 @@ pub fn scene_dict<'py>(py: Python<'py>, scene: &Scene) -> PyResult<Bound<'py, Py
     };
     let material = |m: &wheelrail::hertz::Material| -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        d.set_item("young_MPa", m.young_mpa)?;
-        d.set_item("poisson", m.poisson)?;
+        d.set_item("young_MPa", m.young_mpa())?;
+        d.set_item("poisson", m.poisson())?;
         Ok(d)
     };
     let layout = scene.layout();
@@ -147,7 +165,10 @@ pub fn scene_dict<'py>(py: Python<'py>, scene: &Scene) -> PyResult<Bound<'py, Py
     d.set_item("wheel_load_N", scene.wheel_load_n())?;
     d.set_item("wheel_material", material(scene.wheel_material())?)?;
     d.set_item("rail_material", material(scene.rail_material())?)?;
-    d.set_item("sweep_mm", PyArray1::from_slice(py, scene.sweep_mm()))?;
+    d.set_item(
+        "sweep_mm",
+        PyArray1::from_slice(py, scene.sweep().shifts_mm()),
+    )?;
     d.set_item("rigid_solver", scene.rigid_solver().name())?;
     let qe = scene.quasi_elastic();
     let quasi_elastic = PyDict::new(py);
@@ -158,16 +179,16 @@ pub fn scene_dict<'py>(py: Python<'py>, scene: &Scene) -> PyResult<Bound<'py, Py
     d.set_item("epsilon_sensitivity_mm", scene.epsilon_sensitivity_mm())?;
     let h = scene.hertz();
     let hertz = PyDict::new(py);
-    hertz.set_item("method", h.method.to_string())?;
-    hertz.set_item("contact", h.source.name())?;
-    hertz.set_item("normal_load", h.normal_load.name())?;
+    hertz.set_item("method", h.method().to_string())?;
+    hertz.set_item("contact", scene.hertz_contact().name())?;
+    hertz.set_item("normal_load", h.normal_load().name())?;
     d.set_item("hertz", hertz)?;
     let c = scene.conicity();
     let conicity = PyDict::new(py);
-    conicity.set_item("method", c.method.name())?;
-    conicity.set_item("amplitudes_mm", c.amplitudes_mm.clone())?;
+    conicity.set_item("method", c.method().name())?;
+    conicity.set_item("amplitudes_mm", c.amplitudes_mm())?;
     d.set_item("conicity", conicity)?;
-    d.set_item("conicity_limit", scene.fleet().conicity_limit)?;
+    d.set_item("conicity_limit", scene.fleet().conicity_limit())?;
     let figures: Vec<&str> = scene.figures().iter().map(|f| f.name()).collect();
     d.set_item("figures", figures)?;
     let formats: Vec<&str> = scene
@@ -232,7 +253,7 @@ impl ProfileArg<'_> {
             ProfileArg::Name(name) => match Profile::built_in(name) {
                 Some(p) if p.kind() == kind => Ok(ProfileData::BuiltIn(p)),
                 Some(p) => Err(input(format!("{arg}: {name} is a {} profile", p.kind()))),
-                None => Err(one_of(arg, name, wheelrail::profile::BUILT_IN)),
+                None => Err(one_of(arg, name, Profile::BUILT_IN)),
             },
             ProfileArg::Read(d) => {
                 if let Some(k) = d.get_item("kind")? {

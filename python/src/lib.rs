@@ -13,23 +13,26 @@
 mod convert;
 
 use convert::{
-    InputError, ProfileArg, Values, detached, input, number, one_of, scene_dict, table_dict,
-    text_array, to_vec,
+    InputError, ProfileArg, Values, detached, input, number, one_of, plausible, scene_dict,
+    table_dict, text_array, to_vec,
 };
 use numpy::{AllowTypeChange, PyArray1, PyArrayLike1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::path::{Path, PathBuf};
-use wheelrail::conicity::{self, DeltaR, Method as ConicityMethod};
-use wheelrail::fleet::{Fleet, Inputs, items_of_files, read_pairs};
-use wheelrail::hertz::{self, Contact, Material, Method as HertzMethod};
+use wheelrail::conicity::DeltaR;
+use wheelrail::fleet::{Fleet, FleetError, Inputs, items_of_files, read_pairs};
+use wheelrail::hertz::Contact;
 use wheelrail::outputs;
-use wheelrail::pipeline::{self, Stage};
-use wheelrail::profile::ProfileKind;
-use wheelrail::profile::read::{ReadOptions, StepBack, read_profile_with};
-use wheelrail::rigid::{self, Solver};
-use wheelrail::scene::Scene;
-use wheelrail::track::{Inclination, LayoutError, Placement, TrackLayout};
+use wheelrail::pipeline::Stage;
+use wheelrail::plausible;
+use wheelrail::prelude::{
+    ConicityMethod, ConicitySettings, EllipseMethod, Error, Inclination, Material, Placement,
+    ProfileKind, ReadOptions, Scene, Solver, StepBack, Sweep, TrackLayout, conicity, hertz,
+    pipeline, read_profile_with, rigid,
+};
+use wheelrail::sweep::SweepError;
+use wheelrail::track::LayoutError;
 
 /// The result of :func:`run`: the tables of every stage that ran and the checked scene.
 ///
@@ -37,9 +40,10 @@ use wheelrail::track::{Inclination, LayoutError, Placement, TrackLayout};
 /// ----------
 /// tables : dict[str, dict[str, numpy.ndarray]]
 ///     Each table of the report by the name of its CSV file without ``.csv``
-///     (``"rigid"``, ``"rigid_jumps"``, ``"quasi_elastic"``, ``"qe_epsilon"``,
-///     ``"hertz"``, ``"equivalent_conicity"``, ``"parameters"``, ``"wheel_profile"``,
-///     ``"rail_profile"``, ...), in the order the report writes them. A table maps its
+///     (``"wheel_profile"``, ``"rail_profile"``, ``"profile_dimensions"``, ``"rigid"``,
+///     ``"rigid_jumps"``, ``"quasi_elastic"``, ``"qe_epsilon"``, ``"hertz"``,
+///     ``"equivalent_conicity"``, ``"parameters"``, ``"creep"``, ``"contact_table"``,
+///     ...), in the order the report writes them. A table maps its
 ///     column names (units in the names) to arrays in column order: ``float64`` for
 ///     numbers (NaN where a value is undefined, the reason in a status column), ``str``
 ///     for text. ``pandas.DataFrame(run.tables["rigid"])`` takes it as it is.
@@ -77,8 +81,9 @@ impl Run {
 ///     The scene file (TOML); profile paths in it are relative to its folder.
 /// stages : sequence of str, optional
 ///     The stages to run (``"rigid"``, ``"quasi_elastic"``, ``"epsilon_sensitivity"``,
-///     ``"hertz"``, ``"equivalent_conicity"``, ``"hertz_accuracy"``) with the stages they
-///     need. Default: those the scene's figures need, as the report runs them.
+///     ``"hertz"``, ``"equivalent_conicity"``, ``"hertz_accuracy"``, ``"creep"``,
+///     ``"contact_table"``) with the stages they need. Default: those the scene's figures,
+///     ``[creep]`` and ``[table]`` need, as the report runs them.
 ///
 /// Returns
 /// -------
@@ -168,13 +173,11 @@ fn read_profile<'py>(
     drop_step_backs: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let kind = profile_kind(kind)?;
-    let options = ReadOptions {
-        step_back: if drop_step_backs {
-            StepBack::Drop
-        } else {
-            StepBack::Refuse
-        },
-    };
+    let options = ReadOptions::new(if drop_step_backs {
+        StepBack::Drop
+    } else {
+        StepBack::Refuse
+    });
     let profile = detached(py, move || read_profile_with(&path, kind, &options))?.map_err(input)?;
     let (lateral, vertical) = profile.columns();
     let [lateral_name, vertical_name] = convert::point_columns(kind);
@@ -275,15 +278,14 @@ fn rigid_sweep<'py>(
         input(format!("{key}: {e}"))
     })?;
     let rail_profile_inclination = parse("rail_profile_inclination", rail_profile_inclination)?;
-    let solver = match solver {
-        // Solver::name's name for NoRoll, which Solver::from_name does not read yet.
-        "no_roll" => Solver::NoRoll,
-        name => Solver::from_name(name)
-            .ok_or_else(|| one_of("solver", name, ["default", "paper", "no_roll"]))?,
-    };
-    let settings = conicity::Settings {
-        method: conicity_method_named(conicity_method)?,
-        amplitudes_mm: amplitudes_mm.map(|a| amplitudes(&a)).transpose()?,
+    let solver = Solver::from_name(solver)
+        .ok_or_else(|| one_of("solver", solver, ["default", "paper", "no_roll"]))?;
+    let settings = ConicitySettings::new(conicity_method_named(conicity_method)?);
+    let settings = match amplitudes_mm {
+        Some(a) => settings
+            .with_amplitudes_mm(amplitudes(&a)?)
+            .map_err(|e| input(format!("amplitudes_mm: {e}")))?,
+        None => settings,
     };
     let shifts = sweep(&shifts_mm)?;
     let wheel = wheel.points(ProfileKind::Wheel, "wheel")?;
@@ -376,16 +378,18 @@ fn equivalent_conicity<'py>(
 /// it (the exact method to machine precision, or the paper's numerics).
 ///
 /// Each of ``A_per_mm``, ``B_per_mm``, ``load_N`` is a float or a 1-D array; arrays have
-/// one length and floats apply to every case.
+/// one length and floats apply to every case. The inputs must lie in the command line's
+/// ranges (curvatures at most 1/mm in magnitude), checked in its order: load, modulus,
+/// Poisson's ratio, curvatures.
 ///
 /// Parameters
 /// ----------
 /// A_per_mm, B_per_mm : float or array_like
 ///     Relative curvatures in the rolling and the lateral direction (1/mm).
 /// load_N : float or array_like
-///     Normal load (N, > 0).
+///     Normal load (N, 1 N to 1 MN).
 /// young_GPa : float
-///     Young's modulus of both bodies (GPa).
+///     Young's modulus of both bodies (GPa, 1 to 1000).
 /// poisson : float
 ///     Poisson's ratio of both bodies, in [0, 0.5).
 /// method : {"exact", "paper"}
@@ -403,8 +407,9 @@ fn equivalent_conicity<'py>(
 /// Raises
 /// ------
 /// InputError
-///     A load not positive, a material out of range, a curvature not finite, arrays of
-///     different lengths.
+///     A load, material or curvature outside what a wheel and rail can be (the message of
+///     ``wheelrail hertz`` after the argument's name, ``case i:`` before it for arrays),
+///     arrays of different lengths.
 #[pyfunction]
 #[pyo3(signature = (A_per_mm, B_per_mm, load_N, young_GPa = 210.0, poisson = 0.3, method = "exact"))]
 #[allow(non_snake_case)] // the units of the names, as in the CLI's columns
@@ -417,13 +422,10 @@ fn hertz_ellipse<'py>(
     poisson: f64,
     method: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let method = [HertzMethod::Exact, HertzMethod::Paper]
+    let method = [EllipseMethod::Exact, EllipseMethod::Paper]
         .into_iter()
         .find(|m| m.to_string() == method)
         .ok_or_else(|| one_of("method", method, ["exact", "paper"]))?;
-    // GPa to MPa, as `wheelrail hertz` converts --young-gpa.
-    let material = Material::new(young_GPa * 1e3, poisson).map_err(input)?;
-    let e_star = hertz::effective_modulus(&material, &material);
     let cases = Values::broadcast([
         ("A_per_mm", &A_per_mm),
         ("B_per_mm", &B_per_mm),
@@ -431,6 +433,14 @@ fn hertz_ellipse<'py>(
     ])?;
     let scalar = cases.is_none();
     let [a, b, load] = cases.unwrap_or_else(|| [A_per_mm.one(), B_per_mm.one(), load_N.one()]);
+    plausible("load_N", &plausible::NORMAL_LOAD_N, &load, scalar)?;
+    plausible("young_GPa", &plausible::YOUNG_GPA, &[young_GPa], true)?;
+    plausible("poisson", &plausible::POISSON, &[poisson], true)?;
+    plausible("A_per_mm", &plausible::CURVATURE_PER_MM, &a, scalar)?;
+    plausible("B_per_mm", &plausible::CURVATURE_PER_MM, &b, scalar)?;
+    // GPa to MPa, as `wheelrail hertz` converts --young-gpa.
+    let material = Material::new(young_GPa * 1e3, poisson).map_err(input)?;
+    let e_star = hertz::effective_modulus(&material, &material);
     let contacts = detached(py, move || {
         (0..a.len())
             .map(|i| {
@@ -540,13 +550,12 @@ fn fleet<'py>(
             None => (items_of_files(&profiles, false), Inputs::Wheels),
         };
         if items.is_empty() {
-            return Err(wheelrail::Error::Other("no profiles to assess".into()));
+            return Err(FleetError::NoItems.into());
         }
         let fleet = Fleet::new(template, inputs, &items, false)?;
         let mut rows = Vec::with_capacity(items.len());
         fleet.assess_in_order(&items, |item| fleet.assess(item), |_, row| rows.push(row));
-        outputs::fleet::table(&fleet, &rows)
-            .map_err(|e| wheelrail::Error::Other(format!("internal error building the table: {e}")))
+        outputs::fleet::table(&fleet, &rows).map_err(Error::Table)
     })?
     .map_err(input)?;
     table_dict(py, table)
@@ -585,29 +594,32 @@ fn amplitudes(a: &PyArrayLike1<'_, f64, AllowTypeChange>) -> PyResult<Vec<f64>> 
     }
 }
 
-/// The shifts of a sweep, checked (finite, strictly increasing, at least one), since
-/// `rigid::search` takes them as given. (The library's checked `Sweep` of issue 31 takes
-/// this over when it lands.)
-fn sweep(shifts: &PyArrayLike1<'_, f64, AllowTypeChange>) -> PyResult<Vec<f64>> {
+/// The library's checked sweep of `shifts` (at least one, finite, strictly increasing),
+/// its error told by the index in the argument.
+fn sweep(shifts: &PyArrayLike1<'_, f64, AllowTypeChange>) -> PyResult<Sweep> {
     let shifts = to_vec(shifts);
-    if shifts.is_empty() {
-        return Err(input("shifts_mm: no shifts; expected at least one (mm)"));
-    }
-    if let Some(i) = shifts.iter().position(|v| !v.is_finite()) {
-        return Err(input(format!(
-            "shifts_mm: {} at index {i} is not finite",
-            number(shifts[i])
-        )));
-    }
-    if let Some(i) = shifts.windows(2).position(|w| w[1] <= w[0]) {
-        return Err(input(format!(
-            "shifts_mm: {} at index {} does not increase (index {i}: {})",
-            number(shifts[i + 1]),
-            i + 1,
-            number(shifts[i])
-        )));
-    }
-    Ok(shifts)
+    Sweep::from_slice(&shifts).map_err(|e| match e {
+        SweepError::Empty => input("shifts_mm: no shifts; expected at least one (mm)"),
+        SweepError::NotIncreasing {
+            index,
+            shift_mm,
+            previous_mm,
+        } => input(format!(
+            "shifts_mm: {} at index {index} does not increase (index {}: {})",
+            number(shift_mm),
+            index - 1,
+            number(previous_mm)
+        )),
+        // The first shift that is not finite (`Sweep::from_slice` checks them in order).
+        SweepError::NonFinite { value } => {
+            let i = shifts.iter().position(|v| !v.is_finite()).unwrap_or(0);
+            input(format!(
+                "shifts_mm: {} at index {i} is not finite",
+                number(value)
+            ))
+        }
+        other => input(format!("shifts_mm: {other}")),
+    })
 }
 
 /// Railway wheel/rail contact geometry and Hertzian contact (the Rust library wheelrail),

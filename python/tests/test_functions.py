@@ -52,13 +52,34 @@ def test_hertz_ellipse_takes_arrays_case_by_case():
             assert got[name] if name == "method" else got[name][i] == value
 
 
-def test_hertz_ellipse_errors_are_the_command_lines(cli):
-    done = cli("hertz", "--A", "1", "--B", "1", "--load", "-1", check=False)
+@pytest.mark.parametrize(
+    "flag, argument, value",
+    [
+        ("--load", "load_N", "-1"),
+        ("--load", "load_N", "0.07"),  # kN for N: the likely unit mistake is named
+        ("--young-gpa", "young_GPa", "210000"),
+        ("--poisson", "poisson", "0.5"),
+        ("--A", "A_per_mm", "1.5"),
+        ("--B", "B_per_mm", "nan"),
+    ],
+)
+def test_hertz_ellipse_errors_are_the_command_lines(flag, argument, value, cli):
+    # The same verdict in the same words, each after its own name of the argument.
+    args = {"--A": "0.001", "--B": "0.002", "--load": "1e5", "--young-gpa": "210", "--poisson": "0.3"}
+    args[flag] = value
+    done = cli("hertz", *[x for pair in args.items() for x in pair], check=False)
     assert done.returncode == 2
+    kwargs = {"A_per_mm": 0.001, "B_per_mm": 0.002, "load_N": 1e5, "young_GPa": 210.0, "poisson": 0.3}
+    kwargs[argument] = float(value)
     with pytest.raises(wheelrail.InputError) as raised:
-        wheelrail.hertz_ellipse(1.0, 1.0, -1.0)
-    assert done.stderr == f"error: {raised.value}\n"
-    with pytest.raises(wheelrail.InputError, match="case 1: "):
+        wheelrail.hertz_ellipse(**kwargs)
+    message = str(raised.value)
+    assert message.startswith(f"{argument}: ")
+    assert done.stderr == f"error: {flag}: {message.removeprefix(argument + ': ')}\n"
+
+
+def test_hertz_ellipse_errors_name_the_case_and_argument():
+    with pytest.raises(wheelrail.InputError, match="case 1: load_N: -1 N is not a wheel load"):
         wheelrail.hertz_ellipse(1.0, 1.0, [1.0, -1.0])
     with pytest.raises(wheelrail.InputError, match="B_per_mm: 3 values where A_per_mm has 2"):
         wheelrail.hertz_ellipse([1.0, 1.0], [1.0, 1.0, 1.0], 1.0)

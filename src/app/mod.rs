@@ -602,7 +602,7 @@ fn export_profile(name: &str, out: &Path, step_mm: f64) -> Result<ExitCode, Erro
     let profile = Profile::built_in(name).ok_or_else(|| {
         Error::Usage(format!(
             "unknown profile {name:?}; built-in profiles: {}",
-            crate::profile::Profile::BUILT_IN.join(", ")
+            Profile::BUILT_IN.join(", ")
         ))
     })?;
     if !(0.001..=5.0).contains(&step_mm) {

@@ -35,6 +35,7 @@
 
 use super::CreepError;
 use crate::hertz::NotHertzianReason;
+use std::ops::ControlFlow;
 
 /// How the solve ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,63 +85,123 @@ pub fn solve(
     contact_angle_rad: f64,
     tolerance: f64,
     max_iterations: u32,
-    mut lateral_force: impl FnMut(f64) -> Result<Result<f64, NotHertzianReason>, CreepError>,
+    lateral_force: impl FnMut(f64) -> Result<Result<f64, NotHertzianReason>, CreepError>,
 ) -> Result<Outcome, CreepError> {
-    let fz = vertical_load_n;
     let (sin_d, cos_d) = contact_angle_rad.sin_cos();
-    let mut iterations = 0u32;
-    let mut residual =
-        |fn_n: f64, iterations: &mut u32| -> Result<Result<f64, NotHertzianReason>, CreepError> {
-            *iterations += 1;
-            Ok(lateral_force(fn_n)?.map(|fy| fn_n * cos_d - fy * sin_d - fz))
-        };
-    let converged = |r: f64| r.abs() <= tolerance * fz;
-    let mut best = (f64::NAN, f64::INFINITY);
-    let track = |fn_n: f64, r: f64, best: &mut (f64, f64)| {
-        if r.abs() < best.1.abs() {
-            *best = (fn_n, r);
-        }
+    let mut f = Residual {
+        lateral_force,
+        fz: vertical_load_n,
+        sin_d,
+        cos_d,
+        tolerance,
+        max_iterations,
+        iterations: 0,
+        best: (f64::NAN, f64::INFINITY),
     };
-
-    let x0 = fz / cos_d;
-    let r0 = match residual(x0, &mut iterations)? {
+    let x0 = vertical_load_n / cos_d;
+    let r0 = match f.at(x0)? {
         Ok(r) => r,
         Err(reason) => return Ok(Outcome::NotHertzian(reason)),
     };
-    track(x0, r0, &mut best);
-    if converged(r0) {
-        return Ok(Outcome::Converged {
-            normal_force_n: x0,
-            iterations,
-        });
+    if f.converged(r0) {
+        return Ok(f.converged_at(x0));
     }
-    // The fixed-point step, then secant steps until the residual changes sign.
-    let (mut x_a, mut r_a) = (x0, r0);
-    let mut x_b = (x0 - r0 / cos_d).clamp(0.25 * x0, 4.0 * x0);
-    let mut r_b;
-    loop {
-        if iterations >= max_iterations {
-            return Ok(if best.0.is_finite() && x_b.is_finite() {
-                Outcome::IterationCap {
-                    normal_force_n: best.0,
-                }
-            } else {
-                Outcome::NoEquilibrium
-            });
+    match bracket(&mut f, x0, r0)? {
+        ControlFlow::Continue(ends) => illinois(&mut f, ends),
+        ControlFlow::Break(outcome) => Ok(outcome),
+    }
+}
+
+/// The residual `r(FN) = FN cos δ - Fy(FN) sin δ - FZ` of one solve, with its count of
+/// evaluations and the point of the smallest `|r|` so far.
+struct Residual<F> {
+    /// `Fy(FN)`, or why the patch has no ellipse at `FN`.
+    lateral_force: F,
+    /// The vertical load `FZ`, N.
+    fz: f64,
+    /// `sin δ` of the contact angle.
+    sin_d: f64,
+    /// `cos δ`.
+    cos_d: f64,
+    /// `|r| ≤ tolerance · FZ` converges.
+    tolerance: f64,
+    /// The cap on `iterations`.
+    max_iterations: u32,
+    /// Evaluations of the tangential model so far.
+    iterations: u32,
+    /// `(FN, r)` of the smallest `|r|` so far.
+    best: (f64, f64),
+}
+
+impl<F> Residual<F>
+where
+    F: FnMut(f64) -> Result<Result<f64, NotHertzianReason>, CreepError>,
+{
+    /// `r(fn_n)`, counted and kept if it is the best so far.
+    fn at(&mut self, fn_n: f64) -> Result<Result<f64, NotHertzianReason>, CreepError> {
+        self.iterations += 1;
+        let r = (self.lateral_force)(fn_n)?.map(|fy| fn_n * self.cos_d - fy * self.sin_d - self.fz);
+        if let Ok(r) = r
+            && r.abs() < self.best.1.abs()
+        {
+            self.best = (fn_n, r);
         }
-        r_b = match residual(x_b, &mut iterations)? {
+        Ok(r)
+    }
+
+    fn converged(&self, r: f64) -> bool {
+        r.abs() <= self.tolerance * self.fz
+    }
+
+    fn converged_at(&self, fn_n: f64) -> Outcome {
+        Outcome::Converged {
+            normal_force_n: fn_n,
+            iterations: self.iterations,
+        }
+    }
+
+    fn capped(&self) -> bool {
+        self.iterations >= self.max_iterations
+    }
+}
+
+/// Two normal forces `(x, r(x))` whose residuals differ in sign.
+type Bracket = ((f64, f64), (f64, f64));
+
+/// From `(x0, r0)`, the fixed-point step, then secant steps (each at most a factor 4 from
+/// the last point) until the residual changes sign: the bracket, or how the solve ended
+/// without one (converged on the way, not Hertzian, the cap, no equilibrium).
+fn bracket<F>(
+    f: &mut Residual<F>,
+    x0: f64,
+    r0: f64,
+) -> Result<ControlFlow<Outcome, Bracket>, CreepError>
+where
+    F: FnMut(f64) -> Result<Result<f64, NotHertzianReason>, CreepError>,
+{
+    let (mut x_a, mut r_a) = (x0, r0);
+    let mut x_b = (x0 - r0 / f.cos_d).clamp(0.25 * x0, 4.0 * x0);
+    loop {
+        if f.capped() {
+            return Ok(ControlFlow::Break(
+                if f.best.0.is_finite() && x_b.is_finite() {
+                    Outcome::IterationCap {
+                        normal_force_n: f.best.0,
+                    }
+                } else {
+                    Outcome::NoEquilibrium
+                },
+            ));
+        }
+        let r_b = match f.at(x_b)? {
             Ok(r) => r,
-            Err(reason) => return Ok(Outcome::NotHertzian(reason)),
+            Err(reason) => return Ok(ControlFlow::Break(Outcome::NotHertzian(reason))),
         };
-        track(x_b, r_b, &mut best);
-        if converged(r_b) {
-            return Ok(Outcome::Converged {
-                normal_force_n: x_b,
-                iterations,
-            });
+        if f.converged(r_b) {
+            return Ok(ControlFlow::Break(f.converged_at(x_b)));
         }
         if (r_a < 0.0) != (r_b < 0.0) {
-            break;
+            return Ok(ControlFlow::Continue(((x_a, r_a), (x_b, r_b))));
         }
         // Same sign: step on along the secant, at most a factor 4 from the last point, and
         // give up where no finite normal force is left to try.
@@ -153,31 +214,34 @@ pub fn solve(
             0.25 * x_b
         };
         if !(next.is_finite() && next > f64::MIN_POSITIVE && next < 1e300) {
-            return Ok(Outcome::NoEquilibrium);
+            return Ok(ControlFlow::Break(Outcome::NoEquilibrium));
         }
         (x_a, r_a) = (x_b, r_b);
         x_b = next;
         if x_b > 1e6 * x0 || x_b < 1e-6 * x0 {
             // Six orders of magnitude without a sign change: the residual keeps its sign
             // (no equilibrium); a real root is within a factor 1/(1 - μ tan|δ|) of x0.
-            return Ok(Outcome::NoEquilibrium);
+            return Ok(ControlFlow::Break(Outcome::NoEquilibrium));
         }
     }
-    // Illinois: regula falsi, halving the weight of an end kept twice in a row.
-    let (mut lo, mut r_lo, mut hi, mut r_hi) = (x_a, r_a, x_b, r_b);
+}
+
+/// The Illinois variant of regula falsi on `bracket`: halving the weight of an end kept
+/// twice in a row, until the residual converges or the bracket is a few ulps wide.
+fn illinois<F>(f: &mut Residual<F>, bracket: Bracket) -> Result<Outcome, CreepError>
+where
+    F: FnMut(f64) -> Result<Result<f64, NotHertzianReason>, CreepError>,
+{
+    let ((mut lo, mut r_lo), (mut hi, mut r_hi)) = bracket;
     let mut kept: i8 = 0;
-    while iterations < max_iterations {
+    while !f.capped() {
         let x = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
-        let r = match residual(x, &mut iterations)? {
+        let r = match f.at(x)? {
             Ok(r) => r,
             Err(reason) => return Ok(Outcome::NotHertzian(reason)),
         };
-        track(x, r, &mut best);
-        if converged(r) || (hi - lo).abs() <= 4.0 * f64::EPSILON * x.abs() {
-            return Ok(Outcome::Converged {
-                normal_force_n: x,
-                iterations,
-            });
+        if f.converged(r) || (hi - lo).abs() <= 4.0 * f64::EPSILON * x.abs() {
+            return Ok(f.converged_at(x));
         }
         if (r < 0.0) == (r_lo < 0.0) {
             (lo, r_lo) = (x, r);
@@ -194,7 +258,7 @@ pub fn solve(
         }
     }
     Ok(Outcome::IterationCap {
-        normal_force_n: best.0,
+        normal_force_n: f.best.0,
     })
 }
 

@@ -626,22 +626,21 @@ mod tests {
         }
     }
 
-    /// A wheel whose profile is a circular arc of radius 100 mm about the taping line (a
-    /// torus) on a rail whose head is a plane falling 1:10 towards the field side, both as
-    /// point profiles, on a track without inclination. The rail's normal is fixed, so the
-    /// point of contact follows from the tangent plane alone: the rolled outline's slope
-    /// `atan(m) + phi` equals the plane's, `m = -q / (cos psi w)` gives the profile slope
-    /// `q = -M cos psi / sqrt(1 + M^2 sin^2 psi)` (`M = tan(atan(Z') - phi)`), and the arc
-    /// the point `s = -q R / sqrt(1 + q^2)`, its radius, lead `-r q tan psi` (close to
-    /// `r tan(delta) psi`) and x. The gap's minimum lands there to the arc's sampling
-    /// (1e-9 mm in `s`), at shifts, rolls and yaws up to 30 mrad either way.
-    #[test]
-    fn an_arc_wheel_on_a_plane_touches_where_the_tangent_planes_agree() {
-        use crate::gap::{PoseBox, Scanned, SideGap, SidePose};
+    /// The radius of the arc wheel's profile, mm.
+    const ARC_RADIUS_MM: f64 = 100.0;
+    /// The nominal radius of the arc wheel, mm.
+    const ARC_NOMINAL_RADIUS_MM: f64 = 460.0;
+    /// The slope of the plane rail's head (falling 1:10 towards the field side).
+    const PLANE_SLOPE: f64 = -0.1;
+
+    /// A wheel whose profile is a circular arc of [`ARC_RADIUS_MM`] about the taping line (a
+    /// torus) on a rail whose head is a plane of slope [`PLANE_SLOPE`], both as point
+    /// profiles (the arc sampled every 0.1 mm), on a track without inclination.
+    fn arc_wheel_on_a_plane() -> crate::track::SidePair {
         use crate::profile::ProfileKind;
         use crate::profile::read::PointProfile;
         use crate::track::{PlacedRail, SidePair};
-        let radius: f64 = 100.0;
+        let radius = ARC_RADIUS_MM;
         let arc: Vec<[f64; 2]> = (-400..=400)
             .map(|k| {
                 let s = 0.1 * f64::from(k);
@@ -654,16 +653,47 @@ mod tests {
         let wheel = PointProfile::from_points(ProfileKind::Wheel, "arc R100", arc).unwrap();
         let rail = PointProfile::from_points(ProfileKind::Rail, "plane 1:10", plane).unwrap();
         let layout = TrackLayout::standard(Inclination::VERTICAL);
-        let pair = SidePair::new(
-            PlacedWheel::place(Profile::from_points(wheel, 0.0).unwrap(), 460.0, &layout).unwrap(),
+        SidePair::new(
+            PlacedWheel::place(
+                Profile::from_points(wheel, 0.0).unwrap(),
+                ARC_NOMINAL_RADIUS_MM,
+                &layout,
+            )
+            .unwrap(),
             PlacedRail::place(
                 Profile::from_points(rail, 0.0).unwrap(),
                 Inclination::VERTICAL,
                 &layout,
             )
             .unwrap(),
-        );
-        let rail_slope: f64 = -0.1;
+        )
+    }
+
+    /// The closed-form contact of [`arc_wheel_on_a_plane`] at roll `phi` (track frame) and
+    /// yaw `psi`: the profile coordinate `s`, the rolling radius `r` there and the lead.
+    /// The rail's normal is fixed, so the point of contact follows from the tangent plane
+    /// alone: the rolled outline's slope `atan(m) + phi` equals the plane's,
+    /// `m = -q / (cos psi w)` gives the profile slope
+    /// `q = -M cos psi / sqrt(1 + M^2 sin^2 psi)` (`M = tan(atan(Z') - phi)`), and the arc
+    /// the point `s = -q R / sqrt(1 + q^2)`, its radius, and the lead `-r q tan psi`.
+    fn arc_on_plane_contact(phi: f64, psi: f64) -> (f64, f64, f64) {
+        let radius = ARC_RADIUS_MM;
+        let m = (PLANE_SLOPE.atan() - phi).tan();
+        let (sn, cs) = psi.sin_cos();
+        let q = -m * cs / (1.0 + m * m * sn * sn).sqrt();
+        let s = -q * radius / (1.0 + q * q).sqrt();
+        let r = ARC_NOMINAL_RADIUS_MM + (radius * radius - s * s).sqrt() - radius;
+        (s, r, -r * q * psi.tan())
+    }
+
+    /// The arc wheel on the plane rail ([`arc_wheel_on_a_plane`]): the gap's minimum lands
+    /// on the closed-form contact ([`arc_on_plane_contact`]) to the arc's sampling (1e-9 mm
+    /// in `s`), with its lead (close to `r tan(delta) psi`), at shifts, rolls and yaws up to
+    /// 30 mrad either way.
+    #[test]
+    fn an_arc_wheel_on_a_plane_touches_where_the_tangent_planes_agree() {
+        use crate::gap::{PoseBox, Scanned, SideGap, SidePose};
+        let pair = arc_wheel_on_a_plane();
         let mut checked = 0;
         for sign in [1.0, -1.0] {
             for psi in [0.01, 0.03, -0.02] {
@@ -686,12 +716,7 @@ mod tests {
                             .min_by(|a, b| a.g.total_cmp(&b.g))
                             .unwrap();
                         let phi = sign * roll;
-                        let m = (rail_slope.atan() - phi).tan();
-                        let (sn, cs) = yaw.psi().sin_cos();
-                        let q = -m * cs / (1.0 + m * m * sn * sn).sqrt();
-                        let s_exact = -q * radius / (1.0 + q * q).sqrt();
-                        let r = 460.0 + (radius * radius - s_exact * s_exact).sqrt() - radius;
-                        let lead = -r * q * yaw.psi().tan();
+                        let (s_exact, r, lead) = arc_on_plane_contact(phi, yaw.psi());
                         let at = format!("sign {sign} psi {psi} y {y_ws} roll {roll}");
                         assert!((p.s - s_exact).abs() < 1e-9, "{at}: s {} vs {s_exact}", p.s);
                         let base = side.wheel().at(p.s);
@@ -702,11 +727,11 @@ mod tests {
                         );
                         // The contact angle in the track frame is the plane's.
                         assert!(
-                            (p.wheel.slope.atan() + phi - rail_slope.atan()).abs() < 1e-10,
+                            (p.wheel.slope.atan() + phi - PLANE_SLOPE.atan()).abs() < 1e-10,
                             "{at}"
                         );
                         // Within a few per mille of the small-angle estimate r tan(delta) psi.
-                        let estimate = r * (rail_slope.atan() - phi).tan().abs() * yaw.psi();
+                        let estimate = r * (PLANE_SLOPE.atan() - phi).tan().abs() * yaw.psi();
                         assert!(
                             (lead.abs() - estimate.abs()).abs() <= 2e-3 * estimate.abs(),
                             "{at}"

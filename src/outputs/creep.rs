@@ -26,49 +26,7 @@ struct Row {
 /// # Errors
 /// [`TableError`] only if the columns were built inconsistently (a bug).
 pub fn creep(c: &CreepSweep) -> Result<Table, TableError> {
-    let mut rows = Vec::new();
-    for p in c.positions() {
-        for side in [Side::Left, Side::Right] {
-            let s = p.side(side);
-            if s.patches.is_empty() {
-                rows.push(Row {
-                    y_ws: p.y_ws,
-                    yaw: p.yaw,
-                    side,
-                    patch: String::new(),
-                    delta: f64::NAN,
-                    lead: f64::NAN,
-                    numbers: [f64::NAN; 8],
-                    status: s.missing.clone(),
-                });
-            }
-            for row in &s.patches {
-                let numbers = match &row.forces {
-                    Ok(f) => [
-                        f.creepages.xi,
-                        f.creepages.eta,
-                        f.creepages.phi_per_mm,
-                        f.normal_force_n,
-                        f.tangential.fx_n,
-                        f.tangential.fy_n,
-                        f.tangential.mz_nmm,
-                        f.tangential.adhesion_fraction,
-                    ],
-                    Err(_) => [f64::NAN; 8],
-                };
-                rows.push(Row {
-                    y_ws: p.y_ws,
-                    yaw: p.yaw,
-                    side,
-                    patch: row.patch.to_string(),
-                    delta: row.point.contact_angle_rad,
-                    lead: row.point.lead_mm,
-                    numbers,
-                    status: row.status(),
-                });
-            }
-        }
-    }
+    let rows = rows(c);
     let settings = c.settings();
     let k = c.kinematics();
     let pitch = match &k.pitch_rate {
@@ -122,6 +80,55 @@ pub fn creep(c: &CreepSweep) -> Result<Table, TableError> {
     }
     t.text("status", rows.iter().map(|r| r.status.clone()))
         .build()
+}
+
+/// The rows of `creep.csv`: per position and wheel, one row per patch, or one row with
+/// NaN numbers and the reason when the wheel has none.
+fn rows(c: &CreepSweep) -> Vec<Row> {
+    let mut rows = Vec::new();
+    for p in c.positions() {
+        for side in [Side::Left, Side::Right] {
+            let s = p.side(side);
+            if s.patches.is_empty() {
+                rows.push(Row {
+                    y_ws: p.y_ws,
+                    yaw: p.yaw,
+                    side,
+                    patch: String::new(),
+                    delta: f64::NAN,
+                    lead: f64::NAN,
+                    numbers: [f64::NAN; 8],
+                    status: s.missing.clone(),
+                });
+            }
+            for row in &s.patches {
+                let numbers = match &row.forces {
+                    Ok(f) => [
+                        f.creepages.xi,
+                        f.creepages.eta,
+                        f.creepages.phi_per_mm,
+                        f.normal_force_n,
+                        f.tangential.fx_n,
+                        f.tangential.fy_n,
+                        f.tangential.mz_nmm,
+                        f.tangential.adhesion_fraction,
+                    ],
+                    Err(_) => [f64::NAN; 8],
+                };
+                rows.push(Row {
+                    y_ws: p.y_ws,
+                    yaw: p.yaw,
+                    side,
+                    patch: row.patch.to_string(),
+                    delta: row.point.contact_angle_rad,
+                    lead: row.point.lead_mm,
+                    numbers,
+                    status: row.status(),
+                });
+            }
+        }
+    }
+    rows
 }
 
 /// The contact table (`contact_table.csv`): one row per yaw and shift, per wheel the rigid

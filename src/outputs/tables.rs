@@ -380,38 +380,7 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
         t = t.numeric("yaw_rad", yaws);
     }
     for side in [Side::Left, Side::Right] {
-        let name = side.name();
-        let main = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
-            q.positions()
-                .iter()
-                .map(|p| p.side(side).main().map_or(f64::NAN, f))
-                .collect()
-        };
-        let second = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
-            q.positions()
-                .iter()
-                .map(|p| p.side(side).second().map_or(f64::NAN, f))
-                .collect()
-        };
-        let points: Vec<ContactPoint> = q
-            .positions()
-            .iter()
-            .map(|p| p.side(side).main().map_or(ContactPoint::NAN, |c| c.point()))
-            .collect();
-        t = contact_columns(t, side, &points, RailSlopeColumn::Omitted, yaw.is_yawed())
-            .numeric(format!("{name}_weight_share"), main(&|c| c.weight_share))
-            .numeric(
-                format!("{name}_patches"),
-                q.positions()
-                    .iter()
-                    .map(|p| p.side(side).patches.len() as f64)
-                    .collect::<Vec<_>>(),
-            )
-            .numeric(format!("{name}_second_s_mm"), second(&|c| c.s))
-            .numeric(
-                format!("{name}_second_weight_share"),
-                second(&|c| c.weight_share),
-            );
+        t = quasi_elastic_side_columns(t, q, side, yaw.is_yawed());
     }
     let r = |p: &crate::quasi_elastic::QuasiElasticPosition, k: usize| {
         p.sides[k].main().map_or(f64::NAN, |c| c.r)
@@ -423,29 +392,72 @@ pub fn quasi_elastic(q: &QuasiElasticSweep) -> Result<Table, TableError> {
             .map(|p| r(p, 0) - r(p, 1))
             .collect::<Vec<_>>(),
     )
-    .text(
-        "status",
-        q.positions().iter().map(|p| {
-            let missing: Vec<&str> = [Side::Left, Side::Right]
-                .into_iter()
-                .filter(|&side| p.side(side).main().is_none_or(|c| !c.is_finite()))
-                .map(Side::name)
-                .collect();
-            if p.rigid_stop != Stop::Converged {
-                format!("rigid search: {}", p.rigid_stop.status_text())
-            } else if !missing.is_empty() {
-                format!(
-                    "no patch: {} (wheel not above its rail)",
-                    missing.join(", ")
-                )
-            } else if p.sides.iter().any(|s| s.patches.len() > 1) {
-                "ok; two patches".to_string()
-            } else {
-                "ok".to_string()
-            }
-        }),
-    )
+    .text("status", q.positions().iter().map(quasi_elastic_status))
     .build()
+}
+
+/// The columns of one wheel in `quasi_elastic.csv`: the contact point of its heaviest
+/// patch, that patch's weight share, the number of patches and the second patch.
+fn quasi_elastic_side_columns(
+    t: TableBuilder,
+    q: &QuasiElasticSweep,
+    side: Side,
+    yawed: bool,
+) -> TableBuilder {
+    let name = side.name();
+    let main = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
+        q.positions()
+            .iter()
+            .map(|p| p.side(side).main().map_or(f64::NAN, f))
+            .collect()
+    };
+    let second = |f: &dyn Fn(&crate::quasi_elastic::Patch) -> f64| -> Vec<f64> {
+        q.positions()
+            .iter()
+            .map(|p| p.side(side).second().map_or(f64::NAN, f))
+            .collect()
+    };
+    let points: Vec<ContactPoint> = q
+        .positions()
+        .iter()
+        .map(|p| p.side(side).main().map_or(ContactPoint::NAN, |c| c.point()))
+        .collect();
+    contact_columns(t, side, &points, RailSlopeColumn::Omitted, yawed)
+        .numeric(format!("{name}_weight_share"), main(&|c| c.weight_share))
+        .numeric(
+            format!("{name}_patches"),
+            q.positions()
+                .iter()
+                .map(|p| p.side(side).patches.len() as f64)
+                .collect::<Vec<_>>(),
+        )
+        .numeric(format!("{name}_second_s_mm"), second(&|c| c.s))
+        .numeric(
+            format!("{name}_second_weight_share"),
+            second(&|c| c.weight_share),
+        )
+}
+
+/// The `status` of one position in `quasi_elastic.csv`: the rigid search's stop where it
+/// did not converge, the wheels without a patch, or whether a wheel has two patches.
+fn quasi_elastic_status(p: &crate::quasi_elastic::QuasiElasticPosition) -> String {
+    let missing: Vec<&str> = [Side::Left, Side::Right]
+        .into_iter()
+        .filter(|&side| p.side(side).main().is_none_or(|c| !c.is_finite()))
+        .map(Side::name)
+        .collect();
+    if p.rigid_stop != Stop::Converged {
+        format!("rigid search: {}", p.rigid_stop.status_text())
+    } else if !missing.is_empty() {
+        format!(
+            "no patch: {} (wheel not above its rail)",
+            missing.join(", ")
+        )
+    } else if p.sides.iter().any(|s| s.patches.len() > 1) {
+        "ok; two patches".to_string()
+    } else {
+        "ok".to_string()
+    }
 }
 
 /// The quasi-elastic contact location for each sensitivity eps (`qe_epsilon.csv`).

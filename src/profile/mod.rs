@@ -86,8 +86,8 @@ pub struct Profile {
 }
 
 impl Profile {
-    /// Names of the built-in profiles accepted in scenes and by `wheelrail profile`
-    /// ([`Profile::built_in`]).
+    /// The names of the built-in profiles, as scenes, `wheelrail profile` and
+    /// [`Profile::built_in`] accept them (which also reads `UIC60` and `60E1`, any case).
     pub const BUILT_IN: [&'static str; 2] = ["S1002", "UIC60E1"];
 
     /// The S1002 wheel (EN 13715, 28 mm flange height, 32.5 mm flange thickness).
@@ -348,6 +348,24 @@ pub fn convex_curvature(d1: f64, d2: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every listed built-in name reads as the profile of that name; the aliases and any
+    /// case read too, an unknown name does not.
+    #[test]
+    fn the_built_in_names_are_the_profiles_names() {
+        for name in Profile::BUILT_IN {
+            assert_eq!(
+                Profile::built_in(name)
+                    .map(|p| p.name().to_string())
+                    .as_deref(),
+                Some(name)
+            );
+        }
+        for alias in ["uic60", "60e1", "s1002"] {
+            assert!(Profile::built_in(alias).is_some(), "{alias}");
+        }
+        assert!(Profile::built_in("S1003").is_none());
+    }
 
     /// S1002 and UIC60, and both sampled every 0.25 mm (joints included) and fitted by an
     /// interpolating spline.

@@ -4,11 +4,14 @@
 //! caller (the pipeline's outer layer) writes the files. The module knows no physics; it offers
 //!
 //! * [`table`]: named numeric/text columns and their CSV form ([`Table`]);
-//! * [`golden`]: column-by-column comparison of tables with stated tolerances ([`compare`],
-//!   [`compare_files`]);
-//! * [`chart`]: a declarative chart model rendered to SVG and PNG ([`render_svg`],
-//!   [`render_png`]);
-//! * [`html`]: a static, self-contained report page ([`render_html`]).
+//!
+//! and with the feature `cli` (default):
+//!
+//! * `golden`: column-by-column comparison of tables with stated tolerances (`compare`,
+//!   `compare_files`);
+//! * `chart`: a declarative chart model rendered to SVG and PNG (`render_svg`,
+//!   `render_png`);
+//! * `html`: a static, self-contained report page (`render_html`).
 //!
 //! # Examples
 //!

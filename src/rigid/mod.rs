@@ -286,7 +286,7 @@ pub struct RigidSweep {
 
 impl RigidSweep {
     /// The yaw of the wheelset along the sweep (the positions' own in
-    /// [`Position::yaw`]).
+    /// [`RigidPosition::yaw`]).
     pub fn yaw(&self) -> &YawRule {
         &self.yaw
     }

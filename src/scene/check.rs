@@ -47,17 +47,7 @@ struct ProfileRefs {
 /// Every key of `raw` checked and converted (see [`Scene::from_toml`]); the offending key
 /// and a message otherwise.
 pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene, Invalid> {
-    let name = raw.name.clone().unwrap_or_else(|| "scene".into());
-    if name.is_empty()
-        || !name
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
-    {
-        return Err(invalid(
-            "name",
-            format!("{name:?} must be non-empty and use only letters, digits, '-' and '_'"),
-        ));
-    }
+    let name = scene_name(raw)?;
     let title = raw.title.clone().unwrap_or_else(|| name.clone());
     let ProfileRefs {
         wheels: wheel_profiles,
@@ -77,10 +67,11 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         &rail_material,
     )?;
     let asks_for_creep = raw.creep.is_some();
-    let contact_table = match &raw.table {
-        Some(t) => Some(super::creep::table(t, sweep.yaw().model())?),
-        None => None,
-    };
+    let contact_table = raw
+        .table
+        .as_ref()
+        .map(|t| super::creep::table(t, sweep.yaw().model()))
+        .transpose()?;
     let rigid_solver = rigid_solver(raw)?;
     let (quasi_elastic, epsilon_sensitivity_mm) = quasi_elastic(raw)?;
     let (hertz, hertz_contact) = hertz(raw)?;
@@ -126,6 +117,22 @@ pub(super) fn checked(raw: &RawScene, origin: &str, dir: &Path) -> Result<Scene,
         asks_for_creep,
         contact_table,
     })
+}
+
+/// The scene's `name` ("scene" when missing): non-empty, of letters, digits, '-' and '_'.
+fn scene_name(raw: &RawScene) -> Result<String, Invalid> {
+    let name = raw.name.clone().unwrap_or_else(|| "scene".into());
+    if name.is_empty()
+        || !name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_')
+    {
+        return Err(invalid(
+            "name",
+            format!("{name:?} must be non-empty and use only letters, digits, '-' and '_'"),
+        ));
+    }
+    Ok(name)
 }
 
 /// A profile named in a scene: a built-in name, or a path relative to the scene's folder.

@@ -28,14 +28,43 @@ pub const PITCH_RADIUS_RANGE_MM: (f64, f64) = (100.0, 1000.0);
 /// The settings of `[creep]` (defaults where a key is missing), or the offending key.
 /// `positions` is the sweep's length (a list of pitch rates has one per position); `wheel`
 /// and `rail` are the scene's materials, combined as Kalker combines two elastically
-/// different bodies: `G = 2 G1 G2 / (G1 + G2)`, `ν = G (ν1/G1 + ν2/G2) / 2` (equal bodies
-/// keep theirs).
+/// different bodies (`model`).
 pub(super) fn creep(
     raw: &RawCreep,
     positions: usize,
     wheel: &Material,
     rail: &Material,
 ) -> Result<StageSettings, Invalid> {
+    let speed_m_s = speed(raw)?;
+    let speed_mm_s = speed_m_s * MM_PER_M;
+    let (settings, contact) = model(raw, wheel, rail)?;
+    let lateral_velocity_mm_s = bounded(
+        "creep.lateral_velocity_mm_s",
+        raw.lateral_velocity_mm_s.unwrap_or(0.0),
+        MAX_LATERAL_VELOCITY_MM_S,
+        "mm/s",
+    )?;
+    let yaw_rate_rad_s = bounded(
+        "creep.yaw_rate_rad_s",
+        raw.yaw_rate_rad_s.unwrap_or(0.0),
+        MAX_YAW_RATE_RAD_S,
+        "rad/s",
+    )?;
+    let pitch_rate = pitch_rate(raw, positions, speed_m_s)?;
+    Ok(StageSettings {
+        settings,
+        kinematics: Kinematics {
+            speed_mm_s,
+            pitch_rate,
+            lateral_velocity_mm_s,
+            yaw_rate_rad_s,
+        },
+        contact,
+    })
+}
+
+/// `creep.speed_m_s` (m/s), within [`SPEED_RANGE_M_S`].
+fn speed(raw: &RawCreep) -> Result<f64, Invalid> {
     let speed_m_s = raw
         .speed_m_s
         .unwrap_or(crate::creep::sweep::DEFAULT_SPEED_MM_S / MM_PER_M);
@@ -50,7 +79,18 @@ pub(super) fn creep(
             ),
         ));
     }
-    let speed_mm_s = speed_m_s * MM_PER_M;
+    Ok(speed_m_s)
+}
+
+/// The tangential model (`creep.method`, `creep.bound`, `creep.friction`) on the scene's
+/// materials, and the contacts it acts on (`creep.contact`). The wheel's and the rail's
+/// materials combine as Kalker combines two elastically different bodies:
+/// `G = 2 G1 G2 / (G1 + G2)`, `ν = G (ν1/G1 + ν2/G2) / 2` (equal bodies keep theirs).
+fn model(
+    raw: &RawCreep,
+    wheel: &Material,
+    rail: &Material,
+) -> Result<(Settings, ContactSource), Invalid> {
     let method = match raw.method.as_deref() {
         None | Some("fastsim") => Method::Fastsim,
         Some("linear") => Method::Linear,
@@ -97,31 +137,28 @@ pub(super) fn creep(
             (key, e.to_string())
         })?
         .with_bound(bound);
-    let bounded = |key: &'static str, v: f64, max: f64, unit: &str| -> Result<f64, Invalid> {
-        if v.is_finite() && v.abs() <= max {
-            Ok(v)
-        } else {
-            Err((
-                key,
-                format!("{} {unit}: expected -{max} to {max} {unit}", Number(v)),
-            ))
-        }
-    };
-    let lateral_velocity_mm_s = bounded(
-        "creep.lateral_velocity_mm_s",
-        raw.lateral_velocity_mm_s.unwrap_or(0.0),
-        MAX_LATERAL_VELOCITY_MM_S,
-        "mm/s",
-    )?;
-    let yaw_rate_rad_s = bounded(
-        "creep.yaw_rate_rad_s",
-        raw.yaw_rate_rad_s.unwrap_or(0.0),
-        MAX_YAW_RATE_RAD_S,
-        "rad/s",
-    )?;
-    let pitch_rate = match &raw.pitch_rate_rad_s {
-        None => PitchRate::FreeRolling,
-        Some(OneOrMany::One(rate)) => PitchRate::Given(vec![*rate; positions]),
+    Ok((settings, contact))
+}
+
+/// `v` if it is finite and within `±max` (in `unit`), or `key` with why not.
+fn bounded(key: &'static str, v: f64, max: f64, unit: &str) -> Result<f64, Invalid> {
+    if v.is_finite() && v.abs() <= max {
+        Ok(v)
+    } else {
+        Err((
+            key,
+            format!("{} {unit}: expected -{max} to {max} {unit}", Number(v)),
+        ))
+    }
+}
+
+/// `creep.pitch_rate_rad_s`: free rolling when missing, else one rate for every position
+/// or one per position, each rolling a wheel of a radius in [`PITCH_RADIUS_RANGE_MM`] at
+/// `speed_m_s`.
+fn pitch_rate(raw: &RawCreep, positions: usize, speed_m_s: f64) -> Result<PitchRate, Invalid> {
+    let rates = match &raw.pitch_rate_rad_s {
+        None => return Ok(PitchRate::FreeRolling),
+        Some(OneOrMany::One(rate)) => vec![*rate; positions],
         Some(OneOrMany::Many(rates)) => {
             if rates.len() != positions {
                 return Err((
@@ -132,37 +169,27 @@ pub(super) fn creep(
                     ),
                 ));
             }
-            PitchRate::Given(rates.clone())
+            rates.clone()
         }
     };
-    if let PitchRate::Given(rates) = &pitch_rate {
-        let (lo, hi) = PITCH_RADIUS_RANGE_MM;
-        for (i, &rate) in rates.iter().enumerate() {
-            let radius = speed_mm_s / rate;
-            if !(rate.is_finite() && rate > 0.0 && (lo..=hi).contains(&radius)) {
-                return Err((
-                    "creep.pitch_rate_rad_s",
-                    format!(
-                        "{} rad/s (position {}) at {} m/s rolls a wheel of {} mm; expected a positive rate (forward rolling) of a radius from {lo} to {hi} mm",
-                        Number(rate),
-                        i + 1,
-                        Number(speed_m_s),
-                        Number(radius)
-                    ),
-                ));
-            }
+    let speed_mm_s = speed_m_s * MM_PER_M;
+    let (lo, hi) = PITCH_RADIUS_RANGE_MM;
+    for (i, &rate) in rates.iter().enumerate() {
+        let radius = speed_mm_s / rate;
+        if !(rate.is_finite() && rate > 0.0 && (lo..=hi).contains(&radius)) {
+            return Err((
+                "creep.pitch_rate_rad_s",
+                format!(
+                    "{} rad/s (position {}) at {} m/s rolls a wheel of {} mm; expected a positive rate (forward rolling) of a radius from {lo} to {hi} mm",
+                    Number(rate),
+                    i + 1,
+                    Number(speed_m_s),
+                    Number(radius)
+                ),
+            ));
         }
     }
-    Ok(StageSettings {
-        settings,
-        kinematics: Kinematics {
-            speed_mm_s,
-            pitch_rate,
-            lateral_velocity_mm_s,
-            yaw_rate_rad_s,
-        },
-        contact,
-    })
+    Ok(PitchRate::Given(rates))
 }
 
 /// The grid of `[table]`, or the offending key. Every key is required: a table's extent is
