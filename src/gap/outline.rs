@@ -428,7 +428,10 @@ impl OutlineBase {
         }
         let mut last = middle;
         while last < n {
-            if last.is_multiple_of(SCAN_BLOCK) && last + SCAN_BLOCK <= n && block_ok(last / SCAN_BLOCK) {
+            if last.is_multiple_of(SCAN_BLOCK)
+                && last + SCAN_BLOCK <= n
+                && block_ok(last / SCAN_BLOCK)
+            {
                 last += SCAN_BLOCK;
             } else if cell_ok(last) {
                 last += 1;

@@ -211,12 +211,34 @@ impl Position {
     }
 
     /// Rolling radius difference `r_left - r_right` (mm); NaN unless both wheels touch and
-    /// the iteration converged.
+    /// the iteration converged; 0 where it is smaller than [`DELTA_R_RESOLUTION_MM`].
     pub fn delta_r(&self) -> f64 {
         match self.contact {
-            [Some(l), Some(r)] if self.stop == Stop::Converged => l.r - r.r,
+            [Some(l), Some(r)] if self.stop == Stop::Converged => resolved_delta_r(l.r - r.r),
             _ => f64::NAN,
         }
+    }
+}
+
+/// The resolution of a rolling radius difference (mm): a Δr smaller than this is 0.
+///
+/// Each rolling radius is `r0 + F(s)` with `r0` of 300 to 600 mm, so two radii that are
+/// equal in exact arithmetic differ by a few units of the last place of `r0` (6e-14 mm at
+/// 460 mm): on a cylindrical band (EN 15302 case E4, wheel R-UIC519I) Δr is ±6e-13 mm
+/// instead of 0, and the signs of that noise would make equilibria and turning points of
+/// the kinematic motion out of nothing. 1e-9 mm is four orders of magnitude above that
+/// rounding and cannot hide a real slope: a Δr of 1e-9 mm at a shift of 0.01 mm is a
+/// conicity of 5e-8, five orders of magnitude below the 1e-3 to which `tan γe` is quoted
+/// and judged (EN 15302 Annex F), and a real cone's Δr exceeds it at every sweep position
+/// off the centre.
+pub const DELTA_R_RESOLUTION_MM: f64 = 1e-9;
+
+/// `delta_r` (mm), or 0 where it is smaller than [`DELTA_R_RESOLUTION_MM`] (NaN stays NaN).
+pub fn resolved_delta_r(delta_r: f64) -> f64 {
+    if delta_r.abs() < DELTA_R_RESOLUTION_MM {
+        0.0
+    } else {
+        delta_r
     }
 }
 

@@ -120,10 +120,7 @@ pub(crate) fn contact_points(placement: &Placement, sweep: &RigidSweep) -> Figur
 
 /// Rolling radius difference against the shift (paper Fig. 2).
 pub(crate) fn rolling_radius(sweep: &RigidSweep) -> Figure {
-    let dr = |p: &Position| match p.contact {
-        [Some(l), Some(r)] => l.r - r.r,
-        _ => f64::NAN,
-    };
+    let dr = |p: &Position| p.delta_r();
     Figure::single(with_onsets(
         Chart::new(
             "Rolling radius difference",
