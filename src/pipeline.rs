@@ -288,7 +288,9 @@ fn run_recorded(
                     .rigid
                     .as_ref()
                     .expect("rigid runs before the equivalent conicity");
-                let c = record.time(stage, || conicity::assess(rigid, &scene.conicity));
+                let c = record.time(stage, || {
+                    conicity::assess_on(&results.placement, rigid, &scene.conicity)
+                });
                 results.conicity = Some(c);
             }
             Stage::HertzAccuracy => {

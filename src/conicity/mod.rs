@@ -63,7 +63,7 @@ pub use crate::rigid::DELTA_R_RESOLUTION_MM;
 pub use delta_r::{DeltaR, DeltaRError};
 use well::Well;
 
-pub use pair::{PairConicity, Parameters, Settings, assess};
+pub use pair::{PairConicity, Parameters, STANDARD_MAX_AMPLITUDE_MM, Settings, assess, assess_on};
 
 /// The amplitude at which the acceptance rules quote the equivalent conicity (mm).
 pub const REFERENCE_AMPLITUDE_MM: f64 = 3.0;

@@ -3,16 +3,34 @@
 //! parameter, where flange contact begins, the contact-point jumps, Δr and the contact angle
 //! difference at ±3 mm.
 
+use super::well::Well;
 use super::{
     DeltaR, EquivalentConicity, Method, equivalent_conicity, supported_default_amplitudes,
 };
-use crate::rigid::{Position, RigidSweep, contact_angle};
-use crate::track::Side;
+use crate::rigid::{self, Position, RigidSweep, contact_angle};
+use crate::track::{Placement, Side};
+use std::borrow::Cow;
 
 pub use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
 
 /// The lateral shift at which Δr and the contact angle difference are reported (mm).
 pub const REPORT_SHIFT_MM: f64 = 3.0;
+
+/// The largest amplitude of EN 15302's reference results (mm): Annex F tabulates `tan γe`
+/// from 1.0 to 7.5 mm. [`assess_on`] makes the Δr function reach every amplitude up to it
+/// (or up to the largest the settings ask for).
+pub const STANDARD_MAX_AMPLITUDE_MM: f64 = 7.5;
+
+/// How many times [`assess_on`] widens a sweep that does not reach far enough: each
+/// widening reaches what the last Δr function showed missing, and a motion's turning point
+/// moves little once the flange is reached, so two suffice on the EN 15302 cases; the cap
+/// only bounds a Δr that never turns (a wheel that climbs its rail).
+const MAX_WIDENINGS: usize = 6;
+
+/// The farthest shift [`assess_on`] asks for (mm): twice the lateral clearance of a
+/// standard-gauge wheelset (about 7 mm per side before the flange), far beyond where any
+/// flange contact turns the kinematic motion.
+pub const WIDEST_SHIFT_MM: f64 = 20.0;
 
 /// The amplitudes bounding Polach's nonlinearity parameter (mm).
 pub const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
@@ -241,7 +259,122 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 /// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
 /// ```
 pub fn assess(sweep: &RigidSweep, settings: &Settings) -> PairConicity {
+    assess_delta_r(sweep, delta_r_of(sweep), settings)
+}
+
+/// [`assess`] with the Δr function reaching every amplitude the settings need: the rigid
+/// search on `placement` (the one `sweep` was solved on) is asked for the shifts beyond
+/// the sweep that the motions of those amplitudes reach ([`rigid::extend`], each end
+/// continued outwards), so that an off-centre pair (wheels of different radii, EN 15302
+/// cases E5 to E8) gets every amplitude up to [`STANDARD_MAX_AMPLITUDE_MM`] (or the largest
+/// of `settings.amplitudes_mm`) without a wider sweep in the scene. Only the shifts the
+/// motions need are solved, as far as [`WIDEST_SHIFT_MM`]. The parameters that describe the
+/// sweep (flange contact, jumps) are `sweep`'s own; `tan γe` and Δr at ±3 mm come from the
+/// widened Δr function. Where `sweep` already reaches far enough, this is [`assess`].
+///
+/// # Example
+/// ```
+/// use wheelrail::{conicity, pipeline, rigid, scene::Scene};
+/// let scene = Scene::from_toml("[sweep]\nfrom_mm = -4.0\nto_mm = 4.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
+/// let placement = pipeline::place(&scene).unwrap();
+/// let sweep = rigid::search(&placement, scene.sweep(), rigid::Solver::default());
+/// let pair = conicity::assess_on(&placement, &sweep, &conicity::Settings::default());
+/// // The sweep ends at 4 mm; the motion of 7.5 mm is computed all the same.
+/// assert!(pair.klingel.at(7.5).unwrap().is_finite());
+/// ```
+pub fn assess_on(placement: &Placement, sweep: &RigidSweep, settings: &Settings) -> PairConicity {
+    let widened = widened(placement, sweep, settings);
+    assess_delta_r(sweep, delta_r_of(&widened), settings)
+}
+
+/// [`assess_by_method`] on the Δr function of [`assess_on`]: the sweep widened as far as
+/// the settings' amplitudes need.
+pub fn assess_by_method_on(
+    placement: &Placement,
+    sweep: &RigidSweep,
+    settings: &Settings,
+) -> (EquivalentConicity, Parameters) {
+    let widened = widened(placement, sweep, settings);
+    let delta_r = delta_r_of(&widened);
+    let amplitudes = amplitudes(settings, &delta_r);
+    (
+        equivalent_conicity(&delta_r, &amplitudes, settings.method),
+        parameters(sweep, &delta_r, settings),
+    )
+}
+
+/// The largest amplitude the settings need (mm).
+fn wanted_amplitude(settings: &Settings) -> f64 {
+    settings
+        .amplitudes_mm
+        .as_deref()
+        .map_or(STANDARD_MAX_AMPLITUDE_MM, |a| {
+            a.iter()
+                .copied()
+                .filter(|a| a.is_finite())
+                .fold(0.0, f64::max)
+        })
+}
+
+/// `sweep`, widened by the rigid search on `placement` until its Δr function supports the
+/// largest amplitude the settings need by both methods (see [`assess_on`]).
+fn widened<'s>(
+    placement: &Placement,
+    sweep: &'s RigidSweep,
+    settings: &Settings,
+) -> Cow<'s, RigidSweep> {
+    let wanted = wanted_amplitude(settings);
+    let mut current = Cow::Borrowed(sweep);
+    for _ in 0..MAX_WIDENINGS {
+        let Some((from, to)) = reach_needed(&current, wanted) else {
+            break;
+        };
+        let (from, to) = (from.max(-WIDEST_SHIFT_MM), to.min(WIDEST_SHIFT_MM));
+        let wider = rigid::extend(placement, &current, from, to);
+        if wider.positions().len() == current.positions().len() {
+            break;
+        }
+        current = Cow::Owned(wider);
+    }
+    current
+}
+
+/// The shifts `(from, to)` the Δr function of `sweep` must reach for the amplitude `a`
+/// by both methods, or `None` when it reaches them (or has no equilibrium, or ends at a
+/// position that did not converge, which more positions cannot mend).
+///
+/// The regression needs `y_eq ± a`. The Klingel motion needs the level of its turning
+/// points on both sides; where the Δr function ends first on one side, that side is taken
+/// further by twice the amplitude missing (the turning point moves by about as much as the
+/// amplitude, more on the side that rises slower), at least 0.5 mm.
+fn reach_needed(sweep: &RigidSweep, a: f64) -> Option<(f64, f64)> {
+    let positions = sweep.positions();
+    let (first, last) = (positions.first()?, positions.last()?);
+    if !(first.delta_r().is_finite() && last.delta_r().is_finite()) {
+        return None;
+    }
     let delta_r = delta_r_of(sweep);
+    let well = Well::new(&delta_r)?;
+    let eq = well.equilibrium();
+    let (mut from, mut to) = ((eq - a).min(first.y_ws), (eq + a).max(last.y_ws));
+    let max = well.klingel_max_amplitude();
+    if max < a * (1.0 - 1e-12) {
+        let more = (2.0 * (a - max)).max(0.5);
+        let [below, above] = well.limiting_branches();
+        if above {
+            to = to.max(last.y_ws + more);
+        }
+        if below {
+            from = from.min(first.y_ws - more);
+        }
+    }
+    let needed = from < first.y_ws || to > last.y_ws;
+    needed.then_some((from, to))
+}
+
+/// The equivalent conicity and the parameters of the pair swept by `sweep` on its Δr
+/// function `delta_r` (the sweep's own, or a widened one).
+fn assess_delta_r(sweep: &RigidSweep, delta_r: DeltaR, settings: &Settings) -> PairConicity {
     let amplitudes = amplitudes(settings, &delta_r);
     let klingel = equivalent_conicity(&delta_r, &amplitudes, Method::Klingel);
     let regression = equivalent_conicity(&delta_r, &amplitudes, Method::Regression);
@@ -348,5 +481,55 @@ mod tests {
                 assert_eq!(a.tan_gamma_e.to_bits(), b.tan_gamma_e.to_bits());
             }
         }
+    }
+
+    /// An off-centre pair (radii 460 and 459.5 mm: equilibrium at -0.53 mm) swept only
+    /// from -3 to 3 mm: `assess_on` asks the rigid search for the shifts its motions need
+    /// and gives every amplitude up to 7.5 mm by both methods, as a sweep from -15 to 15 mm
+    /// gives them (within 1e-8: the positions beyond 3 mm are continued from the sweep's
+    /// ends instead of from the centre, and solved to the roll solver's residual of 1e-11
+    /// mm), and `assess` on the narrow sweep leaves them out.
+    #[test]
+    fn an_off_centre_pair_gets_every_amplitude_from_a_narrow_sweep() {
+        let scene = |from: f64| {
+            Scene::from_toml(
+                &format!(
+                    "[wheel]\nleft_nominal_radius_mm = 460.0\nright_nominal_radius_mm = 459.5\n[sweep]\nfrom_mm = {from}\nto_mm = {}\nstep_mm = 0.1",
+                    -from
+                ),
+                "t",
+                ".".as_ref(),
+            )
+            .unwrap()
+        };
+        let (narrow, wide) = (scene(-3.0), scene(-15.0));
+        let placement = crate::pipeline::place(&narrow).unwrap();
+        let settings = Settings::default();
+        let short = search(&placement, &narrow.sweep, Solver::default());
+        let long = search(&placement, &wide.sweep, Solver::default());
+        let reached = assess_on(&placement, &short, &settings);
+        let reference = assess(&long, &settings);
+        assert!(assess(&short, &settings).klingel.at(7.5).is_none());
+        assert!(
+            reached.parameters.equilibrium_mm < -0.3,
+            "{:?}",
+            reached.parameters
+        );
+        for method in Method::ALL {
+            for p in &reference.by(method).points {
+                if p.amplitude_mm > STANDARD_MAX_AMPLITUDE_MM + 1e-9 {
+                    continue;
+                }
+                let got = reached.by(method).at(p.amplitude_mm).unwrap();
+                assert!(
+                    (got - p.tan_gamma_e).abs() < 1e-8,
+                    "{method:?} at {}: {got} vs {}",
+                    p.amplitude_mm,
+                    p.tan_gamma_e
+                );
+            }
+        }
+        // The parameters that describe the sweep are the narrow sweep's own.
+        assert_eq!(reached.parameters.contact_point_jumps, short.jumps().len());
     }
 }

@@ -273,6 +273,15 @@ impl Well {
         sum + last.integral(tau, root[p], 0.0)
     }
 
+    /// Which branches end at the lowest level of `S`, `[towards smaller y, towards larger
+    /// y]` (both when they end at the same level): the ones that limit the largest Klingel
+    /// motion ([`Well::klingel_max_amplitude`]).
+    pub(super) fn limiting_branches(&self) -> [bool; 2] {
+        let top = |p: &[Piece]| p.last().map_or(0.0, |p| p.running_max);
+        let (below, above) = (top(&self.left), top(&self.right));
+        [below <= above, above <= below]
+    }
+
     pub(super) fn klingel_max_amplitude(&self) -> f64 {
         let (Some(r), Some(l)) = (self.right.last(), self.left.last()) else {
             return 0.5 * self.band_width();

@@ -502,3 +502,103 @@ pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSwee
         yaw: *sweep.yaw(),
     }
 }
+
+/// `sweep` (solved by [`search`] on `placement`) continued beyond its ends to reach
+/// `from_mm` and `to_mm`: new positions spaced as the sweep's end steps (for a sweep of one
+/// position, [`EXTENSION_STEP_MM`]) and rounded to 1e-9 mm, each end continued outwards from the positions nearest it, and
+/// the jumps of the new windows. The positions and jumps it had are kept as they are, so
+/// the result holds the sweep's values to the bit where they overlap. A bound already
+/// inside the sweep adds nothing on that side. The result is not mirrored: the quasi-
+/// elastic pass and the Hertz sweep are computed on the scene's own sweep, not on this
+/// one (the equivalent conicity asks for it, [`crate::conicity::assess_on`]).
+///
+/// # Example
+/// ```
+/// use wheelrail::{pipeline, rigid, scene::Scene, sweep::Sweep};
+/// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
+/// let placement = pipeline::place(&scene).unwrap();
+/// let sweep = rigid::search(&placement, &Sweep::range(-2.0, 2.0, 0.5).unwrap(), rigid::Solver::default());
+/// let wider = rigid::extend(&placement, &sweep, -3.0, 3.0);
+/// assert_eq!(wider.positions().len(), 13);
+/// assert_eq!(wider.positions()[2], sweep.positions()[0]);
+/// ```
+pub fn extend(placement: &Placement, sweep: &RigidSweep, from_mm: f64, to_mm: f64) -> RigidSweep {
+    let p = &sweep.positions;
+    let n = p.len();
+    let step = |a: usize, b: usize| {
+        if n > 1 {
+            (p[b].y_ws - p[a].y_ws).abs()
+        } else {
+            EXTENSION_STEP_MM
+        }
+    };
+    let outwards = |start: f64, step: f64, bound: f64| -> Vec<f64> {
+        let count = ((bound - start).abs() / step - 1e-9).ceil().max(0.0) as usize;
+        // Rounded to 1e-9 mm as `Sweep::range` rounds its shifts: clean printed values.
+        (1..=count)
+            .map(|i| ((start + (bound - start).signum() * step * i as f64) * 1e9).round() / 1e9)
+            .collect()
+    };
+    let left = outwards(p[0].y_ws, step(0, 1.min(n - 1)), from_mm.min(p[0].y_ws));
+    let right = outwards(
+        p[n - 1].y_ws,
+        step(n.saturating_sub(2), n - 1),
+        to_mm.max(p[n - 1].y_ws),
+    );
+    if left.is_empty() && right.is_empty() {
+        return sweep.clone();
+    }
+    let solve = PositionSolver::new(placement, sweep.solver, sweep.yaw);
+    let ends = |positions: &[Position]| -> Vec<Position> {
+        positions
+            .iter()
+            .filter(|q| q.stop == Stop::Converged)
+            .copied()
+            .collect()
+    };
+    let roll_of = |q: &Position| q.roll;
+    // Each end from its last three positions, in the order a continuation outwards would
+    // have solved them.
+    let before_left: Vec<Position> = ends(&p[..3.min(n)]).into_iter().rev().collect();
+    let before_right = ends(&p[n.saturating_sub(3)..]);
+    let mut new_left = driver::continued(
+        &solve,
+        &before_left,
+        left.iter().copied(),
+        p.first().map_or(0.0, roll_of),
+    );
+    new_left.reverse();
+    let new_right = driver::continued(
+        &solve,
+        &before_right,
+        right.iter().copied(),
+        p.last().map_or(0.0, roll_of),
+    );
+    let mut scratch = Scratch::default();
+    let mut positions = new_left;
+    let mut jumps = Vec::new();
+    if !positions.is_empty() {
+        positions.push(p[0]);
+        jumps = driver::jumps_in(&solve, &positions, &mut scratch);
+        positions.pop();
+    }
+    jumps.extend(sweep.jumps.iter().copied());
+    positions.extend(p.iter().copied());
+    if !new_right.is_empty() {
+        let mut window = vec![p[n - 1]];
+        window.extend(new_right.iter().copied());
+        jumps.extend(driver::jumps_in(&solve, &window, &mut scratch));
+        positions.extend(new_right);
+    }
+    RigidSweep {
+        solver: sweep.solver,
+        positions,
+        centre: sweep.centre,
+        jumps,
+        mirror: None,
+        yaw: sweep.yaw,
+    }
+}
+
+/// The step of [`extend`] beyond a sweep of one position (mm): the EN 15302 Annex E grid.
+pub const EXTENSION_STEP_MM: f64 = 0.1;
