@@ -7,7 +7,7 @@ use super::well::Well;
 use super::{
     DeltaR, EquivalentConicity, Method, equivalent_conicity, supported_default_amplitudes,
 };
-use crate::rigid::{self, Position, RigidSweep, contact_angle};
+use crate::rigid::{self, JumpKind, Position, RigidSweep, contact_angle};
 use crate::track::{Placement, Side};
 use std::borrow::Cow;
 
@@ -69,8 +69,13 @@ pub struct Parameters {
     pub flange_contact_left_mm: f64,
     /// Shift where the right wheel's flange contact begins (mm, < 0; NaN beyond the sweep).
     pub flange_contact_right_mm: f64,
-    /// Number of contact-point jumps over the sweep (both wheels).
+    /// Number of contact-point jumps over the sweep (both wheels), sampling artefacts left
+    /// out.
     pub contact_point_jumps: usize,
+    /// Number of sampling artefacts over the sweep (both wheels): hops of a sampled
+    /// profile's contact point across hollows of the gap shallower than
+    /// [`rigid::ARTEFACT_HOLLOW_MM`].
+    pub sampling_artefacts: usize,
     /// Δr at y_ws = +3 mm and -3 mm (mm).
     pub delta_r_mm: [f64; 2],
     /// Contact angle difference `γ_left - γ_right` at y_ws = +3 mm and -3 mm (rad).
@@ -153,7 +158,14 @@ impl Parameters {
                 name: "contact_point_jumps",
                 value: self.contact_point_jumps as f64,
                 unit: "count",
-                definition: "contact-point jumps of either wheel over the sweep (listed in rigid_jumps.csv, located to 1e-4 mm)".into(),
+                definition: "contact-point jumps of either wheel over the sweep (rigid_jumps.csv, kind jump, located to 1e-4 mm)".into(),
+                undefined: "never (a count)",
+            },
+            ParameterRow {
+                name: "sampling_artefacts",
+                value: self.sampling_artefacts as f64,
+                unit: "count",
+                definition: format!("hops of a sampled profile's contact point between two minima of the gap that a hollow shallower than {} mm separates, counted apart from the jumps (rigid_jumps.csv, kind artefact; continuous in delta_r and the charts)", rigid::ARTEFACT_HOLLOW_MM),
                 undefined: "never (a count)",
             },
             ParameterRow {
@@ -214,13 +226,15 @@ impl PairConicity {
 /// The Δr function of a rigid sweep: `r_left - r_right` at every converged position, NaN
 /// where a position did not converge or a wheel has no contact, and each contact-point
 /// jump as a discontinuity in the middle of its refined interval (values from its ends).
+/// A sampling artefact ([`JumpKind::Artefact`]) is no discontinuity: Δr is linear between
+/// the sweep positions around it, as where the contact point moves continuously.
 pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     let mut points: Vec<(f64, f64)> = sweep
         .positions()
         .iter()
         .map(|p| (p.y_ws, p.delta_r()))
         .collect();
-    for j in sweep.jumps() {
+    for j in sweep.jumps().iter().filter(|j| j.kind == JumpKind::Jump) {
         let mid = 0.5 * (j.y_from + j.y_to);
         // Drop sweep positions inside the refined interval (none on a sweep coarser than
         // 1e-4 mm), then insert the discontinuity.
@@ -416,6 +430,7 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Para
     let at = equivalent_conicity(delta_r, &[2.0, 3.0, 4.0], settings.method);
     let tan_gamma_e = [0, 1, 2].map(|i| at.points[i].tan_gamma_e);
     let [a2, a4] = NONLINEARITY_AMPLITUDES_MM;
+    let count = |kind: JumpKind| sweep.jumps().iter().filter(|j| j.kind == kind).count();
     Parameters {
         method: settings.method,
         tan_gamma_e,
@@ -423,7 +438,8 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &Settings) -> Para
         equilibrium_mm: at.equilibrium_mm,
         flange_contact_left_mm: sweep.flange_contact_mm(Side::Left),
         flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
-        contact_point_jumps: sweep.jumps().len(),
+        contact_point_jumps: count(JumpKind::Jump),
+        sampling_artefacts: count(JumpKind::Artefact),
         delta_r_mm: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| delta_r.at(y).unwrap_or(f64::NAN)),
         contact_angle_difference_rad: [REPORT_SHIFT_MM, -REPORT_SHIFT_MM].map(|y| {
             interpolate(sweep, y, |p| {
@@ -530,6 +546,9 @@ mod tests {
             }
         }
         // The parameters that describe the sweep are the narrow sweep's own.
-        assert_eq!(reached.parameters.contact_point_jumps, short.jumps().len());
+        assert_eq!(
+            reached.parameters.contact_point_jumps + reached.parameters.sampling_artefacts,
+            short.jumps().len()
+        );
     }
 }

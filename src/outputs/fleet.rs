@@ -39,6 +39,7 @@ fn parameter_rows(summary: Option<&Summary>) -> Vec<crate::conicity::pair::Param
         flange_contact_left_mm: f64::NAN,
         flange_contact_right_mm: f64::NAN,
         contact_point_jumps: 0,
+        sampling_artefacts: 0,
         delta_r_mm: [f64::NAN; 2],
         contact_angle_difference_rad: [f64::NAN; 2],
     };
@@ -69,7 +70,7 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
             profile_names(&t.rail_profiles)
         ),
         super::tables::conicity_method_text(t.conicity.method).to_string(),
-        "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; units in the column names: _mm millimetres, _per_mm 1/mm, _rad radians, _MPa N/mm^2; tan_gamma_e dimensionless; contact_point_jumps a count".into(),
+        "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; units in the column names: _mm millimetres, _per_mm 1/mm, _rad radians, _MPa N/mm^2; tan_gamma_e dimensionless; contact_point_jumps and sampling_artefacts counts".into(),
     ];
     for r in parameter_rows(None) {
         lines.push(format!("{} ({}): {}", r.name, r.unit, r.definition));
