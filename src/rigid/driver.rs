@@ -212,6 +212,7 @@ pub(super) fn jumps_in(
         // The paper's iteration certifies nothing: its refinements have no certificates
         // to skip.
         certifying: *solve.solver() != Solver::Paper,
+        artefacts_unrefined: true,
     };
     find_jumps(&mut Local::new(solve), part, refinement, scratch)
 }
