@@ -4,11 +4,13 @@
 Usage:
     python3 scripts/en15302_noroll.py LEFT_WHEEL.csv RIGHT_WHEEL.csv RAIL.csv OUT_DIR
         [--rail-offset-mm 0] [--from-mm -7.5] [--to-mm 7.5] [--step-mm 0.1] [--grid-mm 0.005]
+        [--radii-mm LEFT RIGHT]
 
 This is NOT wheelrail's rigid search: it is an independent, deliberately simple model used as
 evidence (see reports/en15302_e*/scene.toml). Each wheel is translated laterally by the
 wheelset shift y only (no roll, each wheel lowered onto its rail on its own), the contact is
-the smallest vertical gap, and delta_r = F_left(s_left) - F_right(s_right).
+the smallest vertical gap, and delta_r = F_left(s_left) - F_right(s_right), plus the
+difference of the wheels' nominal radii given by --radii-mm (EN 15302 cases E5-E8: 460 459).
 
 Frames: the wheel CSVs are wheelrail wheel files (`s_mm,F_mm`, s from the taping line), the
 rail CSV a wheelrail rail file (`y_mm,z_mm`). As in the EN 15302 reference files
@@ -88,6 +90,7 @@ def main():
     ap.add_argument("--to-mm", type=float, default=7.5)
     ap.add_argument("--step-mm", type=float, default=0.1)
     ap.add_argument("--grid-mm", type=float, default=0.005)
+    ap.add_argument("--radii-mm", type=float, nargs=2, default=(0.0, 0.0))
     a = ap.parse_args()
 
     wheels = []
@@ -125,12 +128,12 @@ def main():
                 sys.exit(f"no overlap of wheel and rail at y_ws = {y_ws}")
             out.append(best)
         (_, sl, fl), (_, sr, fr) = out
-        rows.append((y_ws, sl, sr, fl, fr, fl - fr))
+        rows.append((y_ws, sl, sr, fl, fr, a.radii_mm[0] - a.radii_mm[1] + fl - fr))
 
     os.makedirs(a.out_dir, exist_ok=True)
     with open(os.path.join(a.out_dir, "rigid.csv"), "w") as f:
         f.write("# NO-ROLL model of scripts/en15302_noroll.py (not wheelrail's rigid search)\n")
-        f.write(f"# left {a.left_wheel}, right {a.right_wheel}, rail {a.rail}, rail offset {d} mm\n")
+        f.write(f"# left {a.left_wheel}, right {a.right_wheel}, rail {a.rail}, rail offset {d} mm, radii {a.radii_mm[0]} {a.radii_mm[1]} mm\n")
         f.write("y_ws_mm,left_s_mm,right_s_mm,left_F_mm,right_F_mm,delta_r_mm\n")
         for r in rows:
             f.write(",".join(f"{v:.6f}" for v in r) + "\n")

@@ -338,7 +338,9 @@ fn run_stage(scene: &Scene, stage: Stage, results: &mut Results, progress: Progr
                 .rigid
                 .as_ref()
                 .expect("rigid runs before the equivalent conicity");
-            let c = record.time(stage, progress, || conicity::assess(rigid, &scene.conicity));
+            let c = record.time(stage, progress, || {
+                conicity::assess_on(&results.placement, rigid, &scene.conicity)
+            });
             results.conicity = Some(c);
         }
         Stage::HertzAccuracy => {

@@ -479,3 +479,48 @@ fn equal_placements_built_any_way_give_the_same_results() {
             .is_mirror_symmetric()
     );
 }
+
+/// The tread-to-flange jumps of every committed report stay jumps, whatever the sampling of
+/// its profiles: in each `rigid_jumps.csv`, a jump whose contact point moves between the
+/// tread (s > -25 mm: the flange root of the S1002 family begins at about -26 mm) and the
+/// flange (s < -30 mm) has the kind `jump`, and the sampled profiles' hops are counted
+/// (the EN 15302 reference wheel R-UIC519A has 34 in ±7.5 mm, each across a hollow below
+/// 2 µm).
+#[test]
+fn tread_to_flange_jumps_of_the_committed_reports_stay_jumps() {
+    let reports = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports");
+    let (mut tread_to_flange, mut artefacts) = (0, 0);
+    for entry in std::fs::read_dir(&reports).unwrap() {
+        let path = entry.unwrap().path().join("rigid_jumps.csv");
+        let Ok(text) = std::fs::read_to_string(&path) else {
+            continue;
+        };
+        let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+        let (from, to, kind, hollow) = (
+            column("s_from_mm"),
+            column("s_to_mm"),
+            column("kind"),
+            column("hollow_mm"),
+        );
+        for row in lines {
+            let c: Vec<&str> = row.split(',').collect();
+            let (a, b): (f64, f64) = (c[from].parse().unwrap(), c[to].parse().unwrap());
+            if a.max(b) > -25.0 && a.min(b) < -30.0 {
+                assert_eq!(c[kind], "jump", "{}: {row}", path.display());
+                tread_to_flange += 1;
+            }
+            if c[kind] == "artefact" {
+                let h: f64 = c[hollow].parse().unwrap();
+                assert!(h < rigid::ARTEFACT_HOLLOW_MM, "{}: {row}", path.display());
+                artefacts += 1;
+            }
+        }
+    }
+    assert!(
+        tread_to_flange >= 10,
+        "{tread_to_flange} tread-to-flange jumps"
+    );
+    assert!(artefacts >= 34, "{artefacts} artefacts");
+}

@@ -1,7 +1,16 @@
 //! The rolling radius difference function Δr(y): a table, checked, with its jumps and its
 //! equilibrium.
 
+use crate::rigid::resolved_delta_r;
 use std::fmt;
+
+/// `delta_r` with the values below [`DELTA_R_RESOLUTION_MM`](super::DELTA_R_RESOLUTION_MM) set to 0.
+fn resolved(mut delta_r: Vec<f64>) -> Vec<f64> {
+    for v in &mut delta_r {
+        *v = resolved_delta_r(*v);
+    }
+    delta_r
+}
 
 /// Why a Δr function cannot be used.
 #[derive(Debug, Clone, PartialEq)]
@@ -139,7 +148,9 @@ impl std::error::Error for DeltaRCsvError {}
 /// A rolling radius difference function: Δr (mm) linear between points `(y, Δr)`, `y`
 /// increasing. Two consecutive points at the same `y` are a jump of Δr there (a contact-point
 /// jump): the first holds the value from the left, the second the value from the right.
-/// A NaN value marks a point where Δr is unknown; the function ends there.
+/// A NaN value marks a point where Δr is unknown; the function ends there. A value smaller
+/// than [`DELTA_R_RESOLUTION_MM`](super::DELTA_R_RESOLUTION_MM) (1e-9 mm) is 0: the rounding of two equal rolling radii
+/// is no slope (the constant's docs say why it cannot hide one).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DeltaR {
     pub(super) y: Vec<f64>,
@@ -148,7 +159,7 @@ pub struct DeltaR {
 
 impl DeltaR {
     /// A Δr function from a table with strictly increasing `y`, all values finite, at least
-    /// 3 points and a change of sign.
+    /// 3 points and a change of sign (values below [`DELTA_R_RESOLUTION_MM`](super::DELTA_R_RESOLUTION_MM) are 0).
     ///
     /// # Errors
     /// [`DeltaRError`] naming the offending point.
@@ -167,7 +178,10 @@ impl DeltaR {
                 return Err(DeltaRError::NotIncreasing { index: i });
             }
         }
-        let d = DeltaR { y, dr: delta_r };
+        let d = DeltaR {
+            y,
+            dr: resolved(delta_r),
+        };
         if d.equilibrium().is_none() {
             return Err(DeltaRError::NoSignChange);
         }
@@ -194,7 +208,10 @@ impl DeltaR {
                 return Err(DeltaRError::NotIncreasing { index: i });
             }
         }
-        Ok(DeltaR { y, dr: delta_r })
+        Ok(DeltaR {
+            y,
+            dr: resolved(delta_r),
+        })
     }
 
     /// Parses a CSV table holding the columns `y_mm` (or `y_ws_mm`, as in `rigid.csv`) and

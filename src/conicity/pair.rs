@@ -3,16 +3,34 @@
 //! parameter, where flange contact begins, the contact-point jumps, Δr and the contact angle
 //! difference at ±3 mm.
 
+use super::well::Well;
 use super::{
     ConicityMethod, DeltaR, EquivalentConicity, equivalent_conicity, supported_default_amplitudes,
 };
-use crate::rigid::{RigidPosition, RigidSweep, contact_angle};
-use crate::track::Side;
+use crate::rigid::{self, JumpKind, RigidPosition, RigidSweep, contact_angle};
+use crate::track::{Placement, Side};
+use std::borrow::Cow;
 
 pub(crate) use crate::rigid::FLANGE_CONTACT_GAMMA_RAD;
 
 /// The lateral shift at which Δr and the contact angle difference are reported (mm).
 pub(crate) const REPORT_SHIFT_MM: f64 = 3.0;
+
+/// The largest amplitude of EN 15302's reference results (mm): Annex F tabulates `tan γe`
+/// from 1.0 to 7.5 mm. [`assess_on`] makes the Δr function reach every amplitude up to it
+/// (or up to the largest the settings ask for).
+pub const STANDARD_MAX_AMPLITUDE_MM: f64 = 7.5;
+
+/// How many times [`assess_on`] widens a sweep that does not reach far enough: each
+/// widening reaches what the last Δr function showed missing, and a motion's turning point
+/// moves little once the flange is reached, so two suffice on the EN 15302 cases; the cap
+/// only bounds a Δr that never turns (a wheel that climbs its rail).
+const MAX_WIDENINGS: usize = 6;
+
+/// The farthest shift [`assess_on`] asks for (mm): twice the lateral clearance of a
+/// standard-gauge wheelset (about 7 mm per side before the flange), far beyond where any
+/// flange contact turns the kinematic motion.
+pub const WIDEST_SHIFT_MM: f64 = 20.0;
 
 /// The amplitudes bounding Polach's nonlinearity parameter (mm).
 pub(crate) const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
@@ -169,8 +187,13 @@ pub struct Parameters {
     pub flange_contact_left_mm: f64,
     /// Shift where the right wheel's flange contact begins (mm, < 0; NaN beyond the sweep).
     pub flange_contact_right_mm: f64,
-    /// Number of contact-point jumps over the sweep (both wheels).
+    /// Number of contact-point jumps over the sweep (both wheels), sampling artefacts left
+    /// out.
     pub contact_point_jumps: usize,
+    /// Number of sampling artefacts over the sweep (both wheels): hops of a sampled
+    /// profile's contact point across hollows of the gap shallower than
+    /// [`rigid::ARTEFACT_HOLLOW_MM`].
+    pub sampling_artefacts: usize,
     /// Δr at y_ws = +3 mm (mm).
     pub delta_r_at_plus_3mm_mm: f64,
     /// Δr at y_ws = -3 mm (mm).
@@ -225,6 +248,7 @@ impl Parameters {
             flange_contact_left_mm: f64::NAN,
             flange_contact_right_mm: f64::NAN,
             contact_point_jumps: 0,
+            sampling_artefacts: 0,
             delta_r_at_plus_3mm_mm: f64::NAN,
             delta_r_at_minus_3mm_mm: f64::NAN,
             contact_angle_difference_at_plus_3mm_rad: f64::NAN,
@@ -287,7 +311,14 @@ impl Parameters {
                 name: "contact_point_jumps",
                 value: self.contact_point_jumps as f64,
                 unit: "count",
-                definition: "contact-point jumps of either wheel over the sweep (listed in rigid_jumps.csv, located to 1e-4 mm)".into(),
+                definition: "contact-point jumps of either wheel over the sweep (rigid_jumps.csv, kind jump, located to 1e-4 mm)".into(),
+                undefined: "never (a count)",
+            },
+            ParameterRow {
+                name: "sampling_artefacts",
+                value: self.sampling_artefacts as f64,
+                unit: "count",
+                definition: format!("hops of a sampled profile's contact point between two minima of the gap that a hollow shallower than {} mm separates, counted apart from the jumps (rigid_jumps.csv, kind artefact; continuous in delta_r and the charts)", rigid::ARTEFACT_HOLLOW_MM),
                 undefined: "never (a count)",
             },
             ParameterRow {
@@ -348,13 +379,15 @@ impl PairConicity {
 /// The Δr function of a rigid sweep: `r_left - r_right` at every converged position, NaN
 /// where a position did not converge or a wheel has no contact, and each contact-point
 /// jump as a discontinuity in the middle of its refined interval (values from its ends).
+/// A sampling artefact ([`JumpKind::Artefact`]) is no discontinuity: Δr is linear between
+/// the sweep positions around it, as where the contact point moves continuously.
 pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     let mut points: Vec<(f64, f64)> = sweep
         .positions()
         .iter()
         .map(|p| (p.y_ws, p.delta_r()))
         .collect();
-    for j in sweep.jumps() {
+    for j in sweep.jumps().iter().filter(|j| j.kind == JumpKind::Jump) {
         let mid = 0.5 * (j.y_from + j.y_to);
         // Drop sweep positions inside the refined interval (none on a sweep coarser than
         // 1e-4 mm), then insert the discontinuity.
@@ -393,7 +426,132 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 /// assert!(tan_gamma_e_3mm > 0.1 && tan_gamma_e_3mm < 0.3); // S1002 on UIC60 1:40
 /// ```
 pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
+    assess_delta_r(sweep, delta_r_of(sweep), settings)
+}
+
+/// [`assess`] with the Δr function reaching every amplitude the settings need: the rigid
+/// search on `placement` (the one `sweep` was solved on) is asked for the shifts beyond
+/// the sweep that the motions of those amplitudes reach ([`rigid::extend`], each end
+/// continued outwards), so that an off-centre pair (wheels of different radii, EN 15302
+/// cases E5 to E8) gets every amplitude up to [`STANDARD_MAX_AMPLITUDE_MM`] (or the largest
+/// of `settings.amplitudes_mm`) without a wider sweep in the scene. Only the shifts the
+/// motions need are solved, as far as [`WIDEST_SHIFT_MM`]. The parameters that describe the
+/// sweep (flange contact, jumps) are `sweep`'s own; `tan γe` and Δr at ±3 mm come from the
+/// widened Δr function. Where `sweep` already reaches far enough, this is [`assess`].
+///
+/// # Example
+/// ```
+/// use wheelrail::{conicity, pipeline, rigid, scene::Scene};
+/// let scene = Scene::from_toml("[sweep]\nfrom_mm = -4.0\nto_mm = 4.0\nstep_mm = 0.1", "doc", ".".as_ref()).unwrap();
+/// let placement = pipeline::place(&scene).unwrap();
+/// let sweep = rigid::search(&placement, scene.sweep(), rigid::Solver::default());
+/// let pair = conicity::assess_on(&placement, &sweep, &conicity::ConicitySettings::default());
+/// // The sweep ends at 4 mm; the motion of 7.5 mm is computed all the same.
+/// assert!(pair.klingel.at(7.5).unwrap().is_finite());
+/// ```
+pub fn assess_on(
+    placement: &Placement,
+    sweep: &RigidSweep,
+    settings: &ConicitySettings,
+) -> PairConicity {
+    let widened = widened(placement, sweep, settings);
+    assess_delta_r(sweep, delta_r_of(&widened), settings)
+}
+
+/// The pair's equivalent conicity function by the settings' method only, and its
+/// parameters: what [`assess_on`] gives for that method (on the same widened sweep), without
+/// the other method's function, which a fleet's summary does not need. The same functions
+/// compute both: the values are [`assess_on`]'s to the last digit.
+pub(crate) fn assess_by_method_on(
+    placement: &Placement,
+    sweep: &RigidSweep,
+    settings: &ConicitySettings,
+) -> (EquivalentConicity, Parameters) {
+    let widened = widened(placement, sweep, settings);
+    let delta_r = delta_r_of(&widened);
+    let amplitudes = amplitudes(settings, &delta_r);
+    (
+        equivalent_conicity(&delta_r, &amplitudes, settings.method),
+        parameters(sweep, &delta_r, settings),
+    )
+}
+
+/// The largest amplitude the settings need (mm).
+fn wanted_amplitude(settings: &ConicitySettings) -> f64 {
+    settings
+        .amplitudes_mm
+        .as_deref()
+        .map_or(STANDARD_MAX_AMPLITUDE_MM, |a| {
+            a.iter()
+                .copied()
+                .filter(|a| a.is_finite())
+                .fold(0.0, f64::max)
+        })
+}
+
+/// `sweep`, widened by the rigid search on `placement` until its Δr function supports the
+/// largest amplitude the settings need by both methods (see [`assess_on`]).
+fn widened<'s>(
+    placement: &Placement,
+    sweep: &'s RigidSweep,
+    settings: &ConicitySettings,
+) -> Cow<'s, RigidSweep> {
+    let wanted = wanted_amplitude(settings);
+    let mut current = Cow::Borrowed(sweep);
+    for _ in 0..MAX_WIDENINGS {
+        let Some((from, to)) = reach_needed(&current, wanted) else {
+            break;
+        };
+        let (from, to) = (from.max(-WIDEST_SHIFT_MM), to.min(WIDEST_SHIFT_MM));
+        let wider = rigid::extend(placement, &current, from, to);
+        if wider.positions().len() == current.positions().len() {
+            break;
+        }
+        current = Cow::Owned(wider);
+    }
+    current
+}
+
+/// The shifts `(from, to)` the Δr function of `sweep` must reach for the amplitude `a`
+/// by both methods, or `None` when it reaches them (or has no equilibrium, or ends at a
+/// position that did not converge, which more positions cannot mend).
+///
+/// The regression needs `y_eq ± a`. The Klingel motion needs the level of its turning
+/// points on both sides; where the Δr function ends first on one side, that side is taken
+/// further by twice the amplitude missing (the turning point moves by about as much as the
+/// amplitude, more on the side that rises slower), at least 0.5 mm.
+fn reach_needed(sweep: &RigidSweep, a: f64) -> Option<(f64, f64)> {
+    let positions = sweep.positions();
+    let (first, last) = (positions.first()?, positions.last()?);
+    if !(first.delta_r().is_finite() && last.delta_r().is_finite()) {
+        return None;
+    }
     let delta_r = delta_r_of(sweep);
+    let well = Well::new(&delta_r)?;
+    let eq = well.equilibrium();
+    let (mut from, mut to) = ((eq - a).min(first.y_ws), (eq + a).max(last.y_ws));
+    let max = well.klingel_max_amplitude();
+    if max < a * (1.0 - 1e-12) {
+        let more = (2.0 * (a - max)).max(0.5);
+        let [below, above] = well.limiting_branches();
+        if above {
+            to = to.max(last.y_ws + more);
+        }
+        if below {
+            from = from.min(first.y_ws - more);
+        }
+    }
+    let needed = from < first.y_ws || to > last.y_ws;
+    needed.then_some((from, to))
+}
+
+/// The equivalent conicity and the parameters of the pair swept by `sweep` on its Δr
+/// function `delta_r` (the sweep's own, or a widened one).
+fn assess_delta_r(
+    sweep: &RigidSweep,
+    delta_r: DeltaR,
+    settings: &ConicitySettings,
+) -> PairConicity {
     let amplitudes = amplitudes(settings, &delta_r);
     let klingel = equivalent_conicity(&delta_r, &amplitudes, ConicityMethod::Klingel);
     let regression = equivalent_conicity(&delta_r, &amplitudes, ConicityMethod::Regression);
@@ -404,22 +562,6 @@ pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
         regression,
         parameters,
     }
-}
-
-/// The pair's equivalent conicity function by the settings' method only, and its
-/// parameters: what [`assess`] gives for that method, without the other method's function
-/// (a fleet's summary needs one). The same functions compute both: the values are
-/// [`assess`]'s to the last digit.
-pub(crate) fn assess_by_method(
-    sweep: &RigidSweep,
-    settings: &ConicitySettings,
-) -> (EquivalentConicity, Parameters) {
-    let delta_r = delta_r_of(sweep);
-    let amplitudes = amplitudes(settings, &delta_r);
-    (
-        equivalent_conicity(&delta_r, &amplitudes, settings.method),
-        parameters(sweep, &delta_r, settings),
-    )
 }
 
 /// The amplitudes of the settings, or the default ones the Δr function supports.
@@ -441,6 +583,7 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &ConicitySettings)
             contact_angle(p, Side::Left) - contact_angle(p, Side::Right)
         })
     };
+    let count = |kind: JumpKind| sweep.jumps().iter().filter(|j| j.kind == kind).count();
     Parameters {
         method: settings.method,
         tan_gamma_e_2mm: t2,
@@ -450,7 +593,8 @@ fn parameters(sweep: &RigidSweep, delta_r: &DeltaR, settings: &ConicitySettings)
         equilibrium_mm: at.equilibrium_mm,
         flange_contact_left_mm: sweep.flange_contact_mm(Side::Left),
         flange_contact_right_mm: sweep.flange_contact_mm(Side::Right),
-        contact_point_jumps: sweep.jumps().len(),
+        contact_point_jumps: count(JumpKind::Jump),
+        sampling_artefacts: count(JumpKind::Artefact),
         delta_r_at_plus_3mm_mm: delta_r_at(REPORT_SHIFT_MM),
         delta_r_at_minus_3mm_mm: delta_r_at(-REPORT_SHIFT_MM),
         contact_angle_difference_at_plus_3mm_rad: contact_angle_difference_at(REPORT_SHIFT_MM),
@@ -498,13 +642,66 @@ mod tests {
                 method,
                 amplitudes_mm: None,
             };
-            let whole = assess(&sweep, &settings);
-            let (function, parameters) = assess_by_method(&sweep, &settings);
+            let whole = assess_on(&placement, &sweep, &settings);
+            let (function, parameters) = assess_by_method_on(&placement, &sweep, &settings);
             assert_eq!(parameters, whole.parameters);
             assert_eq!(function.points.len(), whole.by(method).points.len());
             for (a, b) in function.points.iter().zip(&whole.by(method).points) {
                 assert_eq!(a.tan_gamma_e.to_bits(), b.tan_gamma_e.to_bits());
             }
         }
+    }
+
+    /// An off-centre pair (radii 460 and 459.5 mm: equilibrium at -0.53 mm) swept only
+    /// from -3 to 3 mm: `assess_on` asks the rigid search for the shifts its motions need
+    /// and gives every amplitude up to 7.5 mm by both methods, as a sweep from -15 to 15 mm
+    /// gives them (within 1e-8: the positions beyond 3 mm are continued from the sweep's
+    /// ends instead of from the centre, and solved to the roll solver's residual of 1e-11
+    /// mm), and `assess` on the narrow sweep leaves them out.
+    #[test]
+    fn an_off_centre_pair_gets_every_amplitude_from_a_narrow_sweep() {
+        let scene = |from: f64| {
+            Scene::from_toml(
+                &format!(
+                    "[wheel]\nleft_nominal_radius_mm = 460.0\nright_nominal_radius_mm = 459.5\n[sweep]\nfrom_mm = {from}\nto_mm = {}\nstep_mm = 0.1",
+                    -from
+                ),
+                "t",
+                ".".as_ref(),
+            )
+            .unwrap()
+        };
+        let (narrow, wide) = (scene(-3.0), scene(-15.0));
+        let placement = crate::pipeline::place(&narrow).unwrap();
+        let settings = ConicitySettings::default();
+        let short = search(&placement, &narrow.sweep, Solver::default());
+        let long = search(&placement, &wide.sweep, Solver::default());
+        let reached = assess_on(&placement, &short, &settings);
+        let reference = assess(&long, &settings);
+        assert!(assess(&short, &settings).klingel.at(7.5).is_none());
+        assert!(
+            reached.parameters.equilibrium_mm < -0.3,
+            "{:?}",
+            reached.parameters
+        );
+        for method in ConicityMethod::ALL {
+            for p in &reference.by(method).points {
+                if p.amplitude_mm > STANDARD_MAX_AMPLITUDE_MM + 1e-9 {
+                    continue;
+                }
+                let got = reached.by(method).at(p.amplitude_mm).unwrap();
+                assert!(
+                    (got - p.tan_gamma_e).abs() < 1e-8,
+                    "{method:?} at {}: {got} vs {}",
+                    p.amplitude_mm,
+                    p.tan_gamma_e
+                );
+            }
+        }
+        // The parameters that describe the sweep are the narrow sweep's own.
+        assert_eq!(
+            reached.parameters.contact_point_jumps + reached.parameters.sampling_artefacts,
+            short.jumps().len()
+        );
     }
 }

@@ -63,6 +63,11 @@ impl Piece {
     /// `∫ dτ / sqrt(h - S)` over `[0, len]` in closed form, given `r0 = sqrt(h - S(0))` and
     /// `r1 = sqrt(h - S(len))` (either may be 0: the integrable end singularity is exact).
     fn integral(&self, len: f64, r0: f64, r1: f64) -> f64 {
+        if len <= 0.0 {
+            // A turning point at the piece's start (the level touches S there): the
+            // closed forms below would divide 0 by 0.
+            return 0.0;
+        }
         let (g0, hm) = (self.g0, self.hm);
         let g1 = g0 + 2.0 * hm * len;
         let k = self.k;
@@ -266,6 +271,15 @@ impl Well {
         let last = &pieces[p];
         let tau = last.reach(h);
         sum + last.integral(tau, root[p], 0.0)
+    }
+
+    /// Which branches end at the lowest level of `S`, `[towards smaller y, towards larger
+    /// y]` (both when they end at the same level): the ones that limit the largest Klingel
+    /// motion ([`Well::klingel_max_amplitude`]).
+    pub(super) fn limiting_branches(&self) -> [bool; 2] {
+        let top = |p: &[Piece]| p.last().map_or(0.0, |p| p.running_max);
+        let (below, above) = (top(&self.left), top(&self.right));
+        [below <= above, above <= below]
     }
 
     pub(super) fn klingel_max_amplitude(&self) -> f64 {

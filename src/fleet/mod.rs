@@ -62,7 +62,7 @@ pub struct Summary {
 
 /// The summary of a run: the equivalent conicity by `settings`' method and the pair's
 /// parameters (from the run's conicity stage when it ran, else computed here from its rigid
-/// sweep by [`crate::conicity::assess_by_method`], the same values without the other
+/// sweep by [`crate::conicity::assess_by_method_on`], the same values without the other
 /// method's function), and the largest Hertz pressure if Hertz ran.
 ///
 /// # Panics
@@ -85,7 +85,8 @@ pub(crate) fn summarise(
                 .rigid
                 .as_ref()
                 .expect("a fleet run computes the rigid sweep");
-            let (function, parameters) = crate::conicity::assess_by_method(rigid, settings);
+            let (function, parameters) =
+                crate::conicity::assess_by_method_on(&results.placement, rigid, settings);
             (points(&function), parameters)
         }
     };

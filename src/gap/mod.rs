@@ -17,6 +17,7 @@
 mod bound;
 mod certify;
 mod contact;
+mod hollow;
 mod low;
 mod minimum;
 mod outline;

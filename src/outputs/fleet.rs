@@ -135,7 +135,7 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
             profile_names(&t.rail_profiles)
         ),
         super::tables::conicity_method_text(t.conicity.method).to_string(),
-        "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; units in the column names: _mm millimetres, _per_mm 1/mm, _rad radians, _MPa N/mm^2; tan_gamma_e dimensionless; contact_point_jumps a count".into(),
+        "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; units in the column names: _mm millimetres, _per_mm 1/mm, _rad radians, _MPa N/mm^2; tan_gamma_e dimensionless; contact_point_jumps and sampling_artefacts counts".into(),
     ];
     let inputs = fleet.inputs();
     if inputs.has_wheels() {

@@ -6,6 +6,7 @@ use crate::pipeline::Results;
 use crate::profile::Profile;
 use crate::profile::read::sha256_hex;
 use crate::report::{FigureEntry, ReportPage, TableEntry};
+use crate::rigid::JumpKind;
 use crate::scene::Scene;
 
 /// The report page of a scene's run, listing `figures` and `tables`.
@@ -58,12 +59,19 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
             .filter(|p| p.stop != crate::rigid::Stop::Converged)
             .map(|p| format!("{} mm ({})", p.y_ws, p.stop.status_text()))
             .collect();
+        let count = |kind: JumpKind| r.jumps().iter().filter(|j| j.kind == kind).count();
+        let artefacts = count(JumpKind::Artefact);
         if bad.is_empty() {
             summary.push(format!(
-                "Rigid search ({} solver): all {} positions converged; {} contact-point jumps.",
+                "Rigid search ({} solver): all {} positions converged; {} contact-point jumps{}.",
                 r.solver().name(),
                 r.positions().len(),
-                r.jumps().len()
+                count(JumpKind::Jump),
+                if artefacts > 0 {
+                    format!(" and {artefacts} sampling artefacts (drawn as continuous lines)")
+                } else {
+                    String::new()
+                }
             ));
         } else {
             notes.push(format!(
@@ -73,6 +81,9 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
         }
         for (y, label) in figures::flange_onsets(r) {
             summary.push(format!("{label} from y_ws = {y} mm."));
+        }
+        if artefacts >= MANY_ARTEFACTS {
+            notes.push(smoothing_hint(artefacts, scene.smoothing_wavelength_mm()));
         }
     }
     if let Some(h) = &results.hertz {
@@ -93,6 +104,29 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
         ));
     }
     (summary, notes)
+}
+
+/// From this many sampling artefacts on, the page suggests a filter on the profiles.
+const MANY_ARTEFACTS: usize = 10;
+
+/// The note of a sweep with `count` sampling artefacts, on profiles filtered with the
+/// wavelengths `smoothing` (mm, wheel and rail; 0 for none).
+fn smoothing_hint(count: usize, smoothing: [f64; 2]) -> String {
+    let filter = if smoothing.iter().all(|&w| w > 0.0) {
+        format!(
+            "a longer filter than the scene's (`smoothing_wavelength_mm` = {} mm for the wheel, {} mm for the rail)",
+            smoothing[0], smoothing[1]
+        )
+    } else {
+        format!(
+            "a filter on the profiles, `smoothing_wavelength_mm` under [wheel] and [rail] (it removes the waves shorter than about that length; {} mm is a good start)",
+            crate::profile::spline::DEFAULT_FILTER_WAVELENGTH_MM
+        )
+    };
+    format!(
+        "{count} sampling artefacts: the contact point of a sampled profile hops between undulations of its data that a hollow of the gap shallower than {} mm separates (rigid_jumps.csv, kind artefact). They are drawn as continuous lines and left out of the jumps; to remove them, {filter}.",
+        crate::rigid::ARTEFACT_HOLLOW_MM
+    )
 }
 
 /// The scene's keys shown on the page, as `(name, value)`.

@@ -7,7 +7,7 @@ use crate::hertz::accuracy::HertzAccuracy;
 use crate::pipeline::EpsilonSweeps;
 use crate::quasi_elastic::QuasiElasticSweep;
 use crate::report::{Table, TableBuilder, TableError};
-use crate::rigid::{RigidSweep, Stop};
+use crate::rigid::{ARTEFACT_HOLLOW_MM, JUMP_REFINE_MM, JumpKind, RigidSweep, Stop};
 use crate::track::{PlacedRail, PlacedWheel, Side};
 
 /// Sampling step of the profile tables (mm).
@@ -158,7 +158,7 @@ pub fn rigid(sweep: &RigidSweep) -> Result<Table, TableError> {
         .comment(format!("rigid contact, solver {}", sweep.solver().name()))
         .comment(TRACK_FRAME)
         .comment(PER_WHEEL)
-        .comment("z_ws_mm relative to the centred wheelset; r_mm rolling radius; second_s_mm a second contact point within 0.01 mm of touching (NaN if none); jump_after 1 where the contact point jumps before the next position (see rigid_jumps.csv)")
+        .comment("z_ws_mm relative to the centred wheelset; r_mm rolling radius; second_s_mm a second contact point within 0.01 mm of touching (NaN if none); jump_after 1 where the contact point jumps before the next position, 2 where it hops across a sampling artefact (see rigid_jumps.csv)")
         .comment(format!("Wickens: lambda = delta_r/(2 y_ws), epsilon = l0 (tan gamma_l - tan gamma_r)/(2 y_ws), sigma = l0 roll/y_ws, l0 = {l0:.6} mm; NaN at y_ws = 0"));
     let yawed = sweep.yaw().is_yawed();
     if yawed {
@@ -223,11 +223,20 @@ fn rigid_side_columns(t: TableBuilder, sweep: &RigidSweep, side: Side) -> TableB
             .positions()
             .get(i + 1)
             .map_or(f64::INFINITY, |p| p.y_ws);
-        let jumps = sweep
-            .jumps()
-            .iter()
-            .any(|j| j.side == side && j.y_from >= y0 && j.y_to <= y1);
-        if jumps { 1.0 } else { 0.0 }
+        // 1 for a jump, 2 for a sampling artefact (a jump wins where a step holds both).
+        let within = |kind: JumpKind| {
+            sweep
+                .jumps()
+                .iter()
+                .any(|j| j.side == side && j.kind == kind && j.y_from >= y0 && j.y_to <= y1)
+        };
+        if within(JumpKind::Jump) {
+            1.0
+        } else if within(JumpKind::Artefact) {
+            2.0
+        } else {
+            0.0
+        }
     });
     contact_columns(
         t,
@@ -336,13 +345,26 @@ fn converged(sweep: &RigidSweep, f: impl Fn(&crate::rigid::RigidPosition) -> f64
 pub fn rigid_jumps(sweep: &RigidSweep) -> Result<Table, TableError> {
     let j = &sweep.jumps();
     Table::builder()
-        .comment("intervals of y_ws across which a rigid contact point jumps, refined by bisection to 1e-4 mm")
+        .comment(format!("intervals of y_ws across which a rigid contact point jumps; kind jump: refined to {JUMP_REFINE_MM} mm; kind artefact: a sampled profile's contact point hopping between two minima of the gap that a hollow shallower than {ARTEFACT_HOLLOW_MM} mm separates, over the sweep step that holds it (not refined; continuous in delta_r and in the charts)"))
+        .comment("hollow_mm: how far the gap rises between the two contact points above the higher of them, where they exchange (NaN, with the reason in hollow_status, where they could not be followed to one pose)")
         .comment(PER_WHEEL)
         .text("side", j.iter().map(|j| j.side.name()))
         .numeric("y_from_mm", j.iter().map(|j| j.y_from).collect::<Vec<_>>())
         .numeric("y_to_mm", j.iter().map(|j| j.y_to).collect::<Vec<_>>())
         .numeric("s_from_mm", j.iter().map(|j| j.s_from).collect::<Vec<_>>())
         .numeric("s_to_mm", j.iter().map(|j| j.s_to).collect::<Vec<_>>())
+        .text("kind", j.iter().map(|j| j.kind.name()))
+        .numeric("hollow_mm", j.iter().map(|j| j.hollow_mm).collect::<Vec<_>>())
+        .text(
+            "hollow_status",
+            j.iter().map(|j| {
+                if j.hollow_mm.is_finite() {
+                    "ok"
+                } else {
+                    "not measured: the two contacts could not be followed to one pose (kind jump)"
+                }
+            }),
+        )
         .build()
 }
 

@@ -125,22 +125,37 @@ fn continuation(
     indices: impl Iterator<Item = usize>,
     centre_roll: f64,
 ) -> Vec<RigidPosition> {
+    continued(solve, &[], indices.map(|i| shifts[i]), centre_roll)
+}
+
+/// The positions at the shifts `ys`, in that order, continued from the converged positions
+/// `before` (in the order they were solved, the last nearest the first shift; none: from
+/// the roll `roll`), each started from the roll the positions before it predict (and, for
+/// the default solver, its contacts' basins where the continuation predicts the contact
+/// points).
+pub(super) fn continued(
+    solve: &PositionSolver,
+    before: &[RigidPosition],
+    ys: impl Iterator<Item = f64>,
+    roll: f64,
+) -> Vec<RigidPosition> {
     let mut scratch = Scratch::default();
-    let mut path = Continuation::new(centre_roll);
+    let mut path = Continuation::new(roll);
+    for p in before {
+        path.push(p);
+    }
     let mut local = Local::new(solve);
-    indices
-        .map(|i| {
-            let y = shifts[i];
-            if let Solver::Default(settings) = solve.solver()
-                && scratch.warm
-            {
-                scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
-            }
-            let p = local.at(y).solve(y, path.predict(y), &mut scratch, None);
-            path.push(&p);
-            p
-        })
-        .collect()
+    ys.map(|y| {
+        if let Solver::Default(settings) = solve.solver()
+            && scratch.warm
+        {
+            scratch.move_contact_basins(path.moved_contacts(y), settings.same_minimum_mm);
+        }
+        let p = local.at(y).solve(y, path.predict(y), &mut scratch, None);
+        path.push(&p);
+        p
+    })
+    .collect()
 }
 
 /// The contact-point jumps between neighbouring `positions`, in the windows' order (the
@@ -186,13 +201,18 @@ fn jumps_of(solve: &PositionSolver, part: &[RigidPosition], scratch: &mut Scratc
 }
 
 /// The jumps of the windows of `part`, refined one after the other with `scratch`.
-fn jumps_in(solve: &PositionSolver, part: &[RigidPosition], scratch: &mut Scratch) -> Vec<Jump> {
+pub(super) fn jumps_in(
+    solve: &PositionSolver,
+    part: &[RigidPosition],
+    scratch: &mut Scratch,
+) -> Vec<Jump> {
     let refinement = Refinement {
         // The level wheelset's wheels are solved one at a time.
         separable: *solve.solver() == Solver::NoRoll,
         // The paper's iteration certifies nothing: its refinements have no certificates
         // to skip.
         certifying: *solve.solver() != Solver::Paper,
+        artefacts_unrefined: true,
     };
     find_jumps(&mut Local::new(solve), part, refinement, scratch)
 }

@@ -4,7 +4,10 @@
 
 use super::level::join_sides;
 use super::minima::Scratch;
-use super::{JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, RigidPosition, side_index};
+use super::{
+    ARTEFACT_HOLLOW_MM, JUMP_CONFIRM_MM, JUMP_REFINE_MM, JUMP_SCREEN_MM, Jump, JumpKind,
+    RigidPosition, side_index,
+};
 use crate::gap::{self, GapPoint, PoseBox, Scanned, SideGap};
 use crate::track::Side;
 
@@ -59,6 +62,10 @@ pub(super) struct Refinement {
     /// against 9.09 M instructions); a sweep of 31 positions in 1 mm steps 8.93 against
     /// 9.80 M instructions.
     pub(super) certifying: bool,
+    /// Whether a candidate is first examined as a sampling artefact, which is then not
+    /// refined (every sweep); `false`: every candidate is refined and classified by the
+    /// hollow at its refined ends (the tests' reference for the first).
+    pub(super) artefacts_unrefined: bool,
 }
 
 /// Finds the intervals of `y_ws` across which a contact point jumps, refined to
@@ -102,6 +109,7 @@ pub(super) fn find_jumps<'a>(
     Refinement {
         separable,
         certifying,
+        artefacts_unrefined,
     }: Refinement,
     scratch: &mut Scratch,
 ) -> Vec<Jump> {
@@ -117,6 +125,13 @@ pub(super) fn find_jumps<'a>(
                 continue;
             }
             let k = side_index(side);
+            if let Some(artefact) = artefacts_unrefined
+                .then(|| unrefined_artefact(solver, side, w))
+                .flatten()
+            {
+                jumps.push(artefact);
+                continue;
+            }
             let task = Task { side, separable };
             steps.clear();
             let record = certifying.then_some(&mut steps);
@@ -155,6 +170,8 @@ pub(super) fn find_jumps<'a>(
                 join_sides(&p, &ask.solve(solver, p.y_ws, p.roll, scratch), k)
             };
             let (pa, pb) = (whole(pa), whole(pb));
+            let hollow = refined_hollow(solver, k, &pa, &pb, ca.s, cb.s);
+            let sampled = solver.sides_at(pa.y_ws)[k].is_sampled();
             jumps.push(Jump {
                 side,
                 y_from: pa.y_ws,
@@ -163,6 +180,12 @@ pub(super) fn find_jumps<'a>(
                 s_to: cb.s,
                 delta_r_from: pa.delta_r(),
                 delta_r_to: pb.delta_r(),
+                hollow_mm: hollow,
+                kind: if sampled && hollow < ARTEFACT_HOLLOW_MM {
+                    JumpKind::Artefact
+                } else {
+                    JumpKind::Jump
+                },
             });
         }
     }
@@ -335,6 +358,7 @@ impl Task {
     /// Narrows the window `w` on this wheel (see [`find_jumps`]): provisionally, recording
     /// each solve in `steps`, or (`None`) certified, the first solves being `known` (the
     /// certified positions of those steps).
+    #[inline(never)]
     fn refine<'a>(
         &self,
         w: &[RigidPosition],
@@ -427,6 +451,167 @@ fn next_shifts(root: Option<f64>, lo: f64, hi: f64) -> ([f64; 2], usize) {
     }
 }
 
+/// The artefact in the window `w` of a sweep where the contact point of `side` moves far,
+/// without refining it, where the side's profiles are sampled: the two minima of the gap
+/// that hold the contact at the window's ends, `A` (at the first) and `B` (at the second),
+/// are followed (each within half their distance) at poses between the ends, the roll
+/// there linear between the ends', to where they exchange the role of the lowest (see
+/// [`exchange`]); there the hollow between them is measured. Two minima at least
+/// [`JUMP_CONFIRM_MM`] apart (what a refined jump must move the contact point) with a
+/// hollow shallower than
+/// [`ARTEFACT_HOLLOW_MM`] (after adding the difference of their heights, by which the pose
+/// may miss the exchange) is an artefact, reported over the window; anything else (`None`:
+/// a deeper hollow, minima that cannot be followed, a contact point that moves continuously)
+/// is refined as a jump (and dropped if its contact point only moves fast).
+#[inline(never)]
+fn unrefined_artefact<'a>(
+    solver: &mut impl Refine<'a>,
+    side: super::Side,
+    w: &[RigidPosition],
+) -> Option<Jump> {
+    let k = side_index(side);
+    let (pa, pb) = (&w[0], &w[1]);
+    let (ca, cb) = (pa.side(side)?, pb.side(side)?);
+    if !solver.sides_at(pa.y_ws)[k].is_sampled() {
+        return None;
+    }
+    let (pose_y, a, b) = exchange(solver, k, (pa, pb), (ca.s, cb.s))?;
+    let gap = &solver.sides_at(pose_y.0)[k];
+    let pose = gap.pose(pose_y.0, pose_y.1);
+    let hollow = gap.hollow(&pose, (a.s, a.g), (b.s, b.g))?;
+    // Two minima, as far apart as a confirmed jump moves the contact point.
+    let two = hollow > RIDGE_MM && (a.s - b.s).abs() > JUMP_CONFIRM_MM;
+    (two && hollow + (a.g - b.g).abs() < ARTEFACT_HOLLOW_MM).then_some(Jump {
+        side,
+        y_from: pa.y_ws,
+        y_to: pb.y_ws,
+        s_from: ca.s,
+        s_to: cb.s,
+        delta_r_from: pa.delta_r(),
+        delta_r_to: pb.delta_r(),
+        hollow_mm: hollow,
+        kind: JumpKind::Artefact,
+    })
+}
+
+/// The least rise of the gap between two points found as minima for them to be two minima
+/// (mm): two minima of a smooth function have a ridge between them; a rise below this,
+/// a thousand times the rounding of gaps near `-r0` (1e-13 mm), is one basin (a contact
+/// point that moves continuously, found twice), and the window is refined as before.
+const RIDGE_MM: f64 = 1e-10;
+
+/// Two minima whose heights differ by less than this are at their exchange for
+/// [`exchange`] (mm): a tenth of [`ARTEFACT_HOLLOW_MM`], which their difference is added to.
+pub(super) const EXCHANGE_HEIGHT_MM: f64 = 0.1 * ARTEFACT_HOLLOW_MM;
+
+/// Halvings of a window by which [`exchange`] narrows the shift where two minima exchange
+/// the role of the lowest, at most: a window of 0.1 mm to 0.8 µm of shift, where their
+/// heights differ by at most 1e-6 mm (their slopes in the shift differ by less than 1), far
+/// below [`EXCHANGE_HEIGHT_MM`], which ends it sooner. The minima of the small hops of a
+/// sampled profile coexist over a few micrometres of shift only (two of E1's are found at
+/// the seventh halving, not the fifth). A window where the two are never found at one pose
+/// by then (most often a contact point that moves continuously) is refined.
+const EXCHANGE_HALVINGS: usize = 7;
+
+/// Where the minimum `A` of the gap of wheel `k` (the contact at `pa`, at `s_a`) and the
+/// minimum `B` (the contact at `pb`, at `s_b`) exchange the role of the lowest: the pose
+/// `(y_ws, roll)` that bisection on `g_A - g_B` ends on, with both minima there. Each is
+/// followed from where it was last found, in a bracket of its own (split halfway between
+/// the two, reaching out by half their first distance); where only `A` is
+/// found, `B` has not appeared yet (the exchange lies beyond), where only `B`, `A` has gone
+/// (it lies before). Minima only, no positions solved: a pose costs two local
+/// minimisations. `None` when the two are never found at one pose (a contact point that
+/// moves continuously, or minima that cannot be followed).
+fn exchange<'a>(
+    solver: &mut impl Refine<'a>,
+    k: usize,
+    (pa, pb): (&RigidPosition, &RigidPosition),
+    (s_a, s_b): (f64, f64),
+) -> Option<((f64, f64), GapPoint, GapPoint)> {
+    let follow = Follow::within_half(s_a, s_b);
+    let (mut lo, mut hi) = (0.0, 1.0);
+    let (mut last_a, mut last_b) = (s_a, s_b);
+    let mut best = None;
+    for _ in 0..EXCHANGE_HALVINGS {
+        let t = 0.5 * (lo + hi);
+        let y = pa.y_ws + t * (pb.y_ws - pa.y_ws);
+        let roll = pa.roll + t * (pb.roll - pa.roll);
+        let gap = &solver.sides_at(y)[k];
+        let pose = gap.pose(y, roll);
+        // Each in its own bracket, split halfway between where they were last found, so
+        // that the two are never one minimum found twice.
+        let (split, reach) = (0.5 * (last_a + last_b), follow.reach);
+        let outwards = if last_a < last_b { -1.0 } else { 1.0 };
+        let bracket = |from: f64, to: f64| (from.min(to), from.max(to));
+        let a = gap.minimum_within(bracket(last_a + outwards * reach, split), last_a, &pose);
+        let b = gap.minimum_within(bracket(split, last_b - outwards * reach), last_b, &pose);
+        match (a, b) {
+            (Some(a), Some(b)) if (a.s - b.s).abs() > follow.apart => {
+                (last_a, last_b) = (a.s, b.s);
+                if a.g < b.g {
+                    lo = t;
+                } else {
+                    hi = t;
+                }
+                best = Some(((y, roll), a, b));
+                if (a.g - b.g).abs() <= EXCHANGE_HEIGHT_MM {
+                    // Close enough to the exchange: the hollow here is the hollow there
+                    // to within this.
+                    return best;
+                }
+            }
+            (Some(a), None) => {
+                last_a = a.s;
+                lo = t;
+            }
+            (None, Some(b)) => {
+                last_b = b.s;
+                hi = t;
+            }
+            _ => return best,
+        }
+    }
+    best
+}
+
+/// The hollow of a refined jump between `pa` (contact at `s_a`) and `pb` (at `s_b`): at
+/// `pa`'s pose, between its contact and the minimum followed from `s_b`, or at `pb`'s the
+/// other way round (mm); NaN where neither can be followed.
+#[inline(never)]
+fn refined_hollow<'a>(
+    solver: &mut impl Refine<'a>,
+    k: usize,
+    pa: &RigidPosition,
+    pb: &RigidPosition,
+    s_a: f64,
+    s_b: f64,
+) -> f64 {
+    [pa, pb]
+        .into_iter()
+        .find_map(|p| {
+            let gap = &solver.sides_at(p.y_ws)[k];
+            let pose = gap.pose(p.y_ws, p.roll);
+            let follow = Follow::within_half(s_a, s_b);
+            let (a, b) = competing_minima(gap, &pose, s_a, s_b, follow)?;
+            gap.hollow(&pose, (a.s, a.g), (b.s, b.g))
+        })
+        .unwrap_or(f64::NAN)
+}
+
+/// The minima of the gap at `pose` followed from `s_a` and from `s_b` as `follow` says,
+/// when both exist and are two.
+fn competing_minima(
+    gap: &SideGap,
+    pose: &gap::SidePose,
+    s_a: f64,
+    s_b: f64,
+    Follow { reach, apart }: Follow,
+) -> Option<(GapPoint, GapPoint)> {
+    let a = gap.minimum_within((s_a - reach, s_a + reach), s_a, pose)?;
+    let b = gap.minimum_within((s_b - reach, s_b + reach), s_b, pose)?;
+    ((a.s - b.s).abs() > apart).then_some((a, b))
+}
+
 /// How far a competing minimum is followed from where it was (mm): across a jump interval
 /// of 0.1 mm the contact points move by a few tenths of a millimetre.
 const FOLLOW_REACH_MM: f64 = 1.0;
@@ -453,13 +638,50 @@ fn competing_root<'a>(
     s_a: f64,
     s_b: f64,
 ) -> Option<f64> {
+    crossing(solver, k, (pa, pb), (s_a, s_b), Follow::ACROSS_BASINS)
+}
+
+/// How two competing minima are followed: how far from where they were (mm), and how far
+/// apart they must stay to count as two (mm).
+#[derive(Clone, Copy)]
+struct Follow {
+    reach: f64,
+    apart: f64,
+}
+
+impl Follow {
+    /// The refinement's: [`FOLLOW_REACH_MM`], and minima in two basins
+    /// ([`gap::SAME_BASIN_MM`]).
+    const ACROSS_BASINS: Follow = Follow {
+        reach: FOLLOW_REACH_MM,
+        apart: gap::SAME_BASIN_MM,
+    };
+
+    /// Two minima `s_a` and `s_b` apart, each followed within half that distance (at most
+    /// [`FOLLOW_REACH_MM`]), so that neither is followed into the other; any two distinct
+    /// points count (the hops of a contact point between neighbouring undulations of a
+    /// sampled profile, a few tenths of a millimetre).
+    fn within_half(s_a: f64, s_b: f64) -> Follow {
+        Follow {
+            reach: (0.5 * (s_a - s_b).abs()).min(FOLLOW_REACH_MM),
+            apart: 0.0,
+        }
+    }
+}
+
+/// [`competing_root`] with the minima followed as `follow` says.
+fn crossing<'a>(
+    solver: &mut impl Refine<'a>,
+    k: usize,
+    (pa, pb): (&RigidPosition, &RigidPosition),
+    (s_a, s_b): (f64, f64),
+    follow: Follow,
+) -> Option<f64> {
     let mut h = |p: &RigidPosition| -> Option<f64> {
         let side = &solver.sides_at(p.y_ws)[k];
         let pose = side.pose(p.y_ws, p.roll);
-        let reach = FOLLOW_REACH_MM;
-        let a = side.minimum_within((s_a - reach, s_a + reach), s_a, &pose)?;
-        let b = side.minimum_within((s_b - reach, s_b + reach), s_b, &pose)?;
-        ((a.s - b.s).abs() > gap::SAME_BASIN_MM).then_some(a.g - b.g)
+        let (a, b) = competing_minima(side, &pose, s_a, s_b, follow)?;
+        Some(a.g - b.g)
     };
     let (ha, hb) = (h(pa)?, h(pb)?);
     (ha < 0.0 && hb > 0.0).then(|| pa.y_ws - ha * (pb.y_ws - pa.y_ws) / (hb - ha))
@@ -578,6 +800,7 @@ mod tests {
             Refinement {
                 separable: false,
                 certifying: true,
+                artefacts_unrefined: true,
             },
             &mut scratch,
         );
@@ -610,6 +833,7 @@ mod tests {
                 Refinement {
                     separable: false,
                     certifying: true,
+                    artefacts_unrefined: true,
                 },
                 &mut scratch,
             );

@@ -94,7 +94,7 @@ pub(super) fn join_sides(a: &RigidPosition, b: &RigidPosition, k: usize) -> Rigi
 #[cfg(test)]
 mod tests {
     use super::super::jumps::{Ask, Fixed, Refinement, find_jumps};
-    use super::super::{Jump, Solver, search};
+    use super::super::{Jump, JumpKind, Solver, search};
     use super::*;
     use crate::scene::Scene;
     use crate::sweep::Mirrored;
@@ -116,6 +116,17 @@ mod tests {
         sides: &[SideGap; 2],
         positions: &[RigidPosition],
         separable: bool,
+        provisional: impl FnMut(Ask) -> bool,
+    ) -> Vec<Jump> {
+        level_jumps_with(sides, positions, separable, true, provisional)
+    }
+
+    /// [`level_jumps`], with the artefacts found before refining or not.
+    fn level_jumps_with(
+        sides: &[SideGap; 2],
+        positions: &[RigidPosition],
+        separable: bool,
+        artefacts_unrefined: bool,
         mut provisional: impl FnMut(Ask) -> bool,
     ) -> Vec<Jump> {
         let mut scratch = Scratch::default();
@@ -128,9 +139,59 @@ mod tests {
             Refinement {
                 separable,
                 certifying: true,
+                artefacts_unrefined,
             },
             &mut scratch,
         )
+    }
+
+    /// Classifying a candidate before refining it, and leaving its artefacts unrefined,
+    /// finds what refining every candidate and classifying it by the hollow at its refined
+    /// ends finds, on the EN 15302 reference pair (34 artefacts, 2 jumps in ±7 mm): the same
+    /// jumps to the bit, each artefact in the sweep step that holds the refined one, with
+    /// its hollow within `EXCHANGE_HEIGHT_MM` (2e-4 mm) + 1e-5 mm of the one at the refined
+    /// end (each is measured above the higher of the two minima where their heights differ
+    /// by up to as much: by the bisection's stop, and by 1e-4 mm of shift times the
+    /// difference of their slopes); and the refined artefacts are all there is to classify
+    /// as such (the refinement drops none that the classification keeps). The unrefined
+    /// search solves 3.6 times fewer positions (150 against 539).
+    #[test]
+    fn artefacts_left_unrefined_are_those_refined() {
+        let (scene, placement) = en15302_e1();
+        let placement = placement.clone().without_mirroring();
+        let sweep = search(&placement, scene.sweep(), Solver::NoRoll);
+        let sides = SideGap::both(&placement);
+        let [(fast, fast_solves), (slow, slow_solves)] = [true, false].map(|unrefined| {
+            let mut solves = 0;
+            let jumps = level_jumps_with(&sides, &sweep.positions, true, unrefined, |ask| {
+                solves += 1;
+                !ask.certified
+            });
+            (jumps, solves)
+        });
+        let kinds = |j: &[Jump], kind: JumpKind| j.iter().filter(|j| j.kind == kind).count();
+        assert_eq!(kinds(&fast, JumpKind::Jump), 2);
+        assert_eq!(kinds(&fast, JumpKind::Artefact), 34);
+        assert_eq!(fast.len(), slow.len(), "{fast:#?}\n{slow:#?}");
+        for (f, s) in fast.iter().zip(&slow) {
+            assert_eq!((f.side, f.kind), (s.side, s.kind), "{f:?} vs {s:?}");
+            if f.kind == JumpKind::Jump {
+                assert_eq!(format!("{f:?}"), format!("{s:?}"));
+                continue;
+            }
+            assert!(f.y_from <= s.y_from && s.y_to <= f.y_to, "{f:?} vs {s:?}");
+            assert!(f.y_to - f.y_from < 0.1 + 1e-9, "{f:?}");
+            let tolerance = super::super::jumps::EXCHANGE_HEIGHT_MM + 1e-5;
+            assert!(
+                (f.hollow_mm - s.hollow_mm).abs() <= tolerance,
+                "{f:?} vs {s:?}"
+            );
+        }
+        eprintln!("{fast_solves} solves unrefined, {slow_solves} refined");
+        assert!(
+            3 * fast_solves < slow_solves,
+            "{fast_solves} vs {slow_solves}"
+        );
     }
 
     /// Two halves joined are the position solved for both wheels at once, bit for bit

@@ -3,7 +3,7 @@
 use super::profiles::drawn_profiles;
 use super::{LEFT, RIGHT, RIGID, SHIFT};
 use crate::report::{Chart, Figure, Series};
-use crate::rigid::{RigidPosition, RigidSweep, SideContact, Stop};
+use crate::rigid::{JumpKind, RigidPosition, RigidSweep, SideContact, Stop};
 use crate::track::{Placement, Side};
 
 /// Vertical offset of the wheel above the rail in contact maps (mm), so that the lines
@@ -11,7 +11,8 @@ use crate::track::{Placement, Side};
 const MAP_LIFT_MM: f64 = 8.0;
 
 /// A series of one per-wheel quantity over a rigid sweep, broken at jumps of that wheel's
-/// contact point and at positions that did not converge.
+/// contact point (not at sampling artefacts, which are drawn as continuous) and at
+/// positions that did not converge.
 pub(super) fn rigid_series(
     sweep: &RigidSweep,
     side: Side,
@@ -24,10 +25,12 @@ pub(super) fn rigid_series(
             _ => out.push((p.y_ws, f64::NAN)),
         }
         if let Some(next) = sweep.positions().get(i + 1)
-            && sweep
-                .jumps()
-                .iter()
-                .any(|j| j.side == side && j.y_from >= p.y_ws && j.y_to <= next.y_ws)
+            && sweep.jumps().iter().any(|j| {
+                j.side == side
+                    && j.kind == JumpKind::Jump
+                    && j.y_from >= p.y_ws
+                    && j.y_to <= next.y_ws
+            })
         {
             out.push((f64::NAN, f64::NAN));
         }
@@ -35,7 +38,8 @@ pub(super) fn rigid_series(
     out
 }
 
-/// A wheelset quantity over a rigid sweep, broken where either contact point jumps.
+/// A wheelset quantity over a rigid sweep, broken where either contact point jumps (not at
+/// sampling artefacts).
 fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&RigidPosition) -> f64) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(sweep.positions().len());
     for (i, p) in sweep.positions().iter().enumerate() {
@@ -51,7 +55,7 @@ fn rigid_wheelset_series(sweep: &RigidSweep, f: impl Fn(&RigidPosition) -> f64) 
             && sweep
                 .jumps()
                 .iter()
-                .any(|j| j.y_from >= p.y_ws && j.y_to <= next.y_ws)
+                .any(|j| j.kind == JumpKind::Jump && j.y_from >= p.y_ws && j.y_to <= next.y_ws)
         {
             out.push((f64::NAN, f64::NAN));
         }
@@ -120,10 +124,7 @@ pub(crate) fn contact_points(placement: &Placement, sweep: &RigidSweep) -> Figur
 
 /// Rolling radius difference against the shift (paper Fig. 2).
 pub(crate) fn rolling_radius(sweep: &RigidSweep) -> Figure {
-    let dr = |p: &RigidPosition| match p.contact {
-        [Some(l), Some(r)] => l.r - r.r,
-        _ => f64::NAN,
-    };
+    let dr = |p: &RigidPosition| p.delta_r();
     Figure::single(with_onsets(
         Chart::new(
             "Rolling radius difference",
