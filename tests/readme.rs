@@ -49,3 +49,12 @@ fn the_library_example_is_the_examples() {
         );
     }
 }
+
+/// The README is for users: what the tool does, how to run and use it, what it was
+/// validated against and how fast it is, in at most 450 lines; the record of measurements
+/// lives in `docs/`.
+#[test]
+fn the_readme_stays_short() {
+    let lines = readme().lines().count();
+    assert!(lines <= 450, "README.md has {lines} lines, at most 450");
+}
