@@ -435,7 +435,7 @@ pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
 /// continued outwards), so that an off-centre pair (wheels of different radii, EN 15302
 /// cases E5 to E8) gets every amplitude up to [`STANDARD_MAX_AMPLITUDE_MM`] (or the largest
 /// of `settings.amplitudes_mm`) without a wider sweep in the scene. Only the shifts the
-/// motions need are solved, as far as [`WIDEST_SHIFT_MM`]. The parameters that describe the
+/// motions need are solved, as far as 20 mm (`WIDEST_SHIFT_MM`). The parameters that describe the
 /// sweep (flange contact, jumps) are `sweep`'s own; `tan γe` and Δr at ±3 mm come from the
 /// widened Δr function. Where `sweep` already reaches far enough, this is [`assess`].
 ///

@@ -250,7 +250,7 @@ pub fn resolved_delta_r(delta_r: f64) -> f64 {
 pub enum JumpKind {
     /// The contact point jumps between two contacts separated by a hollow of the gap at
     /// least [`ARTEFACT_HOLLOW_MM`] deep (a tread-to-flange jump, a two-point contact):
-    /// located to [`JUMP_REFINE_MM`], a step of Δr, a break in the charts.
+    /// located to 1e-4 mm, a step of Δr, a break in the charts.
     Jump,
     /// A sampling artefact: the contact point hops between two minima of the gap of a
     /// sampled profile that a hollow shallower than [`ARTEFACT_HOLLOW_MM`] separates. Not
@@ -291,7 +291,7 @@ pub const ARTEFACT_HOLLOW_MM: f64 = 2e-3;
 pub struct Jump {
     /// The wheel whose contact point jumps.
     pub side: Side,
-    /// Lower end of the interval (mm): of a jump, refined to [`JUMP_REFINE_MM`]; of an
+    /// Lower end of the interval (mm): of a jump, refined to 1e-4 mm; of an
     /// artefact, the sweep position before it.
     pub y_from: f64,
     /// Upper end of the interval (mm).
