@@ -1,5 +1,5 @@
 """Equivalent conicity against track gauge: the EN 15302 reference pair R-UIC519A on
-S-UIC519A (rails inclined 1:20), gauge 1432 to 1440 mm.
+S-UIC519A (rails inclined 1:20), gauge 1432 to 1440 mm and the standard's reference gauge.
 
 A study no single command does: tan γe(3 mm) as the gauge widens or closes, for the
 wheelset held level (the rolling radius difference of EN 15302 Annex E) and with its roll
@@ -23,7 +23,10 @@ import numpy as np
 import wheelrail
 
 DATA = Path(__file__).resolve().parents[2] / "tests" / "data" / "en15302"
-GAUGES_MM = np.arange(1432.0, 1440.0 + 0.25, 0.5)
+# Every half millimetre, and the gauge of EN 15302's reference calculation (the committed
+# scene's: 1435.16 mm, which puts E3's jump where Annex E has it).
+REFERENCE_GAUGE_MM = 1435.16
+GAUGES_MM = np.sort(np.append(np.arange(1432.0, 1440.0 + 0.25, 0.5), REFERENCE_GAUGE_MM))
 SHIFTS_MM = np.round(np.arange(-75, 76) * 0.1, 9)  # -7.5 .. 7.5 mm, as the scene's sweep
 
 
@@ -56,7 +59,7 @@ def main():
 
     print("gauge_mm,tan_gamma_e_3mm_level,tan_gamma_e_3mm_roll_solved")
     for g, a, b in zip(GAUGES_MM, level, rolled):
-        print(f"{g:.1f},{a:.4f},{b:.4f}")
+        print(f"{g:.2f},{a:.4f},{b:.4f}")
 
     try:
         import matplotlib
