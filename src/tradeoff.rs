@@ -9,6 +9,11 @@
 //!   that a change of the heaviest patch is not counted as an error of its size);
 //! - `roll_rad`; `a_rel`, `b_rel`, `p0_rel`: relative errors of the Hertz results where both
 //!   the setting and the reference have an ellipse.
+//!
+//! [`fastsim`] measures FASTSIM's discretisation the same way (its grids timed in rounds of
+//! random order after a warm-up, errors against a converged grid).
+
+pub mod fastsim;
 
 use crate::hertz::{self, EllipseMethod};
 use crate::pipeline::{self, Stage};
@@ -272,41 +277,74 @@ fn study_on_this_thread(
 ) -> Result<Vec<Measurement>, crate::Error> {
     let reference_setting = reference_setting();
     let reference = run_once(scene, &reference_setting)?;
-    let rounds = 1 + repeats.max(1);
-    let total = rounds * settings.len();
-    let mut rng = SplitMix64::new(ORDER_SEED);
     let mut errors_of: Vec<Option<Errors>> = vec![None; settings.len()];
-    let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds - 1); settings.len()];
+    let labels: Vec<&str> = settings.iter().map(|s| s.label.as_str()).collect();
+    let timings = timed_rounds(&labels, repeats, &mut progress, |i, warm_up| {
+        let run = run_once(scene, &settings[i])?;
+        if warm_up {
+            errors_of[i] = Some(errors(&reference, &run));
+        }
+        Ok::<(), crate::Error>(())
+    })?;
+    Ok(settings
+        .iter()
+        .zip(timings)
+        .zip(errors_of)
+        .map(|((setting, timing), errors)| Measurement {
+            setting: setting.clone(),
+            median_s: timing.median_s,
+            range_s: timing.range_s,
+            errors: errors.expect("every setting ran in the warm-up round"),
+        })
+        .collect())
+}
+
+/// The median and the fastest and slowest of one item's timed runs, s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Timing {
+    /// Median of the timed runs, s.
+    pub median_s: f64,
+    /// Fastest and slowest of the timed runs, s.
+    pub range_s: (f64, f64),
+}
+
+/// Times `run(i, warm_up)` for each item `i` of `labels`: a warm-up round (each item once,
+/// untimed, `warm_up` true) and `repeats` (at least 1) timed rounds, every round over all
+/// items in its own random order from [`ORDER_SEED`]. The warm-up pays for an item's first
+/// use of code and data (measured on the scene study: its first setting 1.5 times slower
+/// than its twin). `progress(done, total, label)` is called before each run and once at the
+/// end (`done == total`, label `done`).
+fn timed_rounds<E>(
+    labels: &[&str],
+    repeats: usize,
+    progress: &mut impl FnMut(usize, usize, &str),
+    mut run: impl FnMut(usize, bool) -> Result<(), E>,
+) -> Result<Vec<Timing>, E> {
+    let rounds = 1 + repeats.max(1);
+    let total = rounds * labels.len();
+    let mut rng = SplitMix64::new(ORDER_SEED);
+    let mut times: Vec<Vec<f64>> = vec![Vec::with_capacity(rounds - 1); labels.len()];
     let mut done = 0;
     for round in 0..rounds {
-        for i in rng.permutation(settings.len()) {
-            let setting = &settings[i];
-            progress(done, total, &setting.label);
+        for i in rng.permutation(labels.len()) {
+            progress(done, total, labels[i]);
             done += 1;
             let start = Instant::now();
-            let run = run_once(scene, setting)?;
+            run(i, round == 0)?;
             let elapsed = start.elapsed().as_secs_f64();
-            if round == 0 {
-                // The warm-up: the first run of a setting pays for its first use of code and
-                // data (measured: the first setting of the grid 1.5 times slower than its twin).
-                errors_of[i] = Some(errors(&reference, &run));
-            } else {
+            if round > 0 {
                 times[i].push(elapsed);
             }
         }
     }
     progress(total, total, "done");
-    Ok(settings
-        .iter()
-        .zip(times)
-        .zip(errors_of)
-        .map(|((setting, mut times), errors)| {
+    Ok(times
+        .into_iter()
+        .map(|mut times| {
             times.sort_by(f64::total_cmp);
-            Measurement {
-                setting: setting.clone(),
+            Timing {
                 median_s: median(&times),
                 range_s: (times[0], times[times.len() - 1]),
-                errors: errors.expect("every setting ran in the warm-up round"),
             }
         })
         .collect())
@@ -416,53 +454,135 @@ pub fn pareto_indices(points: &[(f64, f64)]) -> Vec<usize> {
     front
 }
 
-/// What the tradeoff chart shows of one setting: its label, median time and the two errors
-/// it plots. From a [`Measurement`], or from a row of `tradeoff.csv` ([`chart_points`]), so
-/// that the chart can be drawn again without measuring again.
+/// What a study's chart shows of one point (a setting, or a FASTSIM grid): its label,
+/// median time and the two errors its panels plot. From a [`Measurement`] or a
+/// [`fastsim::GridMeasurement`], or from a row of the study's table ([`chart_points`],
+/// [`fastsim::chart_points`]), so that the chart can be drawn again without measuring again.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChartPoint {
-    /// The setting's label.
+    /// The setting's or grid's label.
     pub label: String,
-    /// Median run time, ms.
-    pub median_ms: f64,
-    /// Rigid contact position error, mm.
-    pub contact_mm: f64,
-    /// The larger relative error of the semi-axes a and b.
-    pub ellipse_rel: f64,
+    /// Median run time: ms for a setting (a run of the scene), µs for a grid (one patch).
+    pub median: f64,
+    /// The errors of the two panels: for a setting the rigid contact position error (mm) and
+    /// the larger relative error of the semi-axes a and b; for a grid the force and the
+    /// spin-moment errors (relative to `μ FN` and `μ FN c`).
+    pub errors: [f64; 2],
 }
 
 impl From<&Measurement> for ChartPoint {
     fn from(m: &Measurement) -> ChartPoint {
         ChartPoint {
             label: m.setting.label.clone(),
-            median_ms: 1e3 * m.median_s,
-            contact_mm: m.errors.contact_mm,
-            ellipse_rel: m.errors.a_rel.max(m.errors.b_rel),
+            median: 1e3 * m.median_s,
+            errors: [m.errors.contact_mm, m.errors.a_rel.max(m.errors.b_rel)],
         }
     }
 }
 
-/// Why a text is no `tradeoff.csv` ([`chart_points`]).
+/// Why a text is no table of a study (`tradeoff.csv`: [`chart_points`];
+/// `fastsim_tradeoff.csv`: [`fastsim::chart_points`]).
 #[derive(Debug, Clone, PartialEq)]
 pub enum TradeoffCsvError {
     /// The text is no CSV table (the file, why).
     Table(String, crate::report::TableError),
-    /// A column the chart needs is missing (the file, the column).
-    NoColumn(String, &'static str),
+    /// A column the chart needs is missing.
+    NoColumn {
+        /// The file.
+        origin: String,
+        /// The column.
+        column: &'static str,
+        /// The file name of the study's table (`tradeoff.csv`).
+        table: &'static str,
+    },
+    /// A column the chart needs holds a cell that is no number (`NaN` is one).
+    NotNumbers {
+        /// The file.
+        origin: String,
+        /// The column.
+        column: &'static str,
+    },
 }
 
 impl std::fmt::Display for TradeoffCsvError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             TradeoffCsvError::Table(origin, e) => write!(f, "{origin}: {e}"),
-            TradeoffCsvError::NoColumn(origin, name) => {
-                write!(f, "{origin}: no column {name:?}: not a tradeoff.csv")
-            }
+            TradeoffCsvError::NoColumn {
+                origin,
+                column,
+                table,
+            } => write!(f, "{origin}: no column {column:?}: not a {table}"),
+            TradeoffCsvError::NotNumbers { origin, column } => write!(
+                f,
+                "{origin}: column {column:?} has a cell that is no number (NaN is one)"
+            ),
         }
     }
 }
 
 impl std::error::Error for TradeoffCsvError {}
+
+/// A study's table read back for its chart: its columns by name, errors naming the file.
+struct StudyCsv<'a> {
+    table: crate::report::Table,
+    origin: &'a str,
+    name: &'static str,
+}
+
+impl<'a> StudyCsv<'a> {
+    /// `text` read as the table `name` (e.g. `tradeoff.csv`) from the file `origin`.
+    fn parse(text: &str, origin: &'a str, name: &'static str) -> Result<Self, TradeoffCsvError> {
+        let table = crate::report::Table::parse_csv(text)
+            .map_err(|e| TradeoffCsvError::Table(origin.to_string(), e))?;
+        Ok(StudyCsv {
+            table,
+            origin,
+            name,
+        })
+    }
+
+    fn missing(&self, column: &'static str) -> TradeoffCsvError {
+        TradeoffCsvError::NoColumn {
+            origin: self.origin.to_string(),
+            column,
+            table: self.name,
+        }
+    }
+
+    /// The numbers of `column`.
+    fn numbers(&self, column: &'static str) -> Result<&[f64], TradeoffCsvError> {
+        match (self.table.numeric(column), self.table.text(column)) {
+            (Some(v), _) => Ok(v),
+            (None, Some(_)) => Err(TradeoffCsvError::NotNumbers {
+                origin: self.origin.to_string(),
+                column,
+            }),
+            (None, None) => Err(self.missing(column)),
+        }
+    }
+
+    /// A chart point per row: its label from the text column `label`, its median time
+    /// from `median`, its errors from `errors(row)`.
+    fn points(
+        &self,
+        label: &'static str,
+        median: &'static str,
+        errors: impl Fn(usize) -> [f64; 2],
+    ) -> Result<Vec<ChartPoint>, TradeoffCsvError> {
+        let labels = self.table.text(label).ok_or_else(|| self.missing(label))?;
+        let median = self.numbers(median)?;
+        Ok(labels
+            .iter()
+            .enumerate()
+            .map(|(i, label)| ChartPoint {
+                label: label.to_string(),
+                median: median[i],
+                errors: errors(i),
+            })
+            .collect())
+    }
+}
 
 /// The chart points of a `tradeoff.csv` as `wheelrail tradeoff` writes it.
 ///
@@ -470,32 +590,13 @@ impl std::error::Error for TradeoffCsvError {}
 /// [`TradeoffCsvError`] naming `origin` when the text is no such table (a column missing,
 /// a row without a number where one is needed).
 pub fn chart_points(text: &str, origin: &str) -> Result<Vec<ChartPoint>, TradeoffCsvError> {
-    let table = crate::report::Table::parse_csv(text)
-        .map_err(|e| TradeoffCsvError::Table(origin.to_string(), e))?;
-    let number = |name: &'static str| {
-        table
-            .numeric(name)
-            .ok_or_else(|| TradeoffCsvError::NoColumn(origin.to_string(), name))
-    };
-    let labels = table
-        .text("setting")
-        .ok_or_else(|| TradeoffCsvError::NoColumn(origin.to_string(), "setting"))?;
-    let (median, contact, a, b) = (
-        number("median_ms")?,
-        number("contact_error_mm")?,
-        number("a_rel_error")?,
-        number("b_rel_error")?,
+    let csv = StudyCsv::parse(text, origin, "tradeoff.csv")?;
+    let (contact, a, b) = (
+        csv.numbers("contact_error_mm")?,
+        csv.numbers("a_rel_error")?,
+        csv.numbers("b_rel_error")?,
     );
-    Ok(labels
-        .iter()
-        .enumerate()
-        .map(|(i, label)| ChartPoint {
-            label: label.to_string(),
-            median_ms: median[i],
-            contact_mm: contact[i],
-            ellipse_rel: a[i].max(b[i]),
-        })
-        .collect())
+    csv.points("setting", "median_ms", |i| [contact[i], a[i].max(b[i])])
 }
 
 #[cfg(test)]

@@ -105,19 +105,21 @@ fn no_legend_or_label_of_a_committed_report_covers_data_or_labels() {
             }
         }
     }
-    // The committed tradeoff chart, drawn from its table: a numbered label per point.
-    let csv = root_file("reports/paper/tradeoff.csv");
-    let points = wheelrail::tradeoff::chart_points(&csv, "tradeoff.csv").unwrap();
-    let tradeoff = outputs::tradeoff_chart(&points);
-    for panel in layout(&tradeoff).unwrap() {
-        assert_eq!(panel.labels.len(), points.len(), "a label per point");
-        labels += panel.labels.len();
+    // The committed tradeoff charts, drawn from their tables: a numbered label per point.
+    for study in outputs::Study::ALL {
+        let csv = root_file(&format!("reports/paper/{}.csv", study.name()));
+        let points = study.points(&csv, study.name()).unwrap();
+        let chart = study.chart(&points);
+        for panel in layout(&chart).unwrap() {
+            assert_eq!(panel.labels.len(), points.len(), "a label per point");
+            labels += panel.labels.len();
+        }
+        problems.extend(
+            covered_legends(&chart)
+                .into_iter()
+                .map(|p| format!("{}: {p}", study.name())),
+        );
     }
-    problems.extend(
-        covered_legends(&tradeoff)
-            .into_iter()
-            .map(|p| format!("tradeoff: {p}")),
-    );
     assert!(legends >= 50, "only {legends} legends checked");
     assert!(labels >= 60, "only {labels} labels checked");
     assert!(problems.is_empty(), "{}", problems.join("\n"));

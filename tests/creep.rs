@@ -651,26 +651,7 @@ fn fastsim_grid_study() {
     // The discretisation study (`fastsim::study`): the default grid against 1000 × 1000 on
     // the study's 24 cases, and Kalker's scheme against the midpoint scheme. Printed with
     // --nocapture (docs/2026-11-27-fastsim-grid.md holds a run, with run times).
-    let g = |n: u32, m: u32| Grid {
-        strips: n,
-        elements: m,
-    };
-    let grids = [
-        g(8, 8),
-        g(12, 12),
-        g(16, 16),
-        g(20, 20),
-        g(24, 24),
-        g(28, 28),
-        g(32, 32),
-        g(40, 40),
-        g(48, 48),
-        g(64, 64),
-        g(16, 32),
-        g(32, 16),
-        g(32, 64),
-    ];
-    let rows = fastsim::study(&grids, g(1000, 1000));
+    let rows = fastsim::study(&fastsim::STUDY_GRIDS, fastsim::STUDY_REFERENCE);
     println!("strips elements  force/(mu FN)  moment/(mu FN c)");
     for r in &rows {
         println!(
@@ -687,7 +668,9 @@ fn fastsim_grid_study() {
     // times the error.
     let cases = fastsim::study_cases();
     let kalker_scheme = Settings::default().with_scheme(Scheme::Kalker);
-    let reference = Settings::default().with_grid(g(1000, 1000)).unwrap();
+    let reference = Settings::default()
+        .with_grid(fastsim::STUDY_REFERENCE)
+        .unwrap();
     let worst = cases
         .iter()
         .map(|(p, c)| {

@@ -138,7 +138,7 @@ fn the_committed_reports_regenerate() {
             continue; // the fleet has its own test (tests/fleet.rs)
         }
         let out = scratch(&format!("committed_{name}"));
-        for tradeoff in ["tradeoff.csv", "tradeoff.svg", "tradeoff.png"] {
+        for tradeoff in TRADEOFF_FILES {
             if dir.join(tradeoff).exists() {
                 std::fs::copy(dir.join(tradeoff), out.join(tradeoff)).unwrap();
             }
@@ -154,7 +154,7 @@ fn the_committed_reports_regenerate() {
         assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
         for file in std::fs::read_dir(&out).unwrap() {
             let file = file.unwrap().file_name().to_string_lossy().into_owned();
-            if file.starts_with('.') || file.starts_with("tradeoff.") {
+            if file.starts_with('.') || TRADEOFF_FILES.contains(&file.as_str()) {
                 continue;
             }
             let fresh = std::fs::read(out.join(&file)).unwrap();
@@ -234,22 +234,36 @@ fn committed_pages_cite_the_paper_only_for_its_case() {
     assert!(!load("en15302_e1").unwrap().is_paper_case());
 }
 
-/// The committed tradeoff chart is what `wheelrail tradeoff --replot` draws from the
-/// committed `tradeoff.csv` (its measurements are not re-run: they are timings), and its
-/// SVG names every setting (issue 32: the chart is read without the CSV).
+/// The files of `wheelrail tradeoff` (the scene's settings, FASTSIM's grids): timings, which
+/// `report` does not regenerate.
+const TRADEOFF_FILES: [&str; 6] = [
+    "tradeoff.csv",
+    "tradeoff.svg",
+    "tradeoff.png",
+    "fastsim_tradeoff.csv",
+    "fastsim_tradeoff.svg",
+    "fastsim_tradeoff.png",
+];
+
+/// The committed tradeoff charts are what `wheelrail tradeoff --replot` draws from the
+/// committed `tradeoff.csv` and `fastsim_tradeoff.csv` (their measurements are not re-run:
+/// they are timings), and their SVGs name every setting and grid (issue 32: the chart is
+/// read without the CSV).
 #[test]
 fn the_committed_tradeoff_chart_redraws_from_its_table_and_names_every_setting() {
     let root = common::root();
     let paper = root.join("reports/paper");
     let out = scratch("tradeoff_replot");
-    std::fs::copy(paper.join("tradeoff.csv"), out.join("tradeoff.csv")).unwrap();
+    for file in ["tradeoff.csv", "fastsim_tradeoff.csv"] {
+        std::fs::copy(paper.join(file), out.join(file)).unwrap();
+    }
     let o = bin()
         .args(["tradeoff", "reports/paper/scene.toml", "--replot", "--out"])
         .arg(&out)
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    for file in ["tradeoff.csv", "tradeoff.svg", "tradeoff.png"] {
+    for file in TRADEOFF_FILES {
         assert!(
             std::fs::read(out.join(file)).unwrap() == std::fs::read(paper.join(file)).unwrap(),
             "reports/paper/{file} differs from the chart redrawn from its table: wheelrail tradeoff reports/paper/scene.toml --replot"
@@ -278,4 +292,102 @@ fn the_committed_tradeoff_chart_redraws_from_its_table_and_names_every_setting()
         .output()
         .unwrap();
     common::assert_clean_failure(&o, 2, &["tradeoff.csv", "not a tradeoff.csv"]);
+}
+
+/// The committed FASTSIM grid study: its columns, the default grid labelled as such (one
+/// row, the library's default), every grid in the chart's key and on the report page.
+#[test]
+fn the_committed_fastsim_study_marks_the_default_grid() {
+    use wheelrail::creep::DEFAULT_GRID;
+    use wheelrail::creep::fastsim::STUDY_GRIDS;
+    let paper = common::root().join("reports/paper");
+    let csv = std::fs::read_to_string(paper.join("fastsim_tradeoff.csv")).unwrap();
+    let table = wheelrail::report::Table::parse_csv(&csv).unwrap();
+    let names: Vec<&str> = table.columns().iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "grid",
+            "strips",
+            "elements",
+            "median_us",
+            "min_us",
+            "max_us",
+            "force_error",
+            "moment_error",
+            "status"
+        ]
+    );
+    let points = wheelrail::tradeoff::fastsim::chart_points(&csv, "fastsim_tradeoff.csv").unwrap();
+    let labels: Vec<String> = STUDY_GRIDS
+        .iter()
+        .map(|&g| wheelrail::tradeoff::fastsim::label(g))
+        .collect();
+    let committed: Vec<&str> = points.iter().map(|p| p.label.as_str()).collect();
+    assert_eq!(committed, labels, "the study's grids, in order");
+    let defaults: Vec<usize> = (0..points.len())
+        .filter(|&i| points[i].label.ends_with("(default)"))
+        .collect();
+    assert_eq!(defaults.len(), 1, "{committed:?}");
+    let (strips, elements) = (
+        table.numeric("strips").unwrap()[defaults[0]],
+        table.numeric("elements").unwrap()[defaults[0]],
+    );
+    assert_eq!(
+        (strips as u32, elements as u32),
+        (DEFAULT_GRID.strips, DEFAULT_GRID.elements)
+    );
+    let svg = std::fs::read_to_string(paper.join("fastsim_tradeoff.svg")).unwrap();
+    for (i, label) in labels.iter().enumerate() {
+        let entry = format!(">\n{}  {label}\n<", i + 1);
+        assert!(
+            svg.contains(&entry),
+            "no key entry {entry:?} in fastsim_tradeoff.svg"
+        );
+    }
+    let page = std::fs::read_to_string(paper.join("index.html")).unwrap();
+    assert!(
+        page.contains("fastsim_tradeoff.svg"),
+        "the report page lists the chart"
+    );
+}
+
+/// `--replot` in a folder from before FASTSIM's study (no `fastsim_tradeoff.csv`) redraws
+/// the first chart and says why there is no second; a `fastsim_tradeoff.csv` that is no such
+/// table is refused naming the file and the column, and nothing is written.
+#[test]
+fn replot_without_or_with_a_bad_fastsim_table() {
+    let paper = common::root().join("reports/paper");
+    let out = scratch("tradeoff_replot_fastsim");
+    std::fs::copy(paper.join("tradeoff.csv"), out.join("tradeoff.csv")).unwrap();
+    let replot = || {
+        bin()
+            .args(["tradeoff", "reports/paper/scene.toml", "--replot", "--out"])
+            .arg(&out)
+            .output()
+            .unwrap()
+    };
+    let o = replot();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("fastsim_tradeoff.csv: FASTSIM's grid chart not drawn"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(out.join("tradeoff.svg").exists());
+    assert!(!out.join("fastsim_tradeoff.svg").exists());
+    let csv = std::fs::read_to_string(paper.join("fastsim_tradeoff.csv")).unwrap();
+    let broken = csv.replacen(",ok\n", ",ok\n8x8,8,8,slow,1,1,1e-2,1e-2,ok\n", 1);
+    std::fs::write(out.join("fastsim_tradeoff.csv"), broken).unwrap();
+    std::fs::remove_file(out.join("tradeoff.svg")).unwrap();
+    let o = replot();
+    common::assert_clean_failure(
+        &o,
+        2,
+        &[
+            "fastsim_tradeoff.csv",
+            "column \"median_us\" has a cell that is no number",
+        ],
+    );
+    assert!(!out.join("tradeoff.svg").exists(), "nothing written");
 }

@@ -106,7 +106,7 @@ pub enum Command {
         #[arg(long, value_name = "FROM:TO:STEP")]
         amplitudes_mm: Option<String>,
     },
-    /// Run time against error of numerical settings: writes tradeoff.csv and its chart, prints the table
+    /// Run time against error of numerical settings and FASTSIM's grids: writes tradeoff.csv, fastsim_tradeoff.csv and their charts, prints the tables
     Tradeoff {
         /// The scene file (default: the paper's scene).
         scene: Option<PathBuf>,
@@ -117,8 +117,8 @@ pub enum Command {
         /// warm-up round (the median and the fastest and slowest run are reported).
         #[arg(long, default_value_t = 5)]
         repeats: usize,
-        /// Measure nothing: draw the chart again from the output folder's tradeoff.csv (after
-        /// a change of the chart, keeping the measurements).
+        /// Measure nothing: draw the charts again from the output folder's tradeoff.csv and
+        /// fastsim_tradeoff.csv (after a change of a chart, keeping the measurements).
         #[arg(long, conflicts_with = "repeats")]
         replot: bool,
     },
@@ -292,16 +292,13 @@ fn report_in(
             eprintln!("{:<20} {:>10.3} ms", stage.name(), 1e3 * seconds);
         }
     }
-    let dir = out.map_or_else(
-        || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-        Path::to_path_buf,
-    );
-    // A tradeoff study written earlier into the same folder is listed in the report.
-    let extra: Vec<_> = if dir.join("tradeoff.svg").exists() {
-        vec![outputs::tradeoff_entry()]
-    } else {
-        Vec::new()
-    };
+    let dir = out_dir(scene_path, out);
+    // Tradeoff studies written earlier into the same folder are listed in the report.
+    let extra: Vec<_> = outputs::Study::ALL
+        .into_iter()
+        .filter(|s| dir.join(format!("{}.svg", s.name())).exists())
+        .map(outputs::Study::entry)
+        .collect();
     // Everything is rendered in memory before the first byte is written.
     let files = outputs::render(&scene, &results, &extra)?;
     write_folder(&dir, Group::Report, &files)?;
@@ -373,27 +370,50 @@ pub fn golden_policy() -> TolerancePolicy {
     .key_column("y_ws_mm")
 }
 
-/// `wheelrail tradeoff --replot`: the chart drawn again from the folder's `tradeoff.csv`,
-/// which is written back as it was (the study's files are one group of the folder).
+/// `wheelrail tradeoff --replot`: the charts drawn again from the folder's `tradeoff.csv`
+/// and `fastsim_tradeoff.csv`, which are written back as they were (the study's files are
+/// one group of the folder). A folder from before FASTSIM's study has no
+/// `fastsim_tradeoff.csv`: only the first chart is drawn, with a note.
 fn tradeoff_replot(scene_path: &Path, out: Option<&Path>) -> Result<ExitCode, Error> {
     let scene = Scene::load(scene_path)?;
-    let dir = out.map_or_else(
-        || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-        Path::to_path_buf,
-    );
-    let path = dir.join("tradeoff.csv");
-    let csv = std::fs::read_to_string(&path).map_err(|source| Error::Io {
-        path: path.clone(),
-        source,
-    })?;
-    let points = crate::tradeoff::chart_points(&csv, &path.display().to_string())
-        .map_err(|e| Error::Usage(format!("--replot: {e}")))?;
-    let (files, _) = outputs::tradeoff_chart_files(csv, &points, &scene.formats)?;
+    let dir = out_dir(scene_path, out);
+    let (mut files, mut redrawn) = (Vec::new(), Vec::new());
+    for study in outputs::Study::ALL {
+        let path = dir.join(format!("{}.csv", study.name()));
+        if study == outputs::Study::FastsimGrids && !path.exists() {
+            eprintln!(
+                "note: no {}: FASTSIM's grid chart not drawn (`wheelrail tradeoff` without --replot measures it)",
+                path.display()
+            );
+            continue;
+        }
+        let csv = std::fs::read_to_string(&path).map_err(|source| Error::Io {
+            path: path.clone(),
+            source,
+        })?;
+        let points = study
+            .points(&csv, &path.display().to_string())
+            .map_err(|e| Error::Usage(format!("--replot: {e}")))?;
+        files.extend(study.files(csv, &points, &scene.formats)?);
+        redrawn.push(path);
+    }
     write_folder(&dir, Group::Tradeoff, &files)?;
-    eprintln!("redrew the chart of {}", path.display());
+    for path in redrawn {
+        eprintln!("redrew the chart of {}", path.display());
+    }
     Ok(ExitCode::SUCCESS)
 }
 
+/// The output folder: `out`, or the scene file's folder.
+fn out_dir(scene_path: &Path, out: Option<&Path>) -> PathBuf {
+    out.map_or_else(
+        || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
+        Path::to_path_buf,
+    )
+}
+
+/// `wheelrail tradeoff`: the scene's numerical settings and FASTSIM's grids measured, their
+/// tables and charts written, both tables printed.
 fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<ExitCode, Error> {
     if !(1..=1000).contains(&repeats) {
         return Err(Error::Usage(format!(
@@ -404,39 +424,72 @@ fn tradeoff(scene_path: &Path, out: Option<&Path>, repeats: usize) -> Result<Exi
     let settings = crate::tradeoff::grid(&scene);
     // Progress only for a person watching: a terminal, where the line is redrawn in place.
     let progress_shown = std::io::stderr().is_terminal();
-    let measured = crate::tradeoff::study(&scene, &settings, repeats, |done, total, label| {
+    let progress = |done: usize, total: usize, label: &str| {
         if progress_shown {
             eprint!("\r\x1b[2K[{done}/{total} runs] {label}");
         }
-    })?;
+    };
+    let measured = crate::tradeoff::study(&scene, &settings, repeats, progress)?;
+    let grids =
+        crate::tradeoff::fastsim::study(&crate::creep::fastsim::STUDY_GRIDS, repeats, progress);
     if progress_shown {
         eprint!("\r\x1b[2K");
     }
-    let (files, _) = outputs::tradeoff_files(&measured, &scene.formats)?;
-    let dir = out.map_or_else(
-        || scene_path.parent().unwrap_or(Path::new(".")).to_path_buf(),
-        Path::to_path_buf,
-    );
+    let mut files = outputs::tradeoff_files(&measured, &scene.formats)?;
+    files.extend(outputs::fastsim_tradeoff_files(&grids, &scene.formats)?);
+    let dir = out_dir(scene_path, out);
     write_folder(&dir, Group::Tradeoff, &files)?;
-    println!(
-        "{:<40} {:>9} {:>17}  {:>10}  {:>8}",
-        "setting", "median_ms", "min-max_ms", "contact_mm", "a,b_rel"
+    print_study(
+        [
+            "setting",
+            "median_ms",
+            "min-max_ms",
+            "contact_mm",
+            "a,b_rel",
+        ],
+        measured.iter().map(|m| {
+            let t = m.range_s;
+            let errors = [m.errors.contact_mm, m.errors.a_rel.max(m.errors.b_rel)];
+            (
+                m.setting.label.clone(),
+                [m.median_s, t.0, t.1].map(|t| 1e3 * t),
+                errors,
+            )
+        }),
     );
-    for m in &measured {
-        println!(
-            "{:<40} {:>9.2} {:>17}  {:>10.1e}  {:>8.1e}",
-            m.setting.label,
-            1e3 * m.median_s,
-            format!("{:.2}-{:.2}", 1e3 * m.range_s.0, 1e3 * m.range_s.1),
-            m.errors.contact_mm,
-            m.errors.a_rel.max(m.errors.b_rel)
+    println!();
+    print_study(
+        ["FASTSIM grid", "median_us", "min-max_us", "force", "moment"],
+        grids.iter().map(|g| {
+            let t = g.timing;
+            let times = [t.median_s, t.range_s.0, t.range_s.1].map(|t| 1e6 * t);
+            let label = crate::tradeoff::fastsim::label(g.grid);
+            (label, times, [g.force_error, g.moment_error])
+        }),
+    );
+    println!(
+        "(single thread; {repeats} timed rounds after a warm-up round, settings or grids in a random order in each; FASTSIM's errors relative to mu FN and mu FN c against {}x{})",
+        crate::creep::fastsim::STUDY_REFERENCE.strips,
+        crate::creep::fastsim::STUDY_REFERENCE.elements
+    );
+    for study in outputs::Study::ALL {
+        eprintln!(
+            "wrote {}",
+            dir.join(format!("{}.csv", study.name())).display()
         );
     }
-    println!(
-        "(single thread; {repeats} timed rounds after a warm-up round, settings in a random order in each)"
-    );
-    eprintln!("wrote {}", dir.join("tradeoff.csv").display());
     Ok(ExitCode::SUCCESS)
+}
+
+/// Prints a study's table under the five `columns`: per row its label, its median, fastest
+/// and slowest times and its two errors.
+fn print_study(columns: [&str; 5], rows: impl Iterator<Item = (String, [f64; 3], [f64; 2])>) {
+    let [label, median, range, e0, e1] = columns;
+    println!("{label:<40} {median:>9} {range:>17}  {e0:>10}  {e1:>8}");
+    for (label, [median, lo, hi], [e0, e1]) in rows {
+        let range = format!("{lo:.2}-{hi:.2}");
+        println!("{label:<40} {median:>9.2} {range:>17}  {e0:>10.1e}  {e1:>8.1e}");
+    }
 }
 
 /// A long run's progress on standard error: each stage as it starts and ends.

@@ -69,7 +69,8 @@
 //! 0.3, 1 and 3 times saturation in ξ, η, φ and all three at once, it errs by at most
 //! 0.07 % of `μ FN` in force and 0.04 % of `μ FN c` in spin moment, at about 6 µs per patch
 //! (`cargo bench --bench creep`, on CONTACT's FASTSIM example; record in
-//! `docs/2026-11-27-fastsim-grid.md`). The error does not fall monotonically with the strip
+//! `docs/2026-11-27-fastsim-grid.md`); `wheelrail tradeoff` times [`STUDY_GRIDS`] on the
+//! study's cases and charts them beside the numerical settings (`fastsim_tradeoff`). The error does not fall monotonically with the strip
 //! count (a strip's adhesion zone vanishes at some `|y|`, a kink the strip sums straddle
 //! differently): 24 × 24 errs by 0.27 %, 28 × 28 by 0.12 %, 40 × 40 by 0.04 %.
 //!
@@ -490,6 +491,46 @@ pub fn study_cases() -> Vec<(EllipticPatch, Creepages)> {
         }
     }
     cases
+}
+
+/// The grids of the discretisation study as `wheelrail tradeoff` measures them: square grids
+/// of 8 to 64 strips and elements around the default, and the default's strips or elements
+/// halved or doubled.
+pub const STUDY_GRIDS: [Grid; 13] = [
+    square(8),
+    square(12),
+    square(16),
+    square(20),
+    square(24),
+    square(28),
+    square(32),
+    square(40),
+    square(48),
+    square(64),
+    Grid {
+        strips: 16,
+        elements: 32,
+    },
+    Grid {
+        strips: 32,
+        elements: 16,
+    },
+    Grid {
+        strips: 32,
+        elements: 64,
+    },
+];
+
+/// The converged grid the discretisation study compares with: 1000 × 1000 cells, a thousand
+/// times the default's.
+pub const STUDY_REFERENCE: Grid = square(1000);
+
+/// `n` strips of `n` elements.
+const fn square(n: u32) -> Grid {
+    Grid {
+        strips: n,
+        elements: n,
+    }
 }
 
 /// The discretisation study: for each grid, the largest error of FASTSIM over

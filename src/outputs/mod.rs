@@ -419,69 +419,138 @@ fn figure_files(
 }
 
 #[cfg(feature = "cli")]
-/// The tradeoff study's files: `tradeoff.csv` and its chart in `formats`, and the page entry
-/// that lists the chart in a report.
+/// A study of `wheelrail tradeoff`: run time against error of the scene's numerical settings
+/// (`tradeoff.csv` and chart `tradeoff`) or of FASTSIM's grid (`fastsim_tradeoff`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Study {
+    /// The scene's numerical settings ([`crate::tradeoff::study`]).
+    Settings,
+    /// FASTSIM's grids ([`crate::tradeoff::fastsim::study`]).
+    FastsimGrids,
+}
+
+#[cfg(feature = "cli")]
+impl Study {
+    /// Both studies, in the order of the report page.
+    pub const ALL: [Study; 2] = [Study::Settings, Study::FastsimGrids];
+
+    /// The stem of the study's files (`tradeoff`: `tradeoff.csv`, `tradeoff.svg`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            Study::Settings => "tradeoff",
+            Study::FastsimGrids => "fastsim_tradeoff",
+        }
+    }
+
+    /// The chart points of the study's table `text` read from `origin`.
+    ///
+    /// # Errors
+    /// [`crate::tradeoff::TradeoffCsvError`] when the text is no such table.
+    pub fn points(
+        self,
+        text: &str,
+        origin: &str,
+    ) -> Result<Vec<crate::tradeoff::ChartPoint>, crate::tradeoff::TradeoffCsvError> {
+        match self {
+            Study::Settings => crate::tradeoff::chart_points(text, origin),
+            Study::FastsimGrids => crate::tradeoff::fastsim::chart_points(text, origin),
+        }
+    }
+
+    /// The chart of the study's `points`.
+    pub fn chart(self, points: &[crate::tradeoff::ChartPoint]) -> report::Figure {
+        match self {
+            Study::Settings => figures::tradeoff(points),
+            Study::FastsimGrids => figures::fastsim_tradeoff(points),
+        }
+    }
+
+    /// The study's table as `csv` and the chart of its `points` in `formats` (also to draw
+    /// the chart again from a committed table, `wheelrail tradeoff --replot`).
+    ///
+    /// # Errors
+    /// [`Error::Chart`] when the chart cannot be rendered.
+    pub fn files(
+        self,
+        csv: String,
+        points: &[crate::tradeoff::ChartPoint],
+        formats: &[ImageFormat],
+    ) -> Result<Vec<OutputFile>, Error> {
+        let name = self.name();
+        let chart = self.chart(points);
+        let mut files = vec![OutputFile {
+            name: format!("{name}.csv"),
+            bytes: csv.into_bytes(),
+        }];
+        for f in formats {
+            files.push(match f {
+                ImageFormat::Svg => OutputFile {
+                    name: format!("{name}.svg"),
+                    bytes: report::render_svg(&chart)
+                        .map_err(|e| Error::Chart(name.into(), e))?
+                        .into_bytes(),
+                },
+                ImageFormat::Png => OutputFile {
+                    name: format!("{name}.png"),
+                    bytes: report::render_png(&chart).map_err(|e| Error::Chart(name.into(), e))?,
+                },
+            });
+        }
+        Ok(files)
+    }
+
+    /// The report page's entry of the study's chart.
+    pub fn entry(self) -> FigureEntry {
+        let caption = match self {
+            Study::Settings => String::from(
+                "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it). Each point is a setting, numbered as in the key below the chart (tradeoff.csv has every measurement); the Pareto front, the settings no other beats in both time and error, is the staircase that bounds what they dominate. Errors of exactly 0, settings that reproduce the reference to the last bit, are drawn in the shaded band 'exact (0)' at the foot of a panel, below the decades of the others.",
+            ),
+            Study::FastsimGrids => {
+                use crate::creep::{DEFAULT_GRID, fastsim::STUDY_REFERENCE};
+                format!(
+                    "Run time against error of FASTSIM's discretisation (measured by `wheelrail tradeoff`: times are those of the machine that ran it), strips across the patch times elements along each strip. Errors are the largest over {} cases (patches of a/b = 1.5 and 0.375 at 50 kN; creepages of 0.3, 1 and 3 times the creepage that saturates linear theory, in ξ, η, φ alone and together) against FASTSIM on {} x {} cells, forces relative to μ FN and spin moments to μ FN c; the time is one patch's solve, single-threaded. The default grid, {} x {}, is chosen from this study (fastsim_tradeoff.csv has every measurement); the Pareto front is the staircase that bounds what the grids on it dominate.",
+                    crate::creep::fastsim::study_cases().len(),
+                    STUDY_REFERENCE.strips,
+                    STUDY_REFERENCE.elements,
+                    DEFAULT_GRID.strips,
+                    DEFAULT_GRID.elements
+                )
+            }
+        };
+        let name = self.name();
+        FigureEntry {
+            name: name.into(),
+            caption,
+            svg: format!("{name}.svg"),
+            png: format!("{name}.png"),
+        }
+    }
+}
+
+#[cfg(feature = "cli")]
+/// The files of the scene settings' study: `tradeoff.csv` and its chart in `formats`.
 ///
 /// # Errors
 /// [`Error::Chart`] when the chart cannot be rendered.
 pub fn tradeoff_files(
     m: &[crate::tradeoff::Measurement],
     formats: &[ImageFormat],
-) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
-    let csv = tables::tradeoff(m)
-        .map_err(table_error)?
-        .to_csv_with(CSV_FORMAT);
+) -> Result<Vec<OutputFile>, Error> {
+    let csv = tables::tradeoff(m).map_err(table_error)?;
     let points: Vec<crate::tradeoff::ChartPoint> = m.iter().map(Into::into).collect();
-    tradeoff_chart_files(csv, &points, formats)
+    Study::Settings.files(csv.to_csv_with(CSV_FORMAT), &points, formats)
 }
 
 #[cfg(feature = "cli")]
-/// `tradeoff.csv` as `csv` and the chart of its `points` in `formats` (to draw the chart
-/// again from a committed table, `wheelrail tradeoff --replot`), and the page entry.
+/// The files of FASTSIM's grid study: `fastsim_tradeoff.csv` and its chart in `formats`.
 ///
 /// # Errors
 /// [`Error::Chart`] when the chart cannot be rendered.
-pub fn tradeoff_chart_files(
-    csv: String,
-    points: &[crate::tradeoff::ChartPoint],
+pub fn fastsim_tradeoff_files(
+    m: &[crate::tradeoff::fastsim::GridMeasurement],
     formats: &[ImageFormat],
-) -> Result<(Vec<OutputFile>, FigureEntry), Error> {
-    let mut files = vec![OutputFile {
-        name: "tradeoff.csv".into(),
-        bytes: csv.into_bytes(),
-    }];
-    let chart = tradeoff_chart(points);
-    for f in formats {
-        files.push(match f {
-            ImageFormat::Svg => OutputFile {
-                name: "tradeoff.svg".into(),
-                bytes: report::render_svg(&chart)
-                    .map_err(|e| Error::Chart("tradeoff".into(), e))?
-                    .into_bytes(),
-            },
-            ImageFormat::Png => OutputFile {
-                name: "tradeoff.png".into(),
-                bytes: report::render_png(&chart)
-                    .map_err(|e| Error::Chart("tradeoff".into(), e))?,
-            },
-        });
-    }
-    Ok((files, tradeoff_entry()))
-}
-
-#[cfg(feature = "cli")]
-/// The chart of the tradeoff study's `points`.
-pub fn tradeoff_chart(points: &[crate::tradeoff::ChartPoint]) -> report::Figure {
-    figures::tradeoff(points)
-}
-
-#[cfg(feature = "cli")]
-/// The report entry of the tradeoff chart.
-pub fn tradeoff_entry() -> FigureEntry {
-    FigureEntry {
-        name: "tradeoff".into(),
-        caption: "Run time against error of numerical settings (measured by `wheelrail tradeoff`, not by the report run: times are those of the machine that ran it). Each point is a setting, numbered as in the key below the chart (tradeoff.csv has every measurement); the Pareto front, the settings no other beats in both time and error, is the staircase that bounds what they dominate. Errors of exactly 0, settings that reproduce the reference to the last bit, are drawn in the shaded band 'exact (0)' at the foot of a panel, below the decades of the others.".into(),
-        svg: "tradeoff.svg".into(),
-        png: "tradeoff.png".into(),
-    }
+) -> Result<Vec<OutputFile>, Error> {
+    let points: Vec<_> = m.iter().map(Into::into).collect();
+    let csv = tables::fastsim_tradeoff(m).map_err(table_error)?;
+    Study::FastsimGrids.files(csv.to_csv_with(CSV_FORMAT), &points, formats)
 }

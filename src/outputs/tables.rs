@@ -646,6 +646,71 @@ pub fn tradeoff(m: &[crate::tradeoff::Measurement]) -> Result<Table, TableError>
         .build()
 }
 
+#[cfg(feature = "cli")]
+/// FASTSIM's discretisation study (`fastsim_tradeoff.csv`).
+///
+/// # Errors
+/// [`TableError`] only if the columns were built inconsistently (a bug).
+pub fn fastsim_tradeoff(
+    m: &[crate::tradeoff::fastsim::GridMeasurement],
+) -> Result<Table, TableError> {
+    use crate::creep::fastsim::{STUDY_REFERENCE, study_cases};
+    use crate::tradeoff::fastsim::{PASSES, label};
+    let col = |f: &dyn Fn(&crate::tradeoff::fastsim::GridMeasurement) -> f64| {
+        m.iter().map(f).collect::<Vec<_>>()
+    };
+    let cases = study_cases();
+    let mut patches: Vec<String> = Vec::new();
+    for (p, _) in &cases {
+        let text = format!(
+            "a = {}, b = {} mm at FN = {} kN",
+            p.a_mm(),
+            p.b_mm(),
+            1e-3 * p.normal_force_n()
+        );
+        if !patches.contains(&text) {
+            patches.push(text);
+        }
+    }
+    let defaults = crate::creep::Settings::default();
+    let cases = cases.len();
+    Table::builder()
+        .comment("run time against error of FASTSIM's discretisation: grid = strips across the patch (lateral) x elements along each strip (rolling direction); the default grid is marked (default)")
+        .comment(format!(
+            "errors against the reference grid {}x{} with the same settings otherwise (the default: parabolic bound, blended flexibilities, midpoint scheme, mu = {}, G = {} GPa, nu = {}), the largest over the {cases} cases of creep::fastsim::study_cases: patches {}; creepages of 0.3, 1 and 3 times the creepage that saturates linear theory in xi, eta, phi alone and all three at once",
+            STUDY_REFERENCE.strips,
+            STUDY_REFERENCE.elements,
+            defaults.friction(),
+            1e-3 * defaults.shear_modulus_mpa(),
+            defaults.poisson(),
+            patches.join(" and ")
+        ))
+        .comment("force_error = max(|dFx|, |dFy|) / (mu FN); moment_error = |dMz| / (mu FN c), c = sqrt(a b): both dimensionless")
+        .comment(format!(
+            "median_us, min_us, max_us: one patch's FASTSIM solve (microseconds), single-threaded; each timed run solves the {cases} cases {PASSES} times; after an untimed warm-up round, each round runs every grid once in its own random order"
+        ))
+        .comment("times are machine-dependent: compare grids as ratios within one run")
+        .text("grid", m.iter().map(|x| label(x.grid)))
+        .numeric("strips", col(&|x| f64::from(x.grid.strips)))
+        .numeric("elements", col(&|x| f64::from(x.grid.elements)))
+        .numeric("median_us", col(&|x| 1e6 * x.timing.median_s))
+        .numeric("min_us", col(&|x| 1e6 * x.timing.range_s.0))
+        .numeric("max_us", col(&|x| 1e6 * x.timing.range_s.1))
+        .numeric("force_error", col(&|x| x.force_error))
+        .numeric("moment_error", col(&|x| x.moment_error))
+        .text(
+            "status",
+            m.iter().map(|x| {
+                if x.force_error.is_finite() && x.moment_error.is_finite() {
+                    "ok"
+                } else {
+                    "grid out of range: not solved (NaN)"
+                }
+            }),
+        )
+        .build()
+}
+
 /// Definition lines shared by the conicity tables.
 const CONICITY_FRAME: &str = "y lateral displacement of the wheelset, positive to the left (track frame); delta_r = r_left - r_right; amplitude = half the peak-to-peak motion; centre_mm = middle of the motion (the equilibrium for a symmetric pair)";
 

@@ -7,7 +7,7 @@
 //!
 //! One file per stage: [`profiles`], [`rigid`], [`quasi_elastic`], [`hertz`], [`conicity`],
 //! [`creep`],
-//! and the [`tradeoff`] study's chart.
+//! and the charts of the [`tradeoff`] studies ([`fastsim_tradeoff`] for FASTSIM's grid).
 
 mod conicity;
 mod creep;
@@ -26,7 +26,7 @@ pub(crate) use rigid::{
     contact_angle_parameter, contact_angles, contact_lead, contact_map, contact_points,
     flange_onsets, roll, rolling_radius,
 };
-pub(crate) use tradeoff::tradeoff;
+pub(crate) use tradeoff::{fastsim_tradeoff, tradeoff};
 
 const LEFT: usize = 0;
 const RIGHT: usize = 1;
