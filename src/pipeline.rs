@@ -26,11 +26,15 @@ use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, Sid
 use std::sync::Arc;
 use std::time::Instant;
 
-pub use crate::stage::{Figure, Stage};
+#[doc(hidden)]
+// public for the scene's figures: the report tests, the chart tests and the scene benchmark
+pub use crate::stage::Figure;
+pub use crate::stage::Stage;
 
 /// What a run computed, with wall-clock times, for `--timings` and for tests that check that
 /// no unneeded stage ran.
 #[derive(Debug, Clone, Default)]
+#[doc(hidden)] // public for the Python binding and the tests that check which stages ran
 pub struct RunRecord {
     /// The stages run, in order, with their duration in seconds.
     pub stages: Vec<(Stage, f64)>,
@@ -60,6 +64,7 @@ impl RunRecord {
 
 /// The quasi-elastic solution for each sensitivity value of eps.
 #[derive(Debug, Clone)]
+#[doc(hidden)] // public for the report's ε-sensitivity table and figure
 pub struct EpsilonSweeps {
     /// `(eps in mm, solution)`, in the scene's order.
     pub runs: Vec<(f64, QuasiElasticSweep)>,
@@ -97,6 +102,7 @@ pub struct Results {
 /// its figures, the creep stage for a scene with `[creep]` (`creep.csv`), the contact table
 /// for one with `[table]`. The profile stage always runs (placement is validated for every
 /// scene).
+#[doc(hidden)] // public for the creep-stage test, the scene benchmark and `examples/evaluation_counts.rs`
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
     let mut wanted: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
     if scene.asks_for_creep {
@@ -198,7 +204,7 @@ pub(crate) fn run_gated<E: From<SceneError>>(
 ///
 /// # Errors
 /// [`SceneError`] naming `rail.nominal_profile` when a nominal rail cannot be read.
-pub fn nominal_rails(scene: &Scene) -> Result<Option<NominalRails>, SceneError> {
+pub(crate) fn nominal_rails(scene: &Scene) -> Result<Option<NominalRails>, SceneError> {
     let Some(refs) = &scene.nominal_rails else {
         return Ok(None);
     };

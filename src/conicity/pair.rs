@@ -19,7 +19,7 @@ pub(crate) const REPORT_SHIFT_MM: f64 = 3.0;
 /// The largest amplitude of EN 15302's reference results (mm): Annex F tabulates `tan γe`
 /// from 1.0 to 7.5 mm. [`assess_on`] makes the Δr function reach every amplitude up to it
 /// (or up to the largest the settings ask for).
-pub const STANDARD_MAX_AMPLITUDE_MM: f64 = 7.5;
+pub(crate) const STANDARD_MAX_AMPLITUDE_MM: f64 = 7.5;
 
 /// How many times [`assess_on`] widens a sweep that does not reach far enough: each
 /// widening reaches what the last Δr function showed missing, and a motion's turning point
@@ -30,7 +30,7 @@ const MAX_WIDENINGS: usize = 6;
 /// The farthest shift [`assess_on`] asks for (mm): twice the lateral clearance of a
 /// standard-gauge wheelset (about 7 mm per side before the flange), far beyond where any
 /// flange contact turns the kinematic motion.
-pub const WIDEST_SHIFT_MM: f64 = 20.0;
+pub(crate) const WIDEST_SHIFT_MM: f64 = 20.0;
 
 /// The amplitudes bounding Polach's nonlinearity parameter (mm).
 pub(crate) const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
@@ -206,6 +206,7 @@ pub struct Parameters {
 
 /// One row of the parameter table.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's and the fleet's parameter tables and the Python binding
 pub struct ParameterRow {
     /// Machine name (`parameters.csv`, fleet columns).
     pub name: &'static str,
@@ -381,6 +382,7 @@ impl PairConicity {
 /// jump as a discontinuity in the middle of its refined interval (values from its ends).
 /// A sampling artefact ([`JumpKind::Artefact`]) is no discontinuity: Δr is linear between
 /// the sweep positions around it, as where the contact point moves continuously.
+#[doc(hidden)] // public for the conicity benchmarks
 pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     let mut points: Vec<(f64, f64)> = sweep
         .positions()
@@ -431,9 +433,9 @@ pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
 
 /// [`assess`] with the Δr function reaching every amplitude the settings need: the rigid
 /// search on `placement` (the one `sweep` was solved on) is asked for the shifts beyond
-/// the sweep that the motions of those amplitudes reach ([`rigid::extend`], each end
+/// the sweep that the motions of those amplitudes reach (`rigid::extend`, each end
 /// continued outwards), so that an off-centre pair (wheels of different radii, EN 15302
-/// cases E5 to E8) gets every amplitude up to [`STANDARD_MAX_AMPLITUDE_MM`] (or the largest
+/// cases E5 to E8) gets every amplitude up to 7.5 mm (`STANDARD_MAX_AMPLITUDE_MM`, or the largest
 /// of `settings.amplitudes_mm`) without a wider sweep in the scene. Only the shifts the
 /// motions need are solved, as far as 20 mm (`WIDEST_SHIFT_MM`). The parameters that describe the
 /// sweep (flange contact, jumps) are `sweep`'s own; `tan γe` and Δr at ±3 mm come from the
@@ -449,6 +451,7 @@ pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
 /// // The sweep ends at 4 mm; the motion of 7.5 mm is computed all the same.
 /// assert!(pair.klingel.at(7.5).unwrap().is_finite());
 /// ```
+#[doc(hidden)] // public for the fleet and the pipeline (a sweep widened for the standard's amplitudes)
 pub fn assess_on(
     placement: &Placement,
     sweep: &RigidSweep,

@@ -176,6 +176,7 @@ pub enum FleetError {
 
 /// What is wrong with a pairs file.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for `wheelrail fleet` (the problem a pairs-file error names)
 pub enum PairsProblem {
     /// Not CSV (the parser's message).
     Csv(String),
@@ -253,7 +254,7 @@ impl std::error::Error for FleetError {}
 /// Reads a pairs file: CSV with the columns `id,left_wheel,right_wheel` and optionally
 /// `left_rail,right_rail` (both or neither), `#` comment lines allowed; paths relative to
 /// `dir` (the file's folder). Fields are separated by commas, semicolons or tabs, as the
-/// header's are ([`crate::delimited::Separator::of_text`]). A row with both rail cells empty keeps the template's rails.
+/// header's are (the crate's `delimited` module). A row with both rail cells empty keeps the template's rails.
 /// `origin` names the file in messages.
 ///
 /// # Errors
@@ -270,6 +271,7 @@ impl std::error::Error for FleetError {}
 /// let e = parse_pairs("id,left_wheel,right_wheel\nws1,a.whl,b.whl\nws1,c.whl,d.whl\n", "pairs.csv", Path::new(".")).unwrap_err();
 /// assert!(e.to_string().contains("pairs.csv:3") && e.to_string().contains("ws1"), "{e}");
 /// ```
+#[doc(hidden)] // public for `wheelrail fleet` and the fleet tests
 pub fn parse_pairs(
     text: &str,
     origin: &str,
@@ -349,6 +351,7 @@ pub fn parse_pairs(
 
 /// One part of a fleet split across machines: the `k`-th (from 1) of `n` parts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[doc(hidden)] // public for `wheelrail fleet --shard`
 pub struct Shard {
     /// Which part, 1 to `n`.
     pub k: usize,

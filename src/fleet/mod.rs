@@ -19,6 +19,8 @@
 //! error of the fleet.
 
 mod inputs;
+#[doc(hidden)]
+// public for the fleet tests and benchmark and `examples/worn_wheels.rs` (synthetic worn wheels)
 pub mod synthetic;
 
 pub use inputs::{FleetError, Inputs, Item, PairsProblem, Shard, items_of_files, parse_pairs};
@@ -36,6 +38,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The largest Hertz pressure of one pair over its sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for the fleet's table, its tests and the Python binding
 pub struct MaxPressure {
     /// The largest maximum pressure p0 over the sweep and both wheels (MPa).
     pub p0_mpa: f64,
@@ -116,6 +119,7 @@ pub(crate) fn summarise(
 /// One input file of a row: its role, path and the SHA-256 of its bytes (`None` when it
 /// could not be read).
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the fleet's table (a row's files and their hashes)
 pub struct InputFile {
     /// `wheel`, `rail`, `left_wheel`, ... (see [`Inputs::roles`]).
     pub role: &'static str,

@@ -26,6 +26,7 @@ use crate::track::{Inclination, Placement};
 
 /// One wheel's flange dimensions, its limits and the limits it breaks.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's and the fleet's maintenance tables
 pub struct WheelAssessment {
     /// Sh, Sd, qR, or why they cannot be measured.
     pub dimensions: Result<FlangeDimensions, DimensionError>,
@@ -55,6 +56,7 @@ impl WheelAssessment {
 /// The nominal rails a placement's rails are measured against, with the inclination in
 /// their data (the scene's `rail.profile_inclination`, shared by every rail of a scene).
 #[derive(Debug, Clone)]
+#[doc(hidden)] // public for the pipeline and the fleet (the rails wear is measured against)
 pub struct NominalRails {
     /// Left and right nominal rail profiles.
     pub profiles: [Profile; 2],
@@ -64,6 +66,7 @@ pub struct NominalRails {
 
 /// The maintenance view of a placement's profiles.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's and the fleet's maintenance tables
 pub struct Assessment {
     /// Left and right wheels.
     pub wheels: [WheelAssessment; 2],
@@ -75,6 +78,7 @@ pub struct Assessment {
 /// The flange dimensions of `placement`'s wheels against the standard's limits for their
 /// nominal diameters with `overrides`, and the wear of its rails against `nominal` (when
 /// given) at the track's gauge-point depth.
+#[doc(hidden)] // public for the pipeline and the fleet (every run's maintenance table)
 pub fn assess(
     placement: &Placement,
     overrides: &LimitOverrides,

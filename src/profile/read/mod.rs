@@ -143,6 +143,7 @@ use crate::profile::ProfileKind;
 
 /// A supported profile file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[doc(hidden)] // public for the reader and fuzz tests that parse text in a named format
 pub enum ProfileFormat {
     /// The project's CSV (`.csv`), see the [module docs](self).
     Csv,
@@ -228,6 +229,7 @@ impl ReadOptions {
 
 /// Where a profile came from: enough to tell two runs apart that read different files.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[doc(hidden)] // public for the report's provenance table (a read profile's file and format)
 pub struct ProfileSource {
     /// The path as given to [`read_profile`], or the origin given to [`parse_str`].
     pub path: String,
@@ -319,7 +321,7 @@ impl PointProfile {
     }
 
     /// The lateral and vertical coordinates as two columns (mm), e.g. to fit a
-    /// [`SmoothingSpline`](crate::profile::spline::SmoothingSpline).
+    /// smoothing spline as [`Profile::from_points`](crate::profile::Profile::from_points) does.
     pub fn columns(&self) -> (Vec<f64>, Vec<f64>) {
         self.points.iter().map(|p| (p[0], p[1])).unzip()
     }
@@ -440,6 +442,7 @@ pub fn read_profile_with(
 /// assert_eq!(rail.source.sha256.len(), 64);
 /// # Ok::<(), wheelrail::profile::read::ReadError>(())
 /// ```
+#[doc(hidden)] // public for the reader, profile and stress tests (text in a named format)
 pub fn parse_str(
     text: &str,
     format: ProfileFormat,
@@ -455,6 +458,7 @@ pub fn parse_str(
 ///
 /// As [`parse_str`]; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
 /// [`ReadError::DuplicatePoint`], but [`ReadError::TooFewPoints`] when too few remain.
+#[doc(hidden)] // public for the reader tests and the fuzz target
 pub fn parse_str_with(
     text: &str,
     format: ProfileFormat,
