@@ -2,10 +2,10 @@
 //! ellipse and Kalker's creep coefficients on a grid of lateral shift × yaw.
 //!
 //! Stage entry: [`compute`]. Each yaw of the grid is one rigid sweep over the shifts with
-//! that fixed yaw ([`crate::rigid::search`], the yawed outline of [`crate::gap`]), followed
+//! that fixed yaw ([`crate::rigid::search`], the yawed outline of `crate::gap`), followed
 //! by the Hertz sweep of its rigid contacts ([`crate::hertz::sweep`], the scene's method and
 //! normal-load rule) and Kalker's coefficients of each ellipse
-//! ([`crate::creep::coefficients::kalker`]): the pipeline's own stages, so that the row of
+//! (`crate::creep::coefficients::kalker`): the pipeline's own stages, so that the row of
 //! yaw 0 is the ordinary rigid and Hertz sweep's, to the bit.
 //!
 //! # Frames, units, interpolation

@@ -15,7 +15,8 @@
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
 //! 7. [`creep`]: creepages from the wheelset's motion and the creep forces of a patch
-//!    (Kalker's linear theory, FASTSIM, Polach), and over a sweep ([`creep::sweep`]);
+//!    (Kalker's linear theory, FASTSIM, Polach), and over a sweep (the stage a scene's
+//!    `[creep]` runs);
 //! 8. [`contact_table`]: the contact table a vehicle model reads (shift × yaw);
 //!
 //! and beside the contact pipeline, [`maintenance`]: a wheel's flange dimensions Sh, Sd, qR

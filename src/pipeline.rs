@@ -10,9 +10,9 @@
 //! Profiles ──> ContactTable (a rigid and a Hertz sweep per yaw of `[table]`)
 //! ```
 //!
-//! Every figure declares the one stage whose result it draws ([`Figure::stage`]); the run
+//! Every figure declares the one stage whose result it draws (`Figure::stage`); the run
 //! computes that stage and the stages it depends on ([`Stage::requires`]), nothing else, and
-//! records what it ran in a [`RunRecord`] (printed by `wheelrail report --timings`).
+//! records what it ran in a `RunRecord` (printed by `wheelrail report --timings`).
 
 use crate::cache::{PlacementCache, ProfileKey, RailKey};
 use crate::conicity;
@@ -102,7 +102,8 @@ pub struct Results {
 /// its figures, the creep stage for a scene with `[creep]` (`creep.csv`), the contact table
 /// for one with `[table]`. The profile stage always runs (placement is validated for every
 /// scene).
-#[doc(hidden)] // public for the creep-stage test, the scene benchmark and `examples/evaluation_counts.rs`
+// public for the creep-stage test, the scene benchmark and `examples/evaluation_counts.rs`
+#[doc(hidden)]
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
     let mut wanted: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
     if scene.asks_for_creep {
@@ -141,7 +142,7 @@ pub(crate) fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
 }
 
 /// Places the scene's profiles and runs the stages its outputs need (and only those: see
-/// [`needed_stages`]).
+/// `needed_stages`).
 ///
 /// # Errors
 /// [`SceneError`] when a profile cannot be read or placed (naming its key).
@@ -450,7 +451,7 @@ fn epsilon_sweeps(scene: &Scene, placement: &Placement, rigid: &Arc<RigidSweep>)
     EpsilonSweeps { runs }
 }
 
-/// Loads the scene's four profiles and places them: [`place_wheels`], [`place_rails`] and
+/// Loads the scene's four profiles and places them: `place_wheels`, `place_rails` and
 /// `assemble`.
 ///
 /// # Errors
@@ -529,7 +530,7 @@ pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], SceneError> {
     place_wheels_in(scene, None)
 }
 
-/// [`place_wheels`], with the profiles from `cache` when given.
+/// `place_wheels`, with the profiles from `cache` when given.
 fn place_wheels_in(
     scene: &Scene,
     cache: Option<&PlacementCache>,
@@ -573,10 +574,10 @@ pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     place_rails_in(scene, None)
 }
 
-/// [`place_rails`], through `cache` when given (see [`place_cached`]).
+/// `place_rails`, through `cache` when given (see [`place_cached`]).
 ///
 /// # Errors
-/// As [`place_rails`].
+/// As `place_rails`.
 pub(crate) fn place_rails_cached(
     scene: &Scene,
     cache: &PlacementCache,
@@ -584,7 +585,7 @@ pub(crate) fn place_rails_cached(
     place_rails_in(scene, Some(cache))
 }
 
-/// [`place_rails`], with the profiles and rails from `cache` when given.
+/// `place_rails`, with the profiles and rails from `cache` when given.
 fn place_rails_in(
     scene: &Scene,
     cache: Option<&PlacementCache>,

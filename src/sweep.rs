@@ -62,7 +62,8 @@ pub enum SweepError {
         /// Its end (mm).
         to_mm: f64,
     },
-    /// A yaw that is not finite, or reaches beyond ±0.05 rad (`MAX_YAW_RAD`) at an end of the sweep.
+    /// A yaw that is not finite, or reaches beyond ±0.05 rad (`MAX_YAW_RAD`) at an end of
+    /// the sweep.
     Yaw {
         /// The yaw at that end (rad).
         yaw_rad: f64,
@@ -254,8 +255,8 @@ impl Sweep {
     /// This sweep with the wheelset yawed by `yaw` along it.
     ///
     /// # Errors
-    /// [`SweepError::Yaw`] where the yaw is not finite or reaches beyond ±0.05 rad (`MAX_YAW_RAD`) at
-    /// an end of the sweep.
+    /// [`SweepError::Yaw`] where the yaw is not finite or reaches beyond ±0.05 rad
+    /// (`MAX_YAW_RAD`) at an end of the sweep.
     pub fn with_yaw(mut self, yaw: YawRule) -> Result<Sweep, SweepError> {
         for y_ws_mm in [self.shifts_mm[0], self.shifts_mm[self.shifts_mm.len() - 1]] {
             let yaw_rad = yaw.at(y_ws_mm);

@@ -160,7 +160,8 @@ pub struct DeltaR {
 
 impl DeltaR {
     /// A Δr function from a table with strictly increasing `y`, all values finite, at least
-    /// 3 points and a change of sign (values below the rigid search's Δr resolution, 1e-9 mm, are 0).
+    /// 3 points and a change of sign (values below the rigid search's Δr resolution,
+    /// 1e-9 mm, are 0).
     ///
     /// # Errors
     /// [`DeltaRError`] naming the offending point.

@@ -192,7 +192,7 @@ pub struct Parameters {
     pub contact_point_jumps: usize,
     /// Number of sampling artefacts over the sweep (both wheels): hops of a sampled
     /// profile's contact point across hollows of the gap shallower than
-    /// [`rigid::ARTEFACT_HOLLOW_MM`].
+    /// `rigid::ARTEFACT_HOLLOW_MM`.
     pub sampling_artefacts: usize,
     /// Δr at y_ws = +3 mm (mm).
     pub delta_r_at_plus_3mm_mm: f64,
@@ -413,7 +413,7 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 }
 
 /// The equivalent conicity and parameters of the pair swept by `sweep`: its Δr function
-/// (jumps as steps, [`delta_r_of`]), tan γe by both methods at the settings' amplitudes
+/// (jumps as steps, `delta_r_of`), tan γe by both methods at the settings' amplitudes
 /// (mm), and the [`Parameters`] (tan γe at 2, 3 and 4 mm, nonlinearity, flange-contact
 /// shifts, jumps). Amplitudes the sweep cannot support give NaN with their status, not an
 /// error.
@@ -451,7 +451,6 @@ pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
 /// // The sweep ends at 4 mm; the motion of 7.5 mm is computed all the same.
 /// assert!(pair.klingel.at(7.5).unwrap().is_finite());
 /// ```
-#[doc(hidden)] // public for the fleet and the pipeline (a sweep widened for the standard's amplitudes)
 pub fn assess_on(
     placement: &Placement,
     sweep: &RigidSweep,

@@ -64,7 +64,7 @@
 //! The strips are independent: they are marched four at a time in SIMD lanes, all groups a
 //! cell at a time, so a strip count that is a multiple of 4 costs nothing extra.
 //!
-//! The default grid ([`super::DEFAULT_GRID`], 32 × 32) comes from [`study`]: against a
+//! The default grid (`super::DEFAULT_GRID`, 32 × 32) comes from `study`: against a
 //! converged FASTSIM (1000 × 1000) over patches of `a/b` = 1.5 and 0.375 and creepages of
 //! 0.3, 1 and 3 times saturation in ξ, η, φ and all three at once, it errs by at most
 //! 0.07 % of `μ FN` in force and 0.04 % of `μ FN c` in spin moment, at about 6 µs per patch
@@ -454,7 +454,7 @@ pub struct StudyRow {
     pub moment_error: f64,
 }
 
-/// The cases of [`study`]: two patches (`a/b = 1.5` and `0.375`, 50 kN), each with creepages
+/// The cases of `study`: two patches (`a/b = 1.5` and `0.375`, 50 kN), each with creepages
 /// of 0.3, 1 and 3 times the creepage that saturates linear theory, in ξ alone, η alone, φ
 /// alone and all three at once (with signs mixed).
 #[doc(hidden)] // public for the grid study's tests

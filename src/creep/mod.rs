@@ -3,7 +3,7 @@
 //! Stage entry: [`forces`], one patch at a time: the creepages from the motion
 //! ([`creepage`]), the normal force from the patch's share of the wheel's vertical load
 //! ([`normal`]), the Hertz ellipse for that normal force ([`crate::hertz::ellipse`]), and the
-//! tangential forces by one of three models behind one interface ([`tangential::solve`]):
+//! tangential forces by one of three models behind one interface (`tangential::solve`):
 //!
 //! * [`Method::Linear`]: Kalker's linear theory (Kalker 1990, Appendix E; Johnson 1985,
 //!   §8.4), the limit of small creepage, with Kalker's coefficients ([`coefficients`]);
@@ -56,7 +56,8 @@ pub mod linear;
 pub mod normal;
 pub mod polach;
 #[doc(hidden)]
-// public for the pipeline's creep stage (`creep.csv`), its tests, the chart tests and the benchmarks
+// public for the pipeline's creep stage (`creep.csv`), its tests, the chart tests and the
+// benchmarks
 pub mod sweep;
 pub mod tangential;
 
@@ -118,7 +119,7 @@ impl fmt::Display for Bound {
 pub enum Flexibility {
     /// CONTACT's blend: the three flexibilities at small creepage, shifting to one
     /// combined flexibility as the creepage grows to 3 times the creepage that saturates
-    /// linear theory ([`fastsim::flexibilities`]).
+    /// linear theory (`fastsim::flexibilities`).
     #[default]
     Blended,
     /// Kalker's three flexibilities, unchanged at any creepage.
@@ -177,7 +178,7 @@ pub(crate) const DEFAULT_NORMAL_TOLERANCE: f64 = 1e-10;
 pub(crate) const DEFAULT_NORMAL_MAX_ITERATIONS: u32 = 60;
 
 /// The settings of the creep stage, checked by their constructors (the default is FASTSIM,
-/// parabolic bound, blended flexibilities, [`DEFAULT_GRID`], μ = 0.3, steel with
+/// parabolic bound, blended flexibilities, a grid of 32 × 32, μ = 0.3, steel with
 /// G = 82 GPa and ν = 0.28).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Settings {
@@ -470,7 +471,7 @@ pub struct PatchForces {
 ///
 /// # Errors
 ///
-/// The [`CreepError`] of [`creepage::creepages`] for the motion and point, and
+/// The [`CreepError`] of `creepage::creepages` for the motion and point, and
 /// [`CreepError::VerticalLoad`] unless the load is positive and finite,
 /// [`CreepError::SemiAxes`] or [`CreepError::NormalForce`] for a bad [`Shape::SemiAxes`],
 /// [`CreepError::NonFinite`] for non-finite curvatures. A shape that is not Hertzian, and a

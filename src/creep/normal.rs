@@ -31,7 +31,7 @@
 //!
 //! No root exists when the friction pulls the wheel down harder than the normal force can
 //! hold it up (`μ tan|δ| ≥ 1` with the tangential force saturated against the load: Nadal's
-//! limit of flange climbing): [`Outcome::NoEquilibrium`].
+//! limit of flange climbing): `Outcome::NoEquilibrium`.
 
 use super::CreepError;
 use crate::hertz::NotHertzianReason;

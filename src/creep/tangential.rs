@@ -1,5 +1,5 @@
 //! The tangential problem of one elliptic patch with a known normal force: one interface,
-//! [`solve`], for the three models ([`super::Method`]).
+//! `solve`, for the three models ([`super::Method`]).
 //!
 //! # Signs
 //!

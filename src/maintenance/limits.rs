@@ -24,7 +24,7 @@
 //! outside the TSI's range, the 330 mm band applies and its source says so.
 //!
 //! A scene's `[limits]` overrides any of them (`sh_min_mm`, `sh_max_mm`, `sd_min_mm`,
-//! `sd_max_mm`, `qr_min_mm`): a limit remembers where it came from ([`Limit::source`]).
+//! `sd_max_mm`, `qr_min_mm`): a limit remembers where it came from (`Limit::source`).
 
 use super::dimensions::FlangeDimensions;
 use std::fmt;
@@ -56,7 +56,7 @@ pub struct Limits {
 
 /// Values set by a scene's `[limits]`, each overriding the standard's (mm).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-#[doc(hidden)] // public for the scene's `[limits]` (what `assess` takes)
+#[doc(hidden)] // public for the scene's `[limits]` (what `Limits::with_overrides` takes)
 pub struct LimitOverrides {
     /// `sh_min_mm`.
     pub sh_min_mm: Option<f64>,

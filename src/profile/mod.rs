@@ -126,7 +126,7 @@ impl Profile {
 
     /// A profile through sampled points: a cubic spline that filters out waves shorter than
     /// about `smoothing_wavelength_mm` (0 interpolates the points; see
-    /// [`spline::lambda_for_wavelength`]).
+    /// `spline::lambda_for_wavelength`).
     ///
     /// # Errors
     /// [`spline::SplineError`] when the spline cannot be fitted to the points.

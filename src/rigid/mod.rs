@@ -131,7 +131,7 @@ pub struct SideContact {
     /// relative to the wheelset centre: 0 without yaw.
     pub x: f64,
     /// Distance of the contact point ahead of the axle along the wheelset's own forward
-    /// axis (mm): 0 without yaw ([`crate::gap::Yaw::lead`]).
+    /// axis (mm): 0 without yaw (`crate::gap::Yaw::lead`).
     pub lead: f64,
     /// A second contact point: another local minimum of the gap within
     /// `TWO_POINT_GAP_TOL_MM`; `(s, gap)` in mm.
@@ -245,15 +245,15 @@ pub(crate) fn resolved_delta_r(delta_r: f64) -> f64 {
 }
 
 /// What a contact-point jump is: a jump between two contacts the profiles separate, or a
-/// sampling artefact ([`ARTEFACT_HOLLOW_MM`]).
+/// sampling artefact (`ARTEFACT_HOLLOW_MM`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum JumpKind {
     /// The contact point jumps between two contacts separated by a hollow of the gap at
-    /// least [`ARTEFACT_HOLLOW_MM`] deep (a tread-to-flange jump, a two-point contact):
+    /// least `ARTEFACT_HOLLOW_MM` deep (a tread-to-flange jump, a two-point contact):
     /// located to 1e-4 mm, a step of Δr, a break in the charts.
     Jump,
     /// A sampling artefact: the contact point hops between two minima of the gap of a
-    /// sampled profile that a hollow shallower than [`ARTEFACT_HOLLOW_MM`] separates. Not
+    /// sampled profile that a hollow shallower than `ARTEFACT_HOLLOW_MM` separates. Not
     /// refined (its interval is the sweep's step that holds it), continuous in Δr and in the
     /// charts, counted apart.
     Artefact,
@@ -556,19 +556,15 @@ pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSwee
 }
 
 /// `sweep` (solved by [`search`] on `placement`) continued beyond its ends to reach
-/// `from_mm` and `to_mm`: new positions spaced as the sweep's end steps (for a sweep of one
-/// position, 0.1 mm: `EXTENSION_STEP_MM`) and rounded to 1e-9 mm, each end continued outwards from the positions nearest it, and
-/// the jumps of the new windows. The positions and jumps it had are kept as they are, so
-/// the result holds the sweep's values to the bit where they overlap. A bound already
+/// `from` and `to` (mm): new positions spaced as the sweep's end steps (for a sweep of one
+/// position, 0.1 mm: `EXTENSION_STEP_MM`) and rounded to 1e-9 mm, each end continued
+/// outwards from the positions nearest it, and the jumps of the new windows. The positions
+/// and jumps it had are kept as they are, so the result holds the sweep's values to the bit
+/// where they overlap. A bound already
 /// inside the sweep adds nothing on that side. The result is not mirrored: the quasi-
 /// elastic pass and the Hertz sweep are computed on the scene's own sweep, not on this
 /// one (the equivalent conicity asks for it, [`crate::conicity::assess_on`]).
-pub(crate) fn extend(
-    placement: &Placement,
-    sweep: &RigidSweep,
-    from_mm: f64,
-    to_mm: f64,
-) -> RigidSweep {
+pub(crate) fn extend(placement: &Placement, sweep: &RigidSweep, from: f64, to: f64) -> RigidSweep {
     let p = &sweep.positions;
     let n = p.len();
     let step = |a: usize, b: usize| {
@@ -585,11 +581,11 @@ pub(crate) fn extend(
             .map(|i| ((start + (bound - start).signum() * step * i as f64) * 1e9).round() / 1e9)
             .collect()
     };
-    let left = outwards(p[0].y_ws, step(0, 1.min(n - 1)), from_mm.min(p[0].y_ws));
+    let left = outwards(p[0].y_ws, step(0, 1.min(n - 1)), from.min(p[0].y_ws));
     let right = outwards(
         p[n - 1].y_ws,
         step(n.saturating_sub(2), n - 1),
-        to_mm.max(p[n - 1].y_ws),
+        to.max(p[n - 1].y_ws),
     );
     if left.is_empty() && right.is_empty() {
         return sweep.clone();

@@ -218,7 +218,7 @@ pub struct Scene {
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
 #[derive(Debug, Clone, Default, PartialEq)]
-#[doc(hidden)] // public for `wheelrail fleet` (a template scene's `[fleet]`)
+#[doc(hidden)] // public for `wheelrail fleet` (what `Scene::fleet` gives the CLI)
 pub struct FleetSettings {
     pub(crate) conicity_limit: Option<f64>,
 }

@@ -121,7 +121,7 @@
 //!
 //! A caller that wants to run such files asks for it explicitly with
 //! [`ReadOptions`]`{ step_back: `[`StepBack::Drop`]` }` and [`read_profile_with`] or
-//! [`parse_str_with`]: walking outwards from the crest, every point that does not advance the
+//! `parse_str_with`: walking outwards from the crest, every point that does not advance the
 //! lateral coordinate beyond the points kept before it is dropped, as CONTACT's
 //! `delete_foldback` option does (details in `validate`), and the lines of the dropped
 //! points are listed in [`PointProfile::dropped_step_backs`] so that the caller can report
@@ -208,8 +208,8 @@ pub enum StepBack {
     Drop,
 }
 
-/// Options of [`read_profile_with`] and [`parse_str_with`]; the default is what
-/// [`read_profile`] and [`parse_str`] do.
+/// Options of [`read_profile_with`] and `parse_str_with`; the default is what
+/// [`read_profile`] and `parse_str` do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct ReadOptions {
     pub(crate) step_back: StepBack,
@@ -231,9 +231,9 @@ impl ReadOptions {
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[doc(hidden)] // public for the report's provenance table (a read profile's file and format)
 pub struct ProfileSource {
-    /// The path as given to [`read_profile`], or the origin given to [`parse_str`].
+    /// The path as given to [`read_profile`], or the origin given to `parse_str`.
     pub path: String,
-    /// SHA-256 of the file's bytes (of the text for [`parse_str`]), lower-case hex.
+    /// SHA-256 of the file's bytes (of the text for `parse_str`), lower-case hex.
     pub sha256: String,
     /// The format it was read as.
     pub format: ProfileFormat,
@@ -338,7 +338,7 @@ impl PointProfile {
 ///
 /// [`ReadError::Io`] if the file cannot be read, [`ReadError::UnknownFormat`] for another
 /// extension, [`ReadError::WrongKind`] if the extension (`.prw`/`.whl` wheel, `.prr`/`.ban`
-/// rail) or the file's contents declare the other kind, and every error of [`parse_str`].
+/// rail) or the file's contents declare the other kind, and every error of `parse_str`.
 ///
 /// # Examples
 ///
@@ -452,11 +452,11 @@ pub fn parse_str(
     parse_str_with(text, format, kind, origin, &ReadOptions::default())
 }
 
-/// [`parse_str`] with [`ReadOptions`].
+/// `parse_str` with [`ReadOptions`].
 ///
 /// # Errors
 ///
-/// As [`parse_str`]; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
+/// As `parse_str`; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
 /// [`ReadError::DuplicatePoint`], but [`ReadError::TooFewPoints`] when too few remain.
 #[doc(hidden)] // public for the reader tests and the fuzz target
 pub fn parse_str_with(
