@@ -2,10 +2,10 @@
 //! ellipse and Kalker's creep coefficients on a grid of lateral shift × yaw.
 //!
 //! Stage entry: [`compute`]. Each yaw of the grid is one rigid sweep over the shifts with
-//! that fixed yaw ([`crate::rigid::search`], the yawed outline of [`crate::gap`]), followed
+//! that fixed yaw ([`crate::rigid::search`], the yawed outline of `crate::gap`), followed
 //! by the Hertz sweep of its rigid contacts ([`crate::hertz::sweep`], the scene's method and
 //! normal-load rule) and Kalker's coefficients of each ellipse
-//! ([`crate::creep::coefficients::kalker`]): the pipeline's own stages, so that the row of
+//! (`crate::creep::coefficients::kalker`): the pipeline's own stages, so that the row of
 //! yaw 0 is the ordinary rigid and Hertz sweep's, to the bit.
 //!
 //! # Frames, units, interpolation
@@ -25,7 +25,7 @@ use crate::track::Placement;
 use std::fmt;
 
 /// The most yaws a grid may have: each is one rigid sweep.
-pub const MAX_YAWS: usize = 401;
+pub(crate) const MAX_YAWS: usize = 401;
 
 /// A grid of lateral shift × yaw, checked by [`Grid::new`].
 #[derive(Debug, Clone, PartialEq)]
@@ -38,12 +38,12 @@ pub struct Grid {
 /// A grid that cannot be computed.
 #[derive(Debug, Clone, PartialEq)]
 pub enum GridError {
-    /// No yaw, more than [`MAX_YAWS`], or yaws that do not increase.
+    /// No yaw, more than 401 (`MAX_YAWS`), or yaws that do not increase.
     Yaws {
         /// How many were given.
         count: usize,
     },
-    /// A yaw beyond [`MAX_YAW_RAD`] or not finite.
+    /// A yaw beyond ±0.05 rad (`MAX_YAW_RAD`) or not finite.
     Yaw(SweepError),
 }
 
@@ -63,7 +63,7 @@ impl std::error::Error for GridError {}
 
 impl Grid {
     /// The grid of `shifts` (mm) and `yaws_rad` (rad, strictly increasing, each within
-    /// ±[`MAX_YAW_RAD`]), the yawed outline by `model`.
+    /// ±0.05 rad, `MAX_YAW_RAD`), the yawed outline by `model`.
     ///
     /// # Errors
     ///

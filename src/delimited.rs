@@ -6,15 +6,8 @@
 //! file) finds its separator here, so that they read the same files alike and name the
 //! separator when a line does not follow its header.
 //!
-//! # Example
-//!
-//! ```
-//! use wheelrail::delimited::Separator;
-//! let sep = Separator::of_header("s_mm;F_mm");
-//! assert_eq!(sep, Separator::Semicolon);
-//! assert_eq!(sep.number_text("-12,5"), "-12.5");
-//! assert_eq!(Separator::Comma.number_text("-12,5"), "-12,5");
-//! ```
+//! For example, the header `s_mm;F_mm` gives [`Separator::Semicolon`], with which the field
+//! `-12,5` reads as `-12.5`; with [`Separator::Comma`] it stays `-12,5` (the tests below).
 
 use std::borrow::Cow;
 use std::fmt;

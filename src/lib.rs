@@ -15,7 +15,8 @@
 //! 6. [`conicity`]: the equivalent conicity of EN 15302 from the rigid Δr function, and the
 //!    parameters of a wheel/rail pair;
 //! 7. [`creep`]: creepages from the wheelset's motion and the creep forces of a patch
-//!    (Kalker's linear theory, FASTSIM, Polach), and over a sweep ([`creep::sweep`]);
+//!    (Kalker's linear theory, FASTSIM, Polach), and over a sweep (the stage a scene's
+//!    `[creep]` runs);
 //! 8. [`contact_table`]: the contact table a vehicle model reads (shift × yaw);
 //!
 //! and beside the contact pipeline, [`maintenance`]: a wheel's flange dimensions Sh, Sd, qR
@@ -101,7 +102,7 @@ pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
 pub mod creep;
-pub mod delimited;
+mod delimited;
 mod error;
 pub mod fleet;
 // The gap of a wheel over its rail: public for the reference tests' brute-force searches
@@ -111,12 +112,21 @@ pub mod gap;
 pub mod hertz;
 pub mod maintenance;
 mod message;
+// Results -> report tables (and with `cli` charts and pages): public for the Python binding's
+// `run(...).tables`, the benchmarks and the report tests, not part of the API.
+#[doc(hidden)]
 pub mod outputs;
 pub mod pipeline;
+// The ranges of physical inputs: public for the Python binding's checks of `hertz_ellipse`
+// and the adversarial tests, not part of the API.
+#[doc(hidden)]
 pub mod plausible;
 pub mod prelude;
 pub mod profile;
 pub mod quasi_elastic;
+// Tables, CSV and (with `cli`) charts and pages: public for the Python binding's conversion
+// of tables and the report tests, not part of the API.
+#[doc(hidden)]
 pub mod report;
 pub mod rigid;
 mod rng;

@@ -10,9 +10,9 @@
 //! Profiles ──> ContactTable (a rigid and a Hertz sweep per yaw of `[table]`)
 //! ```
 //!
-//! Every figure declares the one stage whose result it draws ([`Figure::stage`]); the run
+//! Every figure declares the one stage whose result it draws (`Figure::stage`); the run
 //! computes that stage and the stages it depends on ([`Stage::requires`]), nothing else, and
-//! records what it ran in a [`RunRecord`] (printed by `wheelrail report --timings`).
+//! records what it ran in a `RunRecord` (printed by `wheelrail report --timings`).
 
 use crate::cache::{PlacementCache, ProfileKey, RailKey};
 use crate::conicity;
@@ -26,11 +26,15 @@ use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, Sid
 use std::sync::Arc;
 use std::time::Instant;
 
-pub use crate::stage::{Figure, Stage};
+#[doc(hidden)]
+// public for the scene's figures: the report tests, the chart tests and the scene benchmark
+pub use crate::stage::Figure;
+pub use crate::stage::Stage;
 
 /// What a run computed, with wall-clock times, for `--timings` and for tests that check that
 /// no unneeded stage ran.
 #[derive(Debug, Clone, Default)]
+#[doc(hidden)] // public for the Python binding and the tests that check which stages ran
 pub struct RunRecord {
     /// The stages run, in order, with their duration in seconds.
     pub stages: Vec<(Stage, f64)>,
@@ -60,6 +64,7 @@ impl RunRecord {
 
 /// The quasi-elastic solution for each sensitivity value of eps.
 #[derive(Debug, Clone)]
+#[doc(hidden)] // public for the report's ε-sensitivity table and figure
 pub struct EpsilonSweeps {
     /// `(eps in mm, solution)`, in the scene's order.
     pub runs: Vec<(f64, QuasiElasticSweep)>,
@@ -97,6 +102,8 @@ pub struct Results {
 /// its figures, the creep stage for a scene with `[creep]` (`creep.csv`), the contact table
 /// for one with `[table]`. The profile stage always runs (placement is validated for every
 /// scene).
+// public for the creep-stage test, the scene benchmark and `examples/evaluation_counts.rs`
+#[doc(hidden)]
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
     let mut wanted: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
     if scene.asks_for_creep {
@@ -135,7 +142,7 @@ pub(crate) fn closed_stages(scene: &Scene, wanted: &[Stage]) -> Vec<Stage> {
 }
 
 /// Places the scene's profiles and runs the stages its outputs need (and only those: see
-/// [`needed_stages`]).
+/// `needed_stages`).
 ///
 /// # Errors
 /// [`SceneError`] when a profile cannot be read or placed (naming its key).
@@ -198,7 +205,7 @@ pub(crate) fn run_gated<E: From<SceneError>>(
 ///
 /// # Errors
 /// [`SceneError`] naming `rail.nominal_profile` when a nominal rail cannot be read.
-pub fn nominal_rails(scene: &Scene) -> Result<Option<NominalRails>, SceneError> {
+pub(crate) fn nominal_rails(scene: &Scene) -> Result<Option<NominalRails>, SceneError> {
     let Some(refs) = &scene.nominal_rails else {
         return Ok(None);
     };
@@ -444,7 +451,7 @@ fn epsilon_sweeps(scene: &Scene, placement: &Placement, rigid: &Arc<RigidSweep>)
     EpsilonSweeps { runs }
 }
 
-/// Loads the scene's four profiles and places them: [`place_wheels`], [`place_rails`] and
+/// Loads the scene's four profiles and places them: `place_wheels`, `place_rails` and
 /// `assemble`.
 ///
 /// # Errors
@@ -523,7 +530,7 @@ pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], SceneError> {
     place_wheels_in(scene, None)
 }
 
-/// [`place_wheels`], with the profiles from `cache` when given.
+/// `place_wheels`, with the profiles from `cache` when given.
 fn place_wheels_in(
     scene: &Scene,
     cache: Option<&PlacementCache>,
@@ -567,10 +574,10 @@ pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     place_rails_in(scene, None)
 }
 
-/// [`place_rails`], through `cache` when given (see [`place_cached`]).
+/// `place_rails`, through `cache` when given (see [`place_cached`]).
 ///
 /// # Errors
-/// As [`place_rails`].
+/// As `place_rails`.
 pub(crate) fn place_rails_cached(
     scene: &Scene,
     cache: &PlacementCache,
@@ -578,7 +585,7 @@ pub(crate) fn place_rails_cached(
     place_rails_in(scene, Some(cache))
 }
 
-/// [`place_rails`], with the profiles and rails from `cache` when given.
+/// `place_rails`, with the profiles and rails from `cache` when given.
 fn place_rails_in(
     scene: &Scene,
     cache: Option<&PlacementCache>,

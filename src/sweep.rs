@@ -11,7 +11,7 @@ use std::fmt;
 /// The largest yaw of the wheelset a sweep may reach (rad): 50 mrad, beyond the angle of
 /// attack of a wheelset in the tightest curves (about 40 mrad at 150 m radius); a larger
 /// value is almost certainly a unit mistake (degrees or milliradians for radians).
-pub const MAX_YAW_RAD: f64 = 0.05;
+pub(crate) const MAX_YAW_RAD: f64 = 0.05;
 
 /// The largest number of positions [`Sweep::range`] makes: a sweep of a million positions
 /// is almost certainly a unit mistake (metres for millimetres) and would run for minutes.
@@ -62,7 +62,8 @@ pub enum SweepError {
         /// Its end (mm).
         to_mm: f64,
     },
-    /// A yaw that is not finite, or reaches beyond [`MAX_YAW_RAD`] at an end of the sweep.
+    /// A yaw that is not finite, or reaches beyond ±0.05 rad (`MAX_YAW_RAD`) at an end of
+    /// the sweep.
     Yaw {
         /// The yaw at that end (rad).
         yaw_rad: f64,
@@ -254,8 +255,8 @@ impl Sweep {
     /// This sweep with the wheelset yawed by `yaw` along it.
     ///
     /// # Errors
-    /// [`SweepError::Yaw`] where the yaw is not finite or reaches beyond [`MAX_YAW_RAD`] at
-    /// an end of the sweep.
+    /// [`SweepError::Yaw`] where the yaw is not finite or reaches beyond ±0.05 rad
+    /// (`MAX_YAW_RAD`) at an end of the sweep.
     pub fn with_yaw(mut self, yaw: YawRule) -> Result<Sweep, SweepError> {
         for y_ws_mm in [self.shifts_mm[0], self.shifts_mm[self.shifts_mm.len() - 1]] {
             let yaw_rad = yaw.at(y_ws_mm);

@@ -4,7 +4,7 @@
 use crate::rigid::resolved_delta_r;
 use std::fmt;
 
-/// `delta_r` with the values below [`DELTA_R_RESOLUTION_MM`](super::DELTA_R_RESOLUTION_MM) set to 0.
+/// `delta_r` with the values below 1e-9 mm (the rigid search's Δr resolution) set to 0.
 fn resolved(mut delta_r: Vec<f64>) -> Vec<f64> {
     for v in &mut delta_r {
         *v = resolved_delta_r(*v);
@@ -74,6 +74,7 @@ pub struct DeltaRCsvError {
 
 /// What is wrong with a Δr table's text.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for `wheelrail conicity` (the problem a `DeltaRCsvError` names)
 pub enum CsvProblem {
     /// The first row is no header with the columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`.
     NoHeader(String),
@@ -149,7 +150,7 @@ impl std::error::Error for DeltaRCsvError {}
 /// increasing. Two consecutive points at the same `y` are a jump of Δr there (a contact-point
 /// jump): the first holds the value from the left, the second the value from the right.
 /// A NaN value marks a point where Δr is unknown; the function ends there. A value smaller
-/// than [`DELTA_R_RESOLUTION_MM`](super::DELTA_R_RESOLUTION_MM) (1e-9 mm) is 0: the rounding of two equal rolling radii
+/// than 1e-9 mm (the rigid search's Δr resolution) is 0: the rounding of two equal rolling radii
 /// is no slope (the constant's docs say why it cannot hide one).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DeltaR {
@@ -159,7 +160,8 @@ pub struct DeltaR {
 
 impl DeltaR {
     /// A Δr function from a table with strictly increasing `y`, all values finite, at least
-    /// 3 points and a change of sign (values below [`DELTA_R_RESOLUTION_MM`](super::DELTA_R_RESOLUTION_MM) are 0).
+    /// 3 points and a change of sign (values below the rigid search's Δr resolution,
+    /// 1e-9 mm, are 0).
     ///
     /// # Errors
     /// [`DeltaRError`] naming the offending point.
@@ -217,7 +219,7 @@ impl DeltaR {
     /// Parses a CSV table holding the columns `y_mm` (or `y_ws_mm`, as in `rigid.csv`) and
     /// `delta_r_mm`, found by their header names; `#` comments and blank lines are skipped,
     /// other columns ignored. Fields are separated by commas, semicolons or tabs, as the
-    /// header's are ([`crate::delimited::Separator`]); with semicolons or tabs a number may
+    /// header's are (the crate's `delimited` module); with semicolons or tabs a number may
     /// have a decimal comma.
     ///
     /// # Errors

@@ -59,14 +59,13 @@ mod delta_r;
 mod pair;
 mod well;
 
-pub use crate::rigid::DELTA_R_RESOLUTION_MM;
 pub use delta_r::{CsvProblem, DeltaR, DeltaRCsvError, DeltaRError};
 use well::Well;
 
 pub(crate) use pair::assess_by_method_on;
 pub use pair::{
-    ConicitySettings, ConicitySettingsError, PairConicity, ParameterRow, Parameters,
-    STANDARD_MAX_AMPLITUDE_MM, assess, assess_on, delta_r_of,
+    ConicitySettings, ConicitySettingsError, PairConicity, ParameterRow, Parameters, assess,
+    assess_on, delta_r_of,
 };
 
 /// The default amplitudes: 0.5 to 10 mm in steps of 0.1 mm (96 values), exact decimals.
@@ -442,7 +441,7 @@ mod tests {
     }
 
     /// The Δr of EN 15302 case E4 (a cylindrical band of the wheel R-UIC519I, Δr = 0 for
-    /// |y| < 1.7 mm) as the rigid sweep gave it before [`DELTA_R_RESOLUTION_MM`]: rounding
+    /// |y| < 1.7 mm) as the rigid sweep gave it before `DELTA_R_RESOLUTION_MM`: rounding
     /// noise of ±6e-13 mm at 1.4 to 1.7 mm. Taken as it is (the fields set directly), its
     /// noise makes a spurious equilibrium at 1.43 mm, and a level of the motion that
     /// touches a plateau of S gave NaN with the status ok at 1.4 mm (a piece of zero

@@ -19,7 +19,7 @@ pub(crate) const REPORT_SHIFT_MM: f64 = 3.0;
 /// The largest amplitude of EN 15302's reference results (mm): Annex F tabulates `tan γe`
 /// from 1.0 to 7.5 mm. [`assess_on`] makes the Δr function reach every amplitude up to it
 /// (or up to the largest the settings ask for).
-pub const STANDARD_MAX_AMPLITUDE_MM: f64 = 7.5;
+pub(crate) const STANDARD_MAX_AMPLITUDE_MM: f64 = 7.5;
 
 /// How many times [`assess_on`] widens a sweep that does not reach far enough: each
 /// widening reaches what the last Δr function showed missing, and a motion's turning point
@@ -30,7 +30,7 @@ const MAX_WIDENINGS: usize = 6;
 /// The farthest shift [`assess_on`] asks for (mm): twice the lateral clearance of a
 /// standard-gauge wheelset (about 7 mm per side before the flange), far beyond where any
 /// flange contact turns the kinematic motion.
-pub const WIDEST_SHIFT_MM: f64 = 20.0;
+pub(crate) const WIDEST_SHIFT_MM: f64 = 20.0;
 
 /// The amplitudes bounding Polach's nonlinearity parameter (mm).
 pub(crate) const NONLINEARITY_AMPLITUDES_MM: [f64; 2] = [2.0, 4.0];
@@ -192,7 +192,7 @@ pub struct Parameters {
     pub contact_point_jumps: usize,
     /// Number of sampling artefacts over the sweep (both wheels): hops of a sampled
     /// profile's contact point across hollows of the gap shallower than
-    /// [`rigid::ARTEFACT_HOLLOW_MM`].
+    /// `rigid::ARTEFACT_HOLLOW_MM`.
     pub sampling_artefacts: usize,
     /// Δr at y_ws = +3 mm (mm).
     pub delta_r_at_plus_3mm_mm: f64,
@@ -206,6 +206,7 @@ pub struct Parameters {
 
 /// One row of the parameter table.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's and the fleet's parameter tables and the Python binding
 pub struct ParameterRow {
     /// Machine name (`parameters.csv`, fleet columns).
     pub name: &'static str,
@@ -381,6 +382,7 @@ impl PairConicity {
 /// jump as a discontinuity in the middle of its refined interval (values from its ends).
 /// A sampling artefact ([`JumpKind::Artefact`]) is no discontinuity: Δr is linear between
 /// the sweep positions around it, as where the contact point moves continuously.
+#[doc(hidden)] // public for the conicity benchmarks
 pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     let mut points: Vec<(f64, f64)> = sweep
         .positions()
@@ -411,7 +413,7 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 }
 
 /// The equivalent conicity and parameters of the pair swept by `sweep`: its Δr function
-/// (jumps as steps, [`delta_r_of`]), tan γe by both methods at the settings' amplitudes
+/// (jumps as steps, `delta_r_of`), tan γe by both methods at the settings' amplitudes
 /// (mm), and the [`Parameters`] (tan γe at 2, 3 and 4 mm, nonlinearity, flange-contact
 /// shifts, jumps). Amplitudes the sweep cannot support give NaN with their status, not an
 /// error.
@@ -431,9 +433,9 @@ pub fn assess(sweep: &RigidSweep, settings: &ConicitySettings) -> PairConicity {
 
 /// [`assess`] with the Δr function reaching every amplitude the settings need: the rigid
 /// search on `placement` (the one `sweep` was solved on) is asked for the shifts beyond
-/// the sweep that the motions of those amplitudes reach ([`rigid::extend`], each end
+/// the sweep that the motions of those amplitudes reach (`rigid::extend`, each end
 /// continued outwards), so that an off-centre pair (wheels of different radii, EN 15302
-/// cases E5 to E8) gets every amplitude up to [`STANDARD_MAX_AMPLITUDE_MM`] (or the largest
+/// cases E5 to E8) gets every amplitude up to 7.5 mm (`STANDARD_MAX_AMPLITUDE_MM`, or the largest
 /// of `settings.amplitudes_mm`) without a wider sweep in the scene. Only the shifts the
 /// motions need are solved, as far as 20 mm (`WIDEST_SHIFT_MM`). The parameters that describe the
 /// sweep (flange contact, jumps) are `sweep`'s own; `tan γe` and Δr at ±3 mm come from the

@@ -23,7 +23,7 @@
 //!   changes fastest; 0.6 % for the others; test `interpolations_agree_where_the_table_is_dense`):
 //!   that is the interpolation's uncertainty there, next to the table's three digits.
 //!   The `ν`-parabola is taken on the two rows first, then the rows are joined in `g`.
-//! * Below `g = 0.1`, Kalker's asymptotes for `g → 0` ([`asymptote`]), multiplied by a factor
+//! * Below `g = 0.1`, Kalker's asymptotes for `g → 0` (`asymptote`), multiplied by a factor
 //!   that is the table's ratio to the asymptote at `g = 0.1` and goes linearly in `g` to 1 at
 //!   `g = 0`: continuous at the table's edge (the bare asymptotes jump by 1-6 % there), and
 //!   the asymptote itself as `g → 0`.
@@ -53,10 +53,10 @@ pub struct Coefficients {
 }
 
 /// The smallest `g = min(a/b, b/a)` of the table; below it the asymptotes apply.
-pub const TABLE_G_MIN: f64 = 0.1;
+pub(crate) const TABLE_G_MIN: f64 = 0.1;
 
 /// Poisson's ratios the table's columns hold; [`kalker`] interpolates between them only.
-pub const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
+pub(crate) const POISSON_RANGE: (f64, f64) = (0.0, 0.5);
 
 /// The committed table (see the module docs).
 const TABLE_CSV: &str = include_str!("kalker_table_e3.csv");
@@ -166,6 +166,7 @@ fn parse(text: &str) -> Result<Table, String> {
 /// assert!((c.c11 - 4.12).abs() < 1e-12 && (c.c22 - 3.67).abs() < 1e-12);
 /// assert!((c.c23 - 1.47).abs() < 1e-12);
 /// ```
+#[doc(hidden)] // public for the reference tests against Kalker's Table E.3 and the creep benchmarks
 pub fn kalker(a_over_b: f64, poisson: f64) -> Coefficients {
     debug_assert!(a_over_b > 0.0 && a_over_b.is_finite(), "a/b = {a_over_b}");
     let (branch, g) = if a_over_b <= 1.0 {
@@ -195,17 +196,10 @@ pub fn kalker(a_over_b: f64, poisson: f64) -> Coefficients {
 ///   `C22 = 2π/g · (1 + (1-ν)(3 - ln 4)/((1-ν)Λ + 2ν)) / ((1-ν)Λ + 2ν)`,
 ///   `C23 = 2π/(3 g^{3/2} ((1-ν)Λ - 2 + 4ν))`.
 ///
-/// [`kalker`] uses them below `g = 0.1`; here for tests and comparison.
-///
-/// # Example
-///
-/// ```
-/// use wheelrail::creep::coefficients::asymptote;
-/// // Narrow in the rolling direction, ν = 0: C11 = C22 = π²/4.
-/// let c = asymptote(1e-3, 0.0);
-/// assert!((c.c11 - std::f64::consts::PI.powi(2) / 4.0).abs() < 1e-12);
-/// ```
-pub fn asymptote(a_over_b: f64, poisson: f64) -> Coefficients {
+/// [`kalker`] uses them below `g = 0.1`; here for the tests (which check the closed forms of
+/// the limits `a ≪ b`).
+#[cfg(test)]
+fn asymptote(a_over_b: f64, poisson: f64) -> Coefficients {
     let (branch, g) = if a_over_b <= 1.0 {
         (0, a_over_b)
     } else {

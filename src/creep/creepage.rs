@@ -177,6 +177,7 @@ pub struct Creepages {
 /// assert!((c.phi_per_mm - 2.0 * 0.05_f64.sin() / 921.0).abs() < 1e-15);
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
+#[doc(hidden)] // public for the creepage tests and the creep benchmarks
 pub fn creepages(motion: &Motion, point: &ContactPoint) -> Result<Creepages, CreepError> {
     for (quantity, value) in [
         ("speed", motion.speed_mm_s),
@@ -232,23 +233,6 @@ pub fn creepages(motion: &Motion, point: &ContactPoint) -> Result<Creepages, Cre
         eta: -v.dot(&t_y) / rolling,
         phi_per_mm: -omega.dot(&n) / rolling,
     })
-}
-
-/// The pitch rate of a free-rolling wheelset, `V / r_mean` with `r_mean` the mean of the two
-/// wheels' rolling radii (rad/s).
-///
-/// # Units
-///
-/// mm/s and mm in, rad/s out.
-///
-/// # Example
-///
-/// ```
-/// use wheelrail::creep::creepage::free_rolling_pitch_rate;
-/// assert!((free_rolling_pitch_rate(2000.0, 455.0, 465.0) - 2000.0 / 460.0).abs() < 1e-15);
-/// ```
-pub fn free_rolling_pitch_rate(speed_mm_s: f64, left_radius_mm: f64, right_radius_mm: f64) -> f64 {
-    speed_mm_s / (0.5 * (left_radius_mm + right_radius_mm))
 }
 
 #[cfg(test)]

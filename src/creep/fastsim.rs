@@ -64,7 +64,7 @@
 //! The strips are independent: they are marched four at a time in SIMD lanes, all groups a
 //! cell at a time, so a strip count that is a multiple of 4 costs nothing extra.
 //!
-//! The default grid ([`super::DEFAULT_GRID`], 32 × 32) comes from [`study`]: against a
+//! The default grid (`super::DEFAULT_GRID`, 32 × 32) comes from `study`: against a
 //! converged FASTSIM (1000 × 1000) over patches of `a/b` = 1.5 and 0.375 and creepages of
 //! 0.3, 1 and 3 times saturation in ξ, η, φ and all three at once, it errs by at most
 //! 0.07 % of `μ FN` in force and 0.04 % of `μ FN c` in spin moment, at about 6 µs per patch
@@ -112,6 +112,7 @@ const BLEND_WINDOW: (f64, f64) = (0.1, 3.0);
 /// assert!((l1 / (64.0 / (3.0 * 82_000.0 * 5.2036)) - 1.0).abs() < 1e-4);
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
+#[doc(hidden)] // public for the test of CONTACT's blend
 pub fn flexibilities(
     patch: &EllipticPatch,
     creepages: &Creepages,
@@ -444,6 +445,7 @@ const LANES: usize = 4;
 /// One row of the discretisation study: a grid's largest error over the study's cases
 /// against a converged FASTSIM.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for `wheelrail tradeoff`, the grid study's tests and benchmarks
 pub struct StudyRow {
     /// The grid.
     pub grid: Grid,
@@ -453,9 +455,10 @@ pub struct StudyRow {
     pub moment_error: f64,
 }
 
-/// The cases of [`study`]: two patches (`a/b = 1.5` and `0.375`, 50 kN), each with creepages
+/// The cases of `study`: two patches (`a/b = 1.5` and `0.375`, 50 kN), each with creepages
 /// of 0.3, 1 and 3 times the creepage that saturates linear theory, in ξ alone, η alone, φ
 /// alone and all three at once (with signs mixed).
+#[doc(hidden)] // public for the grid study's tests
 pub fn study_cases() -> Vec<(EllipticPatch, Creepages)> {
     let settings = Settings::default();
     let mut cases = Vec::new();
@@ -546,6 +549,7 @@ const fn square(n: u32) -> Grid {
 /// let rows = study(&[g(5), g(20)], g(200));
 /// assert!(rows[1].force_error < rows[0].force_error);
 /// ```
+#[doc(hidden)] // public for `wheelrail tradeoff`, the grid study's tests and benchmarks
 pub fn study(grids: &[Grid], reference: Grid) -> Vec<StudyRow> {
     let cases = study_cases();
     let solve_on = |grid: Grid| -> Vec<Tangential> {

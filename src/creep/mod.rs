@@ -3,7 +3,7 @@
 //! Stage entry: [`forces`], one patch at a time: the creepages from the motion
 //! ([`creepage`]), the normal force from the patch's share of the wheel's vertical load
 //! ([`normal`]), the Hertz ellipse for that normal force ([`crate::hertz::ellipse`]), and the
-//! tangential forces by one of three models behind one interface ([`tangential::solve`]):
+//! tangential forces by one of three models behind one interface (`tangential::solve`):
 //!
 //! * [`Method::Linear`]: Kalker's linear theory (Kalker 1990, Appendix E; Johnson 1985,
 //!   §8.4), the limit of small creepage, with Kalker's coefficients ([`coefficients`]);
@@ -55,6 +55,9 @@ pub mod fastsim;
 pub mod linear;
 pub mod normal;
 pub mod polach;
+#[doc(hidden)]
+// public for the pipeline's creep stage (`creep.csv`), its tests, the chart tests and the
+// benchmarks
 pub mod sweep;
 pub mod tangential;
 
@@ -116,7 +119,7 @@ impl fmt::Display for Bound {
 pub enum Flexibility {
     /// CONTACT's blend: the three flexibilities at small creepage, shifting to one
     /// combined flexibility as the creepage grows to 3 times the creepage that saturates
-    /// linear theory ([`fastsim::flexibilities`]).
+    /// linear theory (`fastsim::flexibilities`).
     #[default]
     Blended,
     /// Kalker's three flexibilities, unchanged at any creepage.
@@ -147,6 +150,7 @@ pub struct Grid {
 
 /// The default FASTSIM grid, chosen by run time against error (`fastsim::study`, record in
 /// `docs/`): see [`fastsim`].
+#[doc(hidden)] // public for the FASTSIM reference tests
 pub const DEFAULT_GRID: Grid = Grid {
     strips: 32,
     elements: 32,
@@ -154,27 +158,27 @@ pub const DEFAULT_GRID: Grid = Grid {
 
 /// The number of strips and elements a grid may have: at least 1, at most 4000 (16 million
 /// cells, a tenth of a second; the study's converged reference uses 1000 × 1000).
-pub const GRID_RANGE: (u32, u32) = (1, 4000);
+pub(crate) const GRID_RANGE: (u32, u32) = (1, 4000);
 
 /// Coefficients of friction accepted: above 0 (no friction transmits nothing, which needs
 /// no model) up to 1 (dry steel on steel is 0.3 to 0.6; more is no wheel-rail contact).
-pub const FRICTION_RANGE: (f64, f64) = (0.0, 1.0);
+pub(crate) const FRICTION_RANGE: (f64, f64) = (0.0, 1.0);
 
 /// Default coefficient of friction: dry rail, CONTACT's examples and the Manchester benchmark.
-pub const DEFAULT_FRICTION: f64 = 0.3;
+pub(crate) const DEFAULT_FRICTION: f64 = 0.3;
 /// Default shear modulus, MPa: CONTACT's steel (82 GPa).
-pub const DEFAULT_SHEAR_MODULUS_MPA: f64 = 82_000.0;
+pub(crate) const DEFAULT_SHEAR_MODULUS_MPA: f64 = 82_000.0;
 /// Default Poisson's ratio: CONTACT's steel.
-pub const DEFAULT_POISSON: f64 = 0.28;
+pub(crate) const DEFAULT_POISSON: f64 = 0.28;
 /// Default relative tolerance of the normal-force solve on the vertical load: `|FN cos δ -
 /// Fy sin δ - FZ| ≤ 1e-10 FZ` (0.1 mN on a 100 kN wheel), far below what the models resolve.
-pub const DEFAULT_NORMAL_TOLERANCE: f64 = 1e-10;
+pub(crate) const DEFAULT_NORMAL_TOLERANCE: f64 = 1e-10;
 /// Default cap on the evaluations of the tangential model in the normal-force solve; the
 /// solve takes 3 to 6 with FASTSIM or Polach, up to 11 with linear theory (see [`normal`]).
-pub const DEFAULT_NORMAL_MAX_ITERATIONS: u32 = 60;
+pub(crate) const DEFAULT_NORMAL_MAX_ITERATIONS: u32 = 60;
 
 /// The settings of the creep stage, checked by their constructors (the default is FASTSIM,
-/// parabolic bound, blended flexibilities, [`DEFAULT_GRID`], μ = 0.3, steel with
+/// parabolic bound, blended flexibilities, a grid of 32 × 32, μ = 0.3, steel with
 /// G = 82 GPa and ν = 0.28).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Settings {
@@ -217,9 +221,9 @@ impl Settings {
     ///
     /// # Errors
     ///
-    /// [`CreepError::Friction`] outside [`FRICTION_RANGE`] (0 excluded),
+    /// [`CreepError::Friction`] outside (0, 1] (`FRICTION_RANGE`),
     /// [`CreepError::ShearModulus`] unless positive and finite, [`CreepError::Poisson`]
-    /// outside [`POISSON_RANGE`] (the columns of Kalker's table).
+    /// outside [0, 0.5] (`POISSON_RANGE`: the columns of Kalker's table).
     ///
     /// # Example
     ///
@@ -281,7 +285,7 @@ impl Settings {
     ///
     /// # Errors
     ///
-    /// [`CreepError::Grid`] unless both counts lie in [`GRID_RANGE`].
+    /// [`CreepError::Grid`] unless both counts lie in 1 to 4000 (`GRID_RANGE`).
     pub fn with_grid(self, grid: Grid) -> Result<Settings, CreepError> {
         let ok = |n: u32| (GRID_RANGE.0..=GRID_RANGE.1).contains(&n);
         if !(ok(grid.strips) && ok(grid.elements)) {
@@ -467,7 +471,7 @@ pub struct PatchForces {
 ///
 /// # Errors
 ///
-/// The [`CreepError`] of [`creepage::creepages`] for the motion and point, and
+/// The [`CreepError`] of `creepage::creepages` for the motion and point, and
 /// [`CreepError::VerticalLoad`] unless the load is positive and finite,
 /// [`CreepError::SemiAxes`] or [`CreepError::NormalForce`] for a bad [`Shape::SemiAxes`],
 /// [`CreepError::NonFinite`] for non-finite curvatures. A shape that is not Hertzian, and a
@@ -654,7 +658,7 @@ pub enum CreepError {
         /// rad.
         contact_angle_rad: f64,
     },
-    /// A coefficient of friction outside [`FRICTION_RANGE`].
+    /// A coefficient of friction outside (0, 1] (`FRICTION_RANGE`).
     Friction {
         /// μ.
         friction: f64,
@@ -664,12 +668,12 @@ pub enum CreepError {
         /// MPa.
         shear_modulus_mpa: f64,
     },
-    /// A Poisson's ratio outside [`POISSON_RANGE`].
+    /// A Poisson's ratio outside [0, 0.5] (`POISSON_RANGE`).
     Poisson {
         /// ν.
         poisson: f64,
     },
-    /// A FASTSIM grid outside [`GRID_RANGE`].
+    /// A FASTSIM grid outside 1 to 4000 strips or elements (`GRID_RANGE`).
     Grid {
         /// The grid asked for.
         grid: Grid,

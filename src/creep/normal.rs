@@ -31,7 +31,7 @@
 //!
 //! No root exists when the friction pulls the wheel down harder than the normal force can
 //! hold it up (`μ tan|δ| ≥ 1` with the tangential force saturated against the load: Nadal's
-//! limit of flange climbing): [`Outcome::NoEquilibrium`].
+//! limit of flange climbing): `Outcome::NoEquilibrium`.
 
 use super::CreepError;
 use crate::hertz::NotHertzianReason;
@@ -39,6 +39,7 @@ use std::ops::ControlFlow;
 
 /// How the solve ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for the normal-force tests and benchmarks (what `solve` returns)
 pub enum Outcome {
     /// `|r| ≤ tol · FZ`.
     Converged {
@@ -80,6 +81,7 @@ pub enum Outcome {
 /// assert!((normal_force_n - 10_000.0 / (delta.cos() + 0.1 * delta.sin())).abs() < 1e-6);
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
+#[doc(hidden)] // public for the normal-force tests and the creep and Hertz benchmarks
 pub fn solve(
     vertical_load_n: f64,
     contact_angle_rad: f64,

@@ -176,6 +176,7 @@ pub enum FleetError {
 
 /// What is wrong with a pairs file.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for `wheelrail fleet` (the problem a pairs-file error names)
 pub enum PairsProblem {
     /// Not CSV (the parser's message).
     Csv(String),
@@ -253,24 +254,14 @@ impl std::error::Error for FleetError {}
 /// Reads a pairs file: CSV with the columns `id,left_wheel,right_wheel` and optionally
 /// `left_rail,right_rail` (both or neither), `#` comment lines allowed; paths relative to
 /// `dir` (the file's folder). Fields are separated by commas, semicolons or tabs, as the
-/// header's are ([`crate::delimited::Separator::of_text`]). A row with both rail cells empty keeps the template's rails.
-/// `origin` names the file in messages.
+/// header's are (the crate's `delimited` module). A row with both rail cells empty keeps
+/// the template's rails. `origin` names the file in messages.
 ///
 /// # Errors
 /// [`FleetError::Pairs`] naming `origin` and the line: malformed CSV, a missing or unknown
 /// column, an empty cell, an id that is repeated or not a folder name, one rail cell of
 /// two, no rows.
-///
-/// ```
-/// use std::path::Path;
-/// use wheelrail::fleet::{parse_pairs, Inputs};
-/// let (items, inputs) = parse_pairs("id,left_wheel,right_wheel\nws1,a.whl,b.whl\n", "pairs.csv", Path::new("m")).unwrap();
-/// assert_eq!(inputs, Inputs::Pairs { rails: false });
-/// assert_eq!(items[0].wheels.as_ref().unwrap()[1], Path::new("m/b.whl"));
-/// let e = parse_pairs("id,left_wheel,right_wheel\nws1,a.whl,b.whl\nws1,c.whl,d.whl\n", "pairs.csv", Path::new(".")).unwrap_err();
-/// assert!(e.to_string().contains("pairs.csv:3") && e.to_string().contains("ws1"), "{e}");
-/// ```
-pub fn parse_pairs(
+pub(crate) fn parse_pairs(
     text: &str,
     origin: &str,
     dir: &Path,
@@ -349,6 +340,7 @@ pub fn parse_pairs(
 
 /// One part of a fleet split across machines: the `k`-th (from 1) of `n` parts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[doc(hidden)] // public for `wheelrail fleet --shard` (the CLI; the library without it makes none)
 pub struct Shard {
     /// Which part, 1 to `n`.
     pub k: usize,
@@ -430,6 +422,15 @@ mod tests {
             let e = parse_pairs(text, "p.csv", Path::new(".")).unwrap_err();
             assert!(e.to_string().contains(expected), "{text:?}: {e}");
         }
+        // A repeated id names the line that repeats it and the id.
+        let e = parse_pairs(
+            "id,left_wheel,right_wheel\nws1,a.whl,b.whl\nws1,c.whl,d.whl\n",
+            "p.csv",
+            Path::new("."),
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("p.csv:3") && e.contains("ws1"), "{e}");
         let (items, inputs) = parse_pairs(
             "\u{feff}# measured 2026-11-23\nid,left_wheel,right_wheel,left_rail,right_rail\nws1,a.whl,b.whl,,\nws2,a.whl,b.whl,r.ban,s.ban\n",
             "p.csv",
@@ -438,6 +439,10 @@ mod tests {
         .unwrap();
         assert_eq!(inputs, Inputs::Pairs { rails: true });
         assert_eq!(items[0].rails, None);
+        assert_eq!(
+            items[0].wheels,
+            Some([PathBuf::from("d/a.whl"), PathBuf::from("d/b.whl")])
+        );
         assert_eq!(
             items[1].rails,
             Some([PathBuf::from("d/r.ban"), PathBuf::from("d/s.ban")])

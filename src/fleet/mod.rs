@@ -6,12 +6,12 @@
 //! side frame; or two wheels measured separately; or a rail profile for a grinding
 //! assessment). [`Fleet::new`] places the template's fixed profiles once and shares them;
 //! [`Fleet::assess`] reads, fits and places an item's files with the same functions as a
-//! report run ([`pipeline::place_wheels`], [`pipeline::place_rails`], `pipeline::assemble`)
+//! report run (`pipeline::place_wheels`, `pipeline::place_rails`, `pipeline::assemble`)
 //! and runs the stages the summary needs with [`pipeline::run_on`], so its numbers agree to
 //! the last digit with `wheelrail report` on the template with those files.
 //!
-//! [`in_order`] runs items in parallel (rayon) and hands their rows to the caller in input
-//! order as they complete, whatever the number of threads. [`synthetic`] generates worn
+//! `in_order` runs items in parallel (rayon) and hands their rows to the caller in input
+//! order as they complete, whatever the number of threads. `synthetic` generates worn
 //! S1002 profiles for tests, benchmarks and the example fleet.
 //!
 //! Nothing here touches the file system except the profile readers; a failure of one item
@@ -19,9 +19,12 @@
 //! error of the fleet.
 
 mod inputs;
+#[doc(hidden)]
+// public for the fleet tests and benchmark and `examples/worn_wheels.rs` (synthetic worn wheels)
 pub mod synthetic;
 
-pub use inputs::{FleetError, Inputs, Item, PairsProblem, Shard, items_of_files, parse_pairs};
+pub(crate) use inputs::parse_pairs;
+pub use inputs::{FleetError, Inputs, Item, PairsProblem, Shard, items_of_files};
 
 use crate::cache::PlacementCache;
 use crate::conicity::Parameters;
@@ -36,6 +39,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The largest Hertz pressure of one pair over its sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for the fleet's table, its tests and the Python binding
 pub struct MaxPressure {
     /// The largest maximum pressure p0 over the sweep and both wheels (MPa).
     pub p0_mpa: f64,
@@ -116,6 +120,7 @@ pub(crate) fn summarise(
 /// One input file of a row: its role, path and the SHA-256 of its bytes (`None` when it
 /// could not be read).
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the fleet's table (a row's files and their hashes)
 pub struct InputFile {
     /// `wheel`, `rail`, `left_wheel`, ... (see [`Inputs::roles`]).
     pub role: &'static str,
@@ -337,7 +342,7 @@ impl Fleet {
     }
 
     /// The row of `item` when its assessment gave no row (a bug that panicked, caught by
-    /// [`in_order`]): its files by path, without hashes, and `message` as its outcome.
+    /// `in_order`): its files by path, without hashes, and `message` as its outcome.
     pub fn failed_row(&self, item: &Item, error: RowError) -> Row {
         Row {
             id: item.id.clone(),
@@ -356,7 +361,7 @@ impl Fleet {
         }
     }
 
-    /// Assesses `items` in parallel ([`in_order`] with `assess`, here [`Fleet::assess`] or a
+    /// Assesses `items` in parallel (`in_order` with `assess`, here [`Fleet::assess`] or a
     /// caller's variant of it) and hands each row to `sink` in input order; an item whose
     /// assessment panics (a bug) gets [`Fleet::failed_row`] saying so, and the others run.
     pub fn assess_in_order(
@@ -383,7 +388,7 @@ impl Fleet {
     }
 }
 
-/// The items of a pairs file (see [`parse_pairs`]: paths in it are relative to its folder)
+/// The items of a pairs file (see `parse_pairs`: paths in it are relative to its folder)
 /// and what they replace.
 ///
 /// # Errors

@@ -25,7 +25,7 @@
 //! is never dropped) and lets a script loop over cases without treating geometry as failure.
 //! Input outside what a wheel and a rail can be is an error naming the flag, the range and
 //! the likely unit mistake: the ranges are those of the scene's keys
-//! ([`crate::plausible`]: loads 1 N to 1 MN, `E` 1 to 1000 GPa, `0 <= poisson < 0.5`), and
+//! (`crate::plausible`: loads 1 N to 1 MN, `E` 1 to 1000 GPa, `0 <= poisson < 0.5`), and
 //! radii of at least 1 mm and curvatures of at most 1/mm in magnitude (a smaller radius or a
 //! larger curvature reads as metres).
 
@@ -150,7 +150,7 @@ fn checked(flag: &'static str, range: &'static Range, value: f64) -> Result<f64,
 ///
 /// # Errors
 ///
-/// [`RunError::Implausible`] for an argument outside its range in [`crate::plausible`]
+/// [`RunError::Implausible`] for an argument outside its range in `crate::plausible`
 /// (a radius left out by a library caller is NaN, and refused so), [`RunError::Hertz`] when
 /// the solution overflows. A non-Hertzian geometry is **not** an error (see the module
 /// docs).

@@ -45,7 +45,7 @@
 //! ```
 //!
 //! (`err` = paper / exact - 1; `a` is the major semi-axis here.) The errors come mostly from
-//! the `K` series near `e = 1` (-17 % at `e = 0.9999`, see [`accuracy::series_error`]): for
+//! the `K` series near `e = 1` (-17 % at `e = 0.9999`, see `accuracy::series_error`): for
 //! elongated contacts the fixed point jumps from `e = 0.5` to within 10⁻³ of its limit in two
 //! updates, so the loose `|Δe|` stop is not the limiting factor there. Near the circle the
 //! truncated series make the update leave `0 < e < 1` and the result is flagged

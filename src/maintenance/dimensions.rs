@@ -13,10 +13,10 @@
 //! * **Sh, flange height**: the height of the flange tip (the highest point of the flange)
 //!   above the profile's point on the taping line, `F(tip) - F(0)`;
 //! * **Sd, flange thickness**: the lateral distance from the inner face to the flange's
-//!   running flank, measured at the height [`SD_HEIGHT_MM`] (10 mm) above the taping-line
+//!   running flank, measured at the height `SD_HEIGHT_MM` (10 mm) above the taping-line
 //!   point: `s_Sd + 70` where `F(s_Sd) = F(0) + 10` on the flank;
 //! * **qR, flange slope dimension**: the lateral distance from the Sd point to the point of
-//!   the same flank [`QR_BELOW_TIP_MM`] (2 mm) below the flange tip. A steep, sharp flange
+//!   the same flank `QR_BELOW_TIP_MM` (2 mm) below the flange tip. A steep, sharp flange
 //!   (small qR) can climb the tip of a switch blade.
 //!
 //! Both heights are taken relative to the profile's own taping-line point `F(0)`: a measured
@@ -33,9 +33,9 @@
 //! # Numerics
 //!
 //! The tip is the largest sample of the flange side (`s` from the domain's start to the
-//! taping line) every [`SCAN_STEP_MM`], refined by bisection on the slope's sign change
+//! taping line) every 0.05 mm (`SCAN_STEP_MM`), refined by bisection on the slope's sign change
 //! around it; each flank point is the first sample below its height walking from the tip
-//! towards the field side, refined by bisection to [`BISECTION_TOLERANCE_MM`]. A sampled
+//! towards the field side, refined by bisection to 1e-9 mm (`BISECTION_TOLERANCE_MM`). A sampled
 //! (spline) profile is measured as the run fits it, with the scene's smoothing filter.
 
 use crate::profile::{Profile, ProfileKind};
@@ -43,14 +43,14 @@ use crate::track::TAPING_LINE_FROM_INNER_FACE_MM;
 use std::fmt;
 
 /// Height above the taping-line point at which the flange thickness Sd is measured (mm).
-pub const SD_HEIGHT_MM: f64 = 10.0;
+pub(crate) const SD_HEIGHT_MM: f64 = 10.0;
 /// Depth below the flange tip of the second point of the qR dimension (mm).
-pub const QR_BELOW_TIP_MM: f64 = 2.0;
+pub(crate) const QR_BELOW_TIP_MM: f64 = 2.0;
 /// Sampling step of the searches for the tip and the flank points (mm): finer than any
 /// feature of a flange (the S1002 tip radius is 12 mm), 1400 samples over a 70 mm flange.
-pub const SCAN_STEP_MM: f64 = 0.05;
+pub(crate) const SCAN_STEP_MM: f64 = 0.05;
 /// Where the bisections stop (mm): far below any measurement's resolution (about 1e-3 mm).
-pub const BISECTION_TOLERANCE_MM: f64 = 1e-9;
+pub(crate) const BISECTION_TOLERANCE_MM: f64 = 1e-9;
 
 /// The flange dimensions of a wheel profile, with the points they were measured at.
 ///
@@ -89,7 +89,7 @@ pub enum DimensionError {
         /// The profile's lateral extent `(s_min, s_max)` (mm).
         domain: (f64, f64),
     },
-    /// The flange tip is not [`SD_HEIGHT_MM`] above the taping-line point: no Sd point.
+    /// The flange tip is not 10 mm (`SD_HEIGHT_MM`) above the taping-line point: no Sd point.
     FlangeTooLow {
         /// The height of the highest point of the flange side above `F(0)` (mm).
         sh_mm: f64,

@@ -7,8 +7,9 @@
 //!   wheel diameter, with a scene's overrides, and the limits a wheel breaks ([`limits`]);
 //! * [`rail_wear`]: the vertical wear on the centre line and the gauge-face wear at the
 //!   gauge-point depth of a rail against its nominal profile ([`wear`]);
-//! * [`assess`]: all of it for the four profiles of a placement, which a run computes with
-//!   its profiles (`pipeline::Results::maintenance`) and a fleet summarises per row.
+//! * all of it for the four profiles of a placement, which a run computes with its profiles
+//!   for the report's table ([`pipeline::Results`](crate::pipeline::Results)'s
+//!   `maintenance`) and a fleet summarises per row.
 //!
 //! A broken limit is a result, not an error: it is reported, and a run or a fleet exits as
 //! it would without it.
@@ -26,6 +27,7 @@ use crate::track::{Inclination, Placement};
 
 /// One wheel's flange dimensions, its limits and the limits it breaks.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's and the fleet's maintenance tables
 pub struct WheelAssessment {
     /// Sh, Sd, qR, or why they cannot be measured.
     pub dimensions: Result<FlangeDimensions, DimensionError>,
@@ -55,7 +57,7 @@ impl WheelAssessment {
 /// The nominal rails a placement's rails are measured against, with the inclination in
 /// their data (the scene's `rail.profile_inclination`, shared by every rail of a scene).
 #[derive(Debug, Clone)]
-pub struct NominalRails {
+pub(crate) struct NominalRails {
     /// Left and right nominal rail profiles.
     pub profiles: [Profile; 2],
     /// The inclination in the data of the nominal and the measured rails.
@@ -64,6 +66,7 @@ pub struct NominalRails {
 
 /// The maintenance view of a placement's profiles.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's and the fleet's maintenance tables
 pub struct Assessment {
     /// Left and right wheels.
     pub wheels: [WheelAssessment; 2],
@@ -75,7 +78,7 @@ pub struct Assessment {
 /// The flange dimensions of `placement`'s wheels against the standard's limits for their
 /// nominal diameters with `overrides`, and the wear of its rails against `nominal` (when
 /// given) at the track's gauge-point depth.
-pub fn assess(
+pub(crate) fn assess(
     placement: &Placement,
     overrides: &LimitOverrides,
     nominal: Option<&NominalRails>,

@@ -24,8 +24,8 @@
 //!
 //! # Numerics
 //!
-//! Each crossing is bracketed by samples of the profile every [`SCAN_STEP_MM`] and refined
-//! by bisection on its profile coordinate to [`BISECTION_TOLERANCE_MM`]; the upright point
+//! Each crossing is bracketed by samples of the profile every 0.05 mm (`SCAN_STEP_MM`) and refined
+//! by bisection on its profile coordinate to 1e-9 mm (`BISECTION_TOLERANCE_MM`); the upright point
 //! of a profile coordinate is the exact rotation of the profile's point.
 
 use crate::profile::{Profile, ProfileKind};
@@ -33,10 +33,10 @@ use crate::track::Inclination;
 use nalgebra::{Point2, UnitComplex};
 use std::fmt;
 
-pub use super::dimensions::BISECTION_TOLERANCE_MM;
+pub(crate) use super::dimensions::BISECTION_TOLERANCE_MM;
 
 /// Sampling step of the searches along a rail profile (mm).
-pub const SCAN_STEP_MM: f64 = 0.05;
+pub(crate) const SCAN_STEP_MM: f64 = 0.05;
 
 /// The wear of a measured rail against its nominal profile.
 ///

@@ -47,6 +47,7 @@ impl std::fmt::Display for ProfileKind {
 
 /// Where a profile comes from, for the report's provenance table.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the report's provenance table (what `Profile::source` returns)
 pub enum Source {
     /// A definition built into wheelrail, described in words.
     Definition(&'static str),
@@ -125,7 +126,7 @@ impl Profile {
 
     /// A profile through sampled points: a cubic spline that filters out waves shorter than
     /// about `smoothing_wavelength_mm` (0 interpolates the points; see
-    /// [`spline::lambda_for_wavelength`]).
+    /// `spline::lambda_for_wavelength`).
     ///
     /// # Errors
     /// [`spline::SplineError`] when the spline cannot be fitted to the points.
@@ -341,6 +342,7 @@ pub(crate) struct Cursor {
 /// towards the other body (`-v'' / (1 + v'^2)^(3/2)`; both side frames have `v''` < 0 on a
 /// convex bump).
 #[inline]
+#[doc(hidden)] // public for the profile and regression tests
 pub fn convex_curvature(d1: f64, d2: f64) -> f64 {
     -d2 / (1.0 + d1 * d1).powf(1.5)
 }

@@ -16,7 +16,7 @@
 //!   ([`Quadrature::GaussLegendre`], `DEFAULT_PANEL_WIDTHS` weight widths
 //!   `sqrt(eps / d'')` long) on the pieces where the integrand is smooth: they end at the
 //!   section joints of wheel and rail, where curvatures jump. The trapezoid rule on a fixed
-//!   grid is kept as a variant ([`Quadrature::Trapezoid`], [`average`]); it is only first
+//!   grid is kept as a variant ([`Quadrature::Trapezoid`], `average`); it is only first
 //!   order across a joint.
 //! * The integrals are cut where `d - d_min > cutoff * eps` (`DEFAULT_CUTOFF` = 25: the
 //!   weight left out is below 2e-12 of the total for a quadratic gap).
@@ -452,7 +452,7 @@ fn average_regions(mut pass: Pass, work: &mut Work) -> Vec<Average<FIELDS>> {
 }
 
 /// The trapezoid variant on one region `(lo, hi)`: nodes on a fixed grid, averaged by
-/// [`average`].
+/// `average`.
 fn trapezoid_region(
     pass: &Pass,
     max_step_mm: f64,
@@ -608,9 +608,10 @@ fn barrier_scan(gaps: &[f64], barrier: f64) -> Vec<usize> {
     out
 }
 
-/// One patch of [`average`]: the weight-averaged fields, the integral of the weight, and
+/// One patch of `average`: the weight-averaged fields, the integral of the weight, and
 /// the smallest gap in the patch.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for the reference tests of the quadrature
 pub struct Average<const N: usize> {
     /// Weighted means of the fields.
     pub mean: [f64; N],
@@ -646,6 +647,7 @@ impl<const N: usize> Average<N> {
 /// assert_eq!(a.len(), 1);
 /// assert!(a[0].mean[0].abs() < 1e-15);
 /// ```
+#[doc(hidden)] // public for the reference tests of the quadrature and the pipeline benchmark
 pub fn average<const N: usize>(
     nodes: &[f64],
     gaps: &[f64],

@@ -131,7 +131,7 @@ pub struct SideContact {
     /// relative to the wheelset centre: 0 without yaw.
     pub x: f64,
     /// Distance of the contact point ahead of the axle along the wheelset's own forward
-    /// axis (mm): 0 without yaw ([`crate::gap::Yaw::lead`]).
+    /// axis (mm): 0 without yaw (`crate::gap::Yaw::lead`).
     pub lead: f64,
     /// A second contact point: another local minimum of the gap within
     /// `TWO_POINT_GAP_TOL_MM`; `(s, gap)` in mm.
@@ -213,7 +213,7 @@ impl RigidPosition {
     }
 
     /// Rolling radius difference `r_left - r_right` (mm); NaN unless both wheels touch and
-    /// the iteration converged; 0 where it is smaller than [`DELTA_R_RESOLUTION_MM`].
+    /// the iteration converged; 0 where it is smaller than 1e-9 mm (`DELTA_R_RESOLUTION_MM`).
     pub fn delta_r(&self) -> f64 {
         match self.contact {
             [Some(l), Some(r)] if self.stop == Stop::Converged => resolved_delta_r(l.r - r.r),
@@ -233,10 +233,10 @@ impl RigidPosition {
 /// conicity of 5e-8, five orders of magnitude below the 1e-3 to which `tan γe` is quoted
 /// and judged (EN 15302 Annex F), and a real cone's Δr exceeds it at every sweep position
 /// off the centre.
-pub const DELTA_R_RESOLUTION_MM: f64 = 1e-9;
+pub(crate) const DELTA_R_RESOLUTION_MM: f64 = 1e-9;
 
 /// `delta_r` (mm), or 0 where it is smaller than [`DELTA_R_RESOLUTION_MM`] (NaN stays NaN).
-pub fn resolved_delta_r(delta_r: f64) -> f64 {
+pub(crate) fn resolved_delta_r(delta_r: f64) -> f64 {
     if delta_r.abs() < DELTA_R_RESOLUTION_MM {
         0.0
     } else {
@@ -245,15 +245,15 @@ pub fn resolved_delta_r(delta_r: f64) -> f64 {
 }
 
 /// What a contact-point jump is: a jump between two contacts the profiles separate, or a
-/// sampling artefact ([`ARTEFACT_HOLLOW_MM`]).
+/// sampling artefact (`ARTEFACT_HOLLOW_MM`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum JumpKind {
     /// The contact point jumps between two contacts separated by a hollow of the gap at
-    /// least [`ARTEFACT_HOLLOW_MM`] deep (a tread-to-flange jump, a two-point contact):
+    /// least `ARTEFACT_HOLLOW_MM` deep (a tread-to-flange jump, a two-point contact):
     /// located to 1e-4 mm, a step of Δr, a break in the charts.
     Jump,
     /// A sampling artefact: the contact point hops between two minima of the gap of a
-    /// sampled profile that a hollow shallower than [`ARTEFACT_HOLLOW_MM`] separates. Not
+    /// sampled profile that a hollow shallower than `ARTEFACT_HOLLOW_MM` separates. Not
     /// refined (its interval is the sweep's step that holds it), continuous in Δr and in the
     /// charts, counted apart.
     Artefact,
@@ -284,6 +284,7 @@ impl JumpKind {
 /// two-point contact of the committed scenes (5 µm and more) and the tread jump of S1002 on
 /// UIC60 1:40 (3.9 µm, analytic; 4.3 µm in the Manchester benchmark's sampled files).
 /// Built-in (analytic) profiles have no sampling: their jumps are always jumps.
+#[doc(hidden)] // public for the jump tests
 pub const ARTEFACT_HOLLOW_MM: f64 = 2e-3;
 
 /// An interval of `y_ws` across which the contact point of one wheel jumps.
@@ -555,25 +556,15 @@ pub fn search(placement: &Placement, sweep: &Sweep, solver: Solver) -> RigidSwee
 }
 
 /// `sweep` (solved by [`search`] on `placement`) continued beyond its ends to reach
-/// `from_mm` and `to_mm`: new positions spaced as the sweep's end steps (for a sweep of one
-/// position, [`EXTENSION_STEP_MM`]) and rounded to 1e-9 mm, each end continued outwards from the positions nearest it, and
-/// the jumps of the new windows. The positions and jumps it had are kept as they are, so
-/// the result holds the sweep's values to the bit where they overlap. A bound already
+/// `from` and `to` (mm): new positions spaced as the sweep's end steps (for a sweep of one
+/// position, 0.1 mm: `EXTENSION_STEP_MM`) and rounded to 1e-9 mm, each end continued
+/// outwards from the positions nearest it, and the jumps of the new windows. The positions
+/// and jumps it had are kept as they are, so the result holds the sweep's values to the bit
+/// where they overlap. A bound already
 /// inside the sweep adds nothing on that side. The result is not mirrored: the quasi-
 /// elastic pass and the Hertz sweep are computed on the scene's own sweep, not on this
 /// one (the equivalent conicity asks for it, [`crate::conicity::assess_on`]).
-///
-/// # Example
-/// ```
-/// use wheelrail::{pipeline, rigid, scene::Scene, sweep::Sweep};
-/// let scene = Scene::from_toml("", "inline", std::path::Path::new(".")).unwrap();
-/// let placement = pipeline::place(&scene).unwrap();
-/// let sweep = rigid::search(&placement, &Sweep::range(-2.0, 2.0, 0.5).unwrap(), rigid::Solver::default());
-/// let wider = rigid::extend(&placement, &sweep, -3.0, 3.0);
-/// assert_eq!(wider.positions().len(), 13);
-/// assert_eq!(wider.positions()[2], sweep.positions()[0]);
-/// ```
-pub fn extend(placement: &Placement, sweep: &RigidSweep, from_mm: f64, to_mm: f64) -> RigidSweep {
+pub(crate) fn extend(placement: &Placement, sweep: &RigidSweep, from: f64, to: f64) -> RigidSweep {
     let p = &sweep.positions;
     let n = p.len();
     let step = |a: usize, b: usize| {
@@ -590,11 +581,11 @@ pub fn extend(placement: &Placement, sweep: &RigidSweep, from_mm: f64, to_mm: f6
             .map(|i| ((start + (bound - start).signum() * step * i as f64) * 1e9).round() / 1e9)
             .collect()
     };
-    let left = outwards(p[0].y_ws, step(0, 1.min(n - 1)), from_mm.min(p[0].y_ws));
+    let left = outwards(p[0].y_ws, step(0, 1.min(n - 1)), from.min(p[0].y_ws));
     let right = outwards(
         p[n - 1].y_ws,
         step(n.saturating_sub(2), n - 1),
-        to_mm.max(p[n - 1].y_ws),
+        to.max(p[n - 1].y_ws),
     );
     if left.is_empty() && right.is_empty() {
         return sweep.clone();
@@ -652,7 +643,7 @@ pub fn extend(placement: &Placement, sweep: &RigidSweep, from_mm: f64, to_mm: f6
 }
 
 /// The step of [`extend`] beyond a sweep of one position (mm): the EN 15302 Annex E grid.
-pub const EXTENSION_STEP_MM: f64 = 0.1;
+pub(crate) const EXTENSION_STEP_MM: f64 = 0.1;
 
 #[cfg(test)]
 mod tests {
@@ -666,5 +657,22 @@ mod tests {
             assert_eq!(Solver::from_name(solver.name()), Some(solver));
         }
         assert_eq!(Solver::from_name("fast"), None);
+    }
+
+    /// A sweep from -2 to 2 mm by 0.5 mm extended to ±3 mm gains two positions at each end
+    /// at the same step and keeps its own positions to the bit.
+    #[test]
+    fn an_extended_sweep_keeps_its_positions() {
+        let scene = crate::scene::Scene::from_toml("", "inline", std::path::Path::new("."))
+            .expect("the default scene");
+        let placement = crate::pipeline::place(&scene).expect("the default placement");
+        let sweep = search(
+            &placement,
+            &Sweep::range(-2.0, 2.0, 0.5).expect("a valid range"),
+            Solver::default(),
+        );
+        let wider = extend(&placement, &sweep, -3.0, 3.0);
+        assert_eq!(wider.positions().len(), 13);
+        assert_eq!(wider.positions()[2], sweep.positions()[0]);
     }
 }

@@ -68,7 +68,7 @@ pub(crate) const MAX_CONICITY_LIMIT: f64 = 2.0;
 
 /// The largest maintenance limit of a flange dimension accepted (mm): flange heights and
 /// thicknesses are a few tens of millimetres.
-pub const MAX_LIMIT_MM: f64 = 100.0;
+pub(crate) const MAX_LIMIT_MM: f64 = 100.0;
 
 /// The sensitivity values of eps of the `qe_epsilon` figure (mm).
 pub(crate) const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01, 0.03, 0.05];
@@ -131,6 +131,7 @@ impl std::error::Error for SceneError {}
 
 /// Where a profile comes from: a built-in definition or a file.
 #[derive(Debug, Clone, PartialEq)]
+#[doc(hidden)] // public for the Python binding and the fuzz tests (a scene's profile as written)
 pub enum ProfileRef {
     /// A built-in profile by name.
     BuiltIn(String),
@@ -140,6 +141,7 @@ pub enum ProfileRef {
 
 /// Image formats a figure can be written in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[doc(hidden)] // public for the Python binding and the scene benchmark (the report's image format)
 pub enum ImageFormat {
     /// Scalable vector graphics.
     Svg,
@@ -216,6 +218,7 @@ pub struct Scene {
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
 #[derive(Debug, Clone, Default, PartialEq)]
+#[doc(hidden)] // public for `wheelrail fleet` (what `Scene::fleet` gives the CLI)
 pub struct FleetSettings {
     pub(crate) conicity_limit: Option<f64>,
 }

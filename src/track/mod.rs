@@ -141,7 +141,7 @@ impl Side {
 /// One side of the track: a wheel and the rail under it.
 ///
 /// The placed rail is shared, not copied: both sides of a track with one rail profile, the
-/// pairs of a fleet and the scenes of a run with a [`crate::cache::PlacementCache`] hold the
+/// pairs of a fleet and the scenes of a run with a `crate::cache::PlacementCache` hold the
 /// same tables (cloning a side pair clones the wheel and counts one more user of the rail).
 #[derive(Debug, Clone)]
 pub struct SidePair {

@@ -77,6 +77,7 @@ impl WheelCell {
 
 /// A point of a placed wheel relative to the wheelset centre (side frame, no roll).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for the reference tests (what `PlacedWheel::at` gives the gap)
 pub struct WheelPoint {
     /// Lateral `Y` from the wheelset centre (mm).
     pub y: f64,

@@ -6,6 +6,7 @@ use crate::profile::ProfileKind;
 
 /// Where a bad value sits on its line: a numbered column or a `key = value` entry.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[doc(hidden)] // public for the reader tests (the field a `ReadError` names)
 pub enum Field {
     /// 1-based column of a data row.
     Column(usize),
@@ -24,6 +25,7 @@ impl fmt::Display for Field {
 
 /// Which extent of a profile is implausible.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[doc(hidden)] // public for the reader tests (the axis a `ReadError` names)
 pub enum Axis {
     /// The lateral coordinate (`s` of a wheel, `y` of a rail).
     Lateral,
@@ -44,7 +46,7 @@ impl fmt::Display for Axis {
 /// [`PointProfile`](super::PointProfile).
 ///
 /// Every variant carries `origin` (the path, or the name given to
-/// [`parse_str`](super::parse_str)) and, where the problem sits on one line, its 1-based
+/// the readers that parse text) and, where the problem sits on one line, its 1-based
 /// `line`, so that [`Display`](fmt::Display) reads like a compiler message:
 /// `profiles/w.csv:12: non-numeric value "abc" in column 2 (expected a number in mm)`.
 #[derive(Debug)]

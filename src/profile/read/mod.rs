@@ -121,7 +121,7 @@
 //!
 //! A caller that wants to run such files asks for it explicitly with
 //! [`ReadOptions`]`{ step_back: `[`StepBack::Drop`]` }` and [`read_profile_with`] or
-//! [`parse_str_with`]: walking outwards from the crest, every point that does not advance the
+//! `parse_str_with`: walking outwards from the crest, every point that does not advance the
 //! lateral coordinate beyond the points kept before it is dropped, as CONTACT's
 //! `delete_foldback` option does (details in `validate`), and the lines of the dropped
 //! points are listed in [`PointProfile::dropped_step_backs`] so that the caller can report
@@ -143,6 +143,7 @@ use crate::profile::ProfileKind;
 
 /// A supported profile file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[doc(hidden)] // public for the reader and fuzz tests that parse text in a named format
 pub enum ProfileFormat {
     /// The project's CSV (`.csv`), see the [module docs](self).
     Csv,
@@ -207,8 +208,8 @@ pub enum StepBack {
     Drop,
 }
 
-/// Options of [`read_profile_with`] and [`parse_str_with`]; the default is what
-/// [`read_profile`] and [`parse_str`] do.
+/// Options of [`read_profile_with`] and `parse_str_with`; the default is what
+/// [`read_profile`] and `parse_str` do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct ReadOptions {
     pub(crate) step_back: StepBack,
@@ -228,10 +229,11 @@ impl ReadOptions {
 
 /// Where a profile came from: enough to tell two runs apart that read different files.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[doc(hidden)] // public for the report's provenance table (a read profile's file and format)
 pub struct ProfileSource {
-    /// The path as given to [`read_profile`], or the origin given to [`parse_str`].
+    /// The path as given to [`read_profile`], or the origin given to `parse_str`.
     pub path: String,
-    /// SHA-256 of the file's bytes (of the text for [`parse_str`]), lower-case hex.
+    /// SHA-256 of the file's bytes (of the text for `parse_str`), lower-case hex.
     pub sha256: String,
     /// The format it was read as.
     pub format: ProfileFormat,
@@ -319,7 +321,7 @@ impl PointProfile {
     }
 
     /// The lateral and vertical coordinates as two columns (mm), e.g. to fit a
-    /// [`SmoothingSpline`](crate::profile::spline::SmoothingSpline).
+    /// smoothing spline as [`Profile::from_points`](crate::profile::Profile::from_points) does.
     pub fn columns(&self) -> (Vec<f64>, Vec<f64>) {
         self.points.iter().map(|p| (p[0], p[1])).unzip()
     }
@@ -336,7 +338,7 @@ impl PointProfile {
 ///
 /// [`ReadError::Io`] if the file cannot be read, [`ReadError::UnknownFormat`] for another
 /// extension, [`ReadError::WrongKind`] if the extension (`.prw`/`.whl` wheel, `.prr`/`.ban`
-/// rail) or the file's contents declare the other kind, and every error of [`parse_str`].
+/// rail) or the file's contents declare the other kind, and every error of `parse_str`.
 ///
 /// # Examples
 ///
@@ -440,6 +442,7 @@ pub fn read_profile_with(
 /// assert_eq!(rail.source.sha256.len(), 64);
 /// # Ok::<(), wheelrail::profile::read::ReadError>(())
 /// ```
+#[doc(hidden)] // public for the reader, profile and stress tests (text in a named format)
 pub fn parse_str(
     text: &str,
     format: ProfileFormat,
@@ -449,12 +452,13 @@ pub fn parse_str(
     parse_str_with(text, format, kind, origin, &ReadOptions::default())
 }
 
-/// [`parse_str`] with [`ReadOptions`].
+/// `parse_str` with [`ReadOptions`].
 ///
 /// # Errors
 ///
-/// As [`parse_str`]; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
+/// As `parse_str`; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
 /// [`ReadError::DuplicatePoint`], but [`ReadError::TooFewPoints`] when too few remain.
+#[doc(hidden)] // public for the reader tests and the fuzz target
 pub fn parse_str_with(
     text: &str,
     format: ProfileFormat,

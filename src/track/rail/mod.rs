@@ -33,6 +33,7 @@ pub(crate) const MAX_RAIL_SLOPE: f64 = 50.0;
 
 /// A point of a placed rail, in the side frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[doc(hidden)] // public for the reference tests (what `PlacedRail::at` gives the gap)
 pub struct RailPoint {
     /// Height `Z` (mm).
     pub z: f64,
