@@ -69,9 +69,9 @@
 //! 0.3, 1 and 3 times saturation in ξ, η, φ and all three at once, it errs by at most
 //! 0.07 % of `μ FN` in force and 0.04 % of `μ FN c` in spin moment, at about 6 µs per patch
 //! (`cargo bench --bench creep`, on CONTACT's FASTSIM example; record in
-//! `docs/2026-11-27-fastsim-grid.md`); `wheelrail tradeoff` times [`STUDY_GRIDS`] on the
-//! study's cases and charts them beside the numerical settings (`fastsim_tradeoff`). The error does not fall monotonically with the strip
-//! count (a strip's adhesion zone vanishes at some `|y|`, a kink the strip sums straddle
+//! `docs/2026-11-27-fastsim-grid.md`); `wheelrail tradeoff` times the study's 13 grids (8 to
+//! 64 strips and elements) on its cases and charts them beside the numerical settings
+//! (`fastsim_tradeoff`). The error does not fall monotonically with the strip count (a strip's adhesion zone vanishes at some `|y|`, a kink the strip sums straddle
 //! differently): 24 × 24 errs by 0.27 %, 28 × 28 by 0.12 %, 40 × 40 by 0.04 %.
 //!
 //! # Accuracy against the exact theory
@@ -499,6 +499,7 @@ pub fn study_cases() -> Vec<(EllipticPatch, Creepages)> {
 /// The grids of the discretisation study as `wheelrail tradeoff` measures them: square grids
 /// of 8 to 64 strips and elements around the default, and the default's strips or elements
 /// halved or doubled.
+#[doc(hidden)] // public for `wheelrail tradeoff` and the grid study's tests
 pub const STUDY_GRIDS: [Grid; 13] = [
     square(8),
     square(12),
@@ -526,6 +527,7 @@ pub const STUDY_GRIDS: [Grid; 13] = [
 
 /// The converged grid the discretisation study compares with: 1000 × 1000 cells, a thousand
 /// times the default's.
+#[doc(hidden)] // public for `wheelrail tradeoff` and the grid study's tests
 pub const STUDY_REFERENCE: Grid = square(1000);
 
 /// `n` strips of `n` elements.
