@@ -85,7 +85,7 @@ pub enum Error {
     HertzArgs(crate::hertz::cli::RunError),
     /// Arguments of `wheelrail creep` outside what a contact patch can be.
     #[cfg(feature = "cli")]
-    CreepArgs(crate::creep::cli::CliError),
+    CreepArgs(crate::creep::command::CommandError),
 }
 
 impl fmt::Display for Error {
@@ -175,5 +175,5 @@ from! {
 #[cfg(feature = "cli")]
 from! {
     HertzArgs(crate::hertz::cli::RunError),
-    CreepArgs(crate::creep::cli::CliError),
+    CreepArgs(crate::creep::command::CommandError),
 }

@@ -497,6 +497,127 @@ fn hertz_ellipse<'py>(
     Ok(d)
 }
 
+/// The tangential problem of one elliptic contact patch, as ``wheelrail creep`` solves it.
+///
+/// Parameters
+/// ----------
+/// a_mm, b_mm : float
+///     Semi-axes of the contact ellipse in the rolling and the lateral direction (mm, 0.01
+///     to 50).
+/// normal_force_N : float
+///     Normal force (N, 1 to 1e6).
+/// xi, eta : float
+///     Longitudinal and lateral creepage: the rail's velocity relative to the wheel over the
+///     rolling speed (-1 to 1).
+/// phi_per_mm : float
+///     Spin creepage (1/mm, -0.1 to 0.1).
+/// mu : float
+///     Coefficient of friction (0.01 to 1).
+/// shear_modulus_GPa : float
+///     Shear modulus of both bodies (GPa, 1 to 1000).
+/// poisson : float
+///     Poisson's ratio of both bodies (0 to 0.5).
+/// method : {"fastsim", "linear", "polach"}
+///     The tangential model: Kalker's FASTSIM (32 × 32 strips), his linear theory, or
+///     Polach's method.
+/// bound : {"parabolic", "elliptic"}
+///     FASTSIM's traction bound.
+///
+/// Returns
+/// -------
+/// dict
+///     The row of ``wheelrail creep``: ``method``, Kalker's ``c11``, ``c22``, ``c23``,
+///     ``fx_N``, ``fy_N`` (the wheel's force on the rail in the patch's contact frame: x
+///     rolling, y lateral; a positive creepage gives a negative force), ``mz_Nmm`` (NaN for
+///     the models without a spin moment), ``adhesion_fraction``.
+///
+/// Raises
+/// ------
+/// InputError
+///     A value outside its range (the message of ``wheelrail creep`` after the argument's
+///     name), an unknown method or bound.
+#[pyfunction]
+#[pyo3(signature = (a_mm, b_mm, normal_force_N, xi, eta, phi_per_mm, mu = 0.3, shear_modulus_GPa = 82.0, poisson = 0.28, method = "fastsim", bound = "parabolic"))]
+#[allow(non_snake_case, clippy::too_many_arguments)] // the command's options, with their units
+fn creep_forces<'py>(
+    py: Python<'py>,
+    a_mm: f64,
+    b_mm: f64,
+    normal_force_N: f64,
+    xi: f64,
+    eta: f64,
+    phi_per_mm: f64,
+    mu: f64,
+    shear_modulus_GPa: f64,
+    poisson: f64,
+    method: &str,
+    bound: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    use wheelrail::creep::command::{CommandError, PatchInputs, RANGES, solve};
+    use wheelrail::creep::{Bound as TractionBound, Method};
+    let methods = [Method::Fastsim, Method::Linear, Method::Polach];
+    let method = methods
+        .into_iter()
+        .find(|m| m.to_string() == method)
+        .ok_or_else(|| one_of("method", method, ["fastsim", "linear", "polach"]))?;
+    let bounds = [TractionBound::Parabolic, TractionBound::Elliptic];
+    let bound = bounds
+        .into_iter()
+        .find(|b| b.to_string() == bound)
+        .ok_or_else(|| one_of("bound", bound, ["parabolic", "elliptic"]))?;
+    let inputs = PatchInputs {
+        a_mm,
+        b_mm,
+        normal_force_n: normal_force_N,
+        xi,
+        eta,
+        phi_per_mm,
+        mu,
+        shear_modulus_gpa: shear_modulus_GPa,
+        poisson,
+        method,
+        bound,
+    };
+    // The arguments' names, in the order of the command's options (`RANGES`).
+    const NAMES: [&str; 9] = [
+        "a_mm",
+        "b_mm",
+        "normal_force_N",
+        "xi",
+        "eta",
+        "phi_per_mm",
+        "mu",
+        "shear_modulus_GPa",
+        "poisson",
+    ];
+    let t = detached(py, move || solve(&inputs))?.map_err(|e| match e {
+        CommandError::Implausible { range, value } => {
+            let name = RANGES
+                .iter()
+                .position(|r| r.key == range.key)
+                .map_or(range.key, |i| NAMES[i]);
+            input(range.refusal(name, value))
+        }
+        CommandError::Creep(e) => input(e),
+    })?;
+    let d = PyDict::new(py);
+    d.set_item("method", method.to_string())?;
+    // `+ 0.0` turns a negative zero into 0, as the command line prints it.
+    let numbers = [
+        ("c11", t.coefficients.c11),
+        ("c22", t.coefficients.c22),
+        ("c23", t.coefficients.c23),
+        ("fx_N", t.fx_n + 0.0),
+        ("fy_N", t.fy_n + 0.0),
+        ("mz_Nmm", t.mz_nmm + 0.0),
+        ("adhesion_fraction", t.adhesion_fraction),
+    ];
+    for (name, value) in numbers {
+        d.set_item(name, value)?;
+    }
+    Ok(d)
+}
+
 /// Assesses many profiles through one template scene, as ``wheelrail fleet`` does, and
 /// returns the rows of its ``fleet.csv``.
 ///
@@ -634,6 +755,7 @@ fn _wheelrail(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(rigid_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(equivalent_conicity, m)?)?;
     m.add_function(wrap_pyfunction!(hertz_ellipse, m)?)?;
+    m.add_function(wrap_pyfunction!(creep_forces, m)?)?;
     m.add_function(wrap_pyfunction!(fleet, m)?)?;
     Ok(())
 }

@@ -87,6 +87,68 @@ def test_hertz_ellipse_errors_name_the_case_and_argument():
         wheelrail.hertz_ellipse(1.0, 1.0, 1.0, method="agm")
 
 
+# --- creep_forces ------------------------------------------------------------------------
+
+CREEP_CASES = [
+    # CONTACT's FASTSIM example (a = 8, b = 4 mm, 82 kN), each model and bound.
+    dict(a_mm=8.0, b_mm=4.0, normal_force_N=82000.0, xi=0.0, eta=-6.25e-4, phi_per_mm=6.25e-4),
+    dict(a_mm=8.0, b_mm=4.0, normal_force_N=82000.0, xi=0.0, eta=-6.25e-4, phi_per_mm=6.25e-4,
+         bound="elliptic"),
+    dict(a_mm=8.0, b_mm=4.0, normal_force_N=82000.0, xi=0.0, eta=-6.25e-4, phi_per_mm=6.25e-4,
+         method="polach"),
+    dict(a_mm=6.0, b_mm=4.0, normal_force_N=5e4, xi=-1e-3, eta=2e-3, phi_per_mm=-1e-4,
+         mu=0.4, shear_modulus_GPa=80.0, poisson=0.3, method="linear"),
+]
+
+FLAGS = {
+    "a_mm": "--a-mm", "b_mm": "--b-mm", "normal_force_N": "--normal-force-n", "xi": "--xi",
+    "eta": "--eta", "phi_per_mm": "--phi-per-mm", "mu": "--mu",
+    "shear_modulus_GPa": "--shear-modulus-gpa", "poisson": "--poisson", "method": "--method",
+    "bound": "--bound",
+}
+
+
+def creep_command(kwargs):
+    return ["creep", *[x for k, v in kwargs.items() for x in (FLAGS[k], repr(v) if isinstance(v, float) else v)]]
+
+
+@pytest.mark.parametrize("case", CREEP_CASES)
+def test_creep_forces_is_the_command_lines_row(case, cli):
+    header, [row] = read_csv(cli(*creep_command(case)).stdout)
+    got = wheelrail.creep_forces(**case)
+    assert list(got) == header
+    for name, cell in zip(header, row):
+        if name == "method":
+            assert got[name] == cell
+        elif cell == "NaN":
+            assert np.isnan(got[name]), name
+        else:
+            assert got[name] == float(cell), name
+
+
+@pytest.mark.parametrize(
+    "argument, value",
+    [("a_mm", 0.008), ("normal_force_N", 82.0e6), ("xi", 2.0), ("mu", float("nan")), ("poisson", 0.6)],
+)
+def test_creep_forces_errors_are_the_command_lines(argument, value, cli):
+    case = dict(CREEP_CASES[0])
+    case[argument] = value
+    done = cli(*creep_command(case), check=False)
+    assert done.returncode == 2
+    with pytest.raises(wheelrail.InputError) as raised:
+        wheelrail.creep_forces(**case)
+    message = str(raised.value)
+    assert message.startswith(f"{argument} ")
+    assert done.stderr == f"error: {FLAGS[argument]} {message.removeprefix(argument + ' ')}\n"
+
+
+def test_creep_forces_names_an_unknown_model():
+    with pytest.raises(wheelrail.InputError, match='method: unknown "contact"'):
+        wheelrail.creep_forces(8.0, 4.0, 82000.0, 0.0, 0.0, 0.0, method="contact")
+    with pytest.raises(wheelrail.InputError, match='bound: unknown "square"'):
+        wheelrail.creep_forces(8.0, 4.0, 82000.0, 0.0, 0.0, 0.0, bound="square")
+
+
 # --- equivalent_conicity -----------------------------------------------------------------
 
 @pytest.mark.parametrize(

@@ -1,8 +1,8 @@
 """Railway wheel/rail contact geometry and Hertzian contact, with NumPy arrays in and out.
 
 The Rust library wheelrail as a Python package: profiles, placement on the track, rigid
-and quasi-elastic contact search, Hertz ellipses, the equivalent conicity of EN 15302 and
-fleets of measured profiles, each one call away. Tables are ``dict[str, numpy.ndarray]``
+and quasi-elastic contact search, Hertz ellipses, creep forces, the equivalent conicity of EN
+15302 and fleets of measured profiles, each one call away. Tables are ``dict[str, numpy.ndarray]``
 in column order, with the same column names (units in the names) and values as the CSV
 files of ``wheelrail report``; ``pandas.DataFrame(table)`` takes one as it is.
 
@@ -20,6 +20,7 @@ from ._wheelrail import (
     InputError,
     Run,
     __version__,
+    creep_forces,
     equivalent_conicity,
     fleet,
     hertz_ellipse,
@@ -32,6 +33,7 @@ __all__ = [
     "InputError",
     "Run",
     "__version__",
+    "creep_forces",
     "equivalent_conicity",
     "fleet",
     "hertz_ellipse",

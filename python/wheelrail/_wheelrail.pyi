@@ -87,6 +87,22 @@ def hertz_ellipse(
     poisson: float = 0.3,
     method: Literal["exact", "paper"] = "exact",
 ) -> Dict[str, Union[np.ndarray, str]]: ...
+def creep_forces(
+    a_mm: float,
+    b_mm: float,
+    normal_force_N: float,
+    xi: float,
+    eta: float,
+    phi_per_mm: float,
+    mu: float = 0.3,
+    shear_modulus_GPa: float = 82.0,
+    poisson: float = 0.28,
+    method: Literal["fastsim", "linear", "polach"] = "fastsim",
+    bound: Literal["parabolic", "elliptic"] = "parabolic",
+) -> Dict[str, Union[float, str]]:
+    """The tangential problem of one elliptic patch, as `wheelrail creep` solves it: method,
+    c11, c22, c23, fx_N, fy_N, mz_Nmm, adhesion_fraction."""
+
 def fleet(
     scene_path: Path,
     profiles: Optional[Sequence[Path]] = None,

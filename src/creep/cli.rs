@@ -17,14 +17,14 @@
 //!
 //! # Plausible values
 //!
-//! Every number is checked against [`RANGES`] (one table, the key, its range and why);
+//! Every number is checked against [`RANGES`](super::command::RANGES) (one table, the key,
+//! its range and why, shared with the Python binding: [`super::command`]);
 //! a value outside is an error naming the key and the range (exit code 2).
 
-use super::creepage::Creepages;
-use super::tangential::{self, EllipticPatch};
-use super::{Bound, CreepError, Method, Settings};
-use crate::message::Number;
-use std::fmt;
+#[cfg(test)]
+use super::command::RANGES;
+use super::command::{CommandError, PatchInputs, missing_spin_moment, solve};
+use super::{Bound, Method};
 
 /// Arguments of `wheelrail creep`.
 #[derive(Debug, Clone, PartialEq, clap::Args)]
@@ -72,116 +72,6 @@ pub struct CreepArgs {
 /// The CSV header printed by [`run`].
 pub const HEADER: &str = "method,c11,c22,c23,fx_N,fy_N,mz_Nmm,adhesion_fraction";
 
-/// The plausible range of one command-line value.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Range {
-    /// The option, as typed.
-    pub key: &'static str,
-    /// Smallest value accepted.
-    pub min: f64,
-    /// Largest value accepted.
-    pub max: f64,
-    /// Why values beyond are implausible (or meaningless).
-    pub why: &'static str,
-}
-
-/// The plausible ranges of `wheelrail creep`'s values, each with its reason. All in one place.
-pub const RANGES: [Range; 9] = [
-    Range {
-        key: "--a-mm",
-        min: 0.01,
-        max: 50.0,
-        why: "mm; wheel-rail contact ellipses have semi-axes of 1 to 20 mm",
-    },
-    Range {
-        key: "--b-mm",
-        min: 0.01,
-        max: 50.0,
-        why: "mm; wheel-rail contact ellipses have semi-axes of 1 to 20 mm",
-    },
-    Range {
-        key: "--normal-force-n",
-        min: 1.0,
-        max: 1e6,
-        why: "N; wheel loads reach 200 kN, flange forces twice that",
-    },
-    Range {
-        key: "--xi",
-        min: -1.0,
-        max: 1.0,
-        why: "beyond ±1 the wheel slides faster than it rolls",
-    },
-    Range {
-        key: "--eta",
-        min: -1.0,
-        max: 1.0,
-        why: "beyond ±1 the wheel slides sideways faster than it rolls",
-    },
-    Range {
-        key: "--phi-per-mm",
-        min: -0.1,
-        max: 0.1,
-        why: "1/mm; the spin of a wheel is sin(contact angle) / radius, below 0.01 for radii above 100 mm",
-    },
-    Range {
-        key: "--mu",
-        min: 0.01,
-        max: 1.0,
-        why: "dry steel on steel is 0.3 to 0.6, lubricated 0.05 to 0.2",
-    },
-    Range {
-        key: "--shear-modulus-gpa",
-        min: 1.0,
-        max: 1000.0,
-        why: "GPa; steel is 80 to 82",
-    },
-    Range {
-        key: "--poisson",
-        min: 0.0,
-        max: 0.5,
-        why: "the range of Kalker's table of creep coefficients",
-    },
-];
-
-/// A command-line value outside its [`Range`], or input the creep model refuses.
-#[derive(Debug, Clone, PartialEq)]
-pub enum CliError {
-    /// `value` of `range.key` is outside the range (or not finite).
-    Implausible {
-        /// The range it failed.
-        range: Range,
-        /// The value given.
-        value: f64,
-    },
-    /// The model refused the input (should not happen after the ranges).
-    Creep(CreepError),
-}
-
-impl fmt::Display for CliError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            CliError::Implausible { range, value } => write!(
-                f,
-                "{} {}: expected {} to {} ({})",
-                range.key,
-                Number(*value),
-                Number(range.min),
-                Number(range.max),
-                range.why
-            ),
-            CliError::Creep(e) => write!(f, "{e}"),
-        }
-    }
-}
-
-impl std::error::Error for CliError {}
-
-impl From<CreepError> for CliError {
-    fn from(e: CreepError) -> Self {
-        CliError::Creep(e)
-    }
-}
-
 /// What [`run`] returns: the text to print and, when the spin moment is NaN, why.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solved {
@@ -191,9 +81,6 @@ pub struct Solved {
     pub note: Option<String>,
 }
 
-/// MPa per GPa: the one unit conversion of this command.
-const MPA_PER_GPA: f64 = 1e3;
-
 /// Solves the patch described by `args` and returns the text to print.
 ///
 /// # Units
@@ -202,7 +89,7 @@ const MPA_PER_GPA: f64 = 1e3;
 ///
 /// # Errors
 ///
-/// [`CliError::Implausible`] for a value outside its [`RANGES`] entry (NaN and infinities
+/// [`CommandError::Implausible`] for a value outside its [`RANGES`] entry (NaN and infinities
 /// included), naming the key.
 ///
 /// # Example
@@ -221,42 +108,10 @@ const MPA_PER_GPA: f64 = 1e3;
 /// ]);
 /// let out = run(&cli.creep)?.csv;
 /// assert!(out.starts_with("method,c11,c22,c23,fx_N,fy_N,mz_Nmm,adhesion_fraction\nlinear,"));
-/// # Ok::<(), wheelrail::creep::cli::CliError>(())
+/// # Ok::<(), wheelrail::creep::command::CommandError>(())
 /// ```
-pub fn run(args: &CreepArgs) -> Result<Solved, CliError> {
-    let values = [
-        args.a_mm,
-        args.b_mm,
-        args.normal_force_n,
-        args.xi,
-        args.eta,
-        args.phi_per_mm,
-        args.mu,
-        args.shear_modulus_gpa,
-        args.poisson,
-    ];
-    for (range, value) in RANGES.iter().zip(values) {
-        if !(range.min..=range.max).contains(&value) {
-            return Err(CliError::Implausible {
-                range: *range,
-                value,
-            });
-        }
-    }
-    let settings = Settings::new(
-        args.method,
-        args.mu,
-        args.shear_modulus_gpa * MPA_PER_GPA,
-        args.poisson,
-    )?
-    .with_bound(args.bound);
-    let patch = EllipticPatch::new(args.a_mm, args.b_mm, args.normal_force_n)?;
-    let creepages = Creepages {
-        xi: args.xi,
-        eta: args.eta,
-        phi_per_mm: args.phi_per_mm,
-    };
-    let t = tangential::solve(&patch, &creepages, &settings);
+pub fn run(args: &CreepArgs) -> Result<Solved, CommandError> {
+    let t = solve(&PatchInputs::from(args))?;
     // `+ 0.0` turns a negative zero (a force of -F · 0) into 0.
     let row = format!(
         "{},{:e},{:e},{:e},{:e},{:e},{:e},{:e}",
@@ -269,19 +124,29 @@ pub fn run(args: &CreepArgs) -> Result<Solved, CliError> {
         t.mz_nmm + 0.0,
         t.adhesion_fraction
     );
-    let note = match args.method {
-        Method::Fastsim => None,
-        Method::Linear => Some(
-            "mz_Nmm is NaN: linear theory's spin moment needs Kalker's C33, which the committed table (Kalker 1990, Table E.3 as in CONTACT) does not hold; use --method fastsim".to_string(),
-        ),
-        Method::Polach => Some(
-            "mz_Nmm is NaN: Polach's method gives no spin moment; use --method fastsim".to_string(),
-        ),
-    };
+    let note = missing_spin_moment(args.method).map(|n| n.replace("the method ", "--method "));
     Ok(Solved {
         csv: format!("{HEADER}\n{row}\n"),
         note,
     })
+}
+
+impl From<&CreepArgs> for PatchInputs {
+    fn from(a: &CreepArgs) -> PatchInputs {
+        PatchInputs {
+            a_mm: a.a_mm,
+            b_mm: a.b_mm,
+            normal_force_n: a.normal_force_n,
+            xi: a.xi,
+            eta: a.eta,
+            phi_per_mm: a.phi_per_mm,
+            mu: a.mu,
+            shear_modulus_gpa: a.shear_modulus_gpa,
+            poisson: a.poisson,
+            method: a.method,
+            bound: a.bound,
+        }
+    }
 }
 
 #[cfg(test)]
@@ -364,7 +229,7 @@ mod tests {
         for v in ["nan", "inf", "-inf"] {
             let args = parse(&["--mu", v]).unwrap();
             assert!(
-                matches!(run(&args), Err(CliError::Implausible { .. })),
+                matches!(run(&args), Err(CommandError::Implausible { .. })),
                 "{v}"
             );
         }

@@ -50,6 +50,8 @@
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod coefficients;
+#[doc(hidden)] // public for the command line and the Python binding's `creep_forces`
+pub mod command;
 pub mod creepage;
 pub mod fastsim;
 pub mod linear;
