@@ -226,11 +226,25 @@ pub(crate) type Basin = (f64, f64);
 impl<'a> SideGap<'a> {
     /// Both sides of a placement, left (+1) then right (-1): the order of every per-side
     /// array of the searches.
+    ///
+    /// A [mirror-symmetric](crate::track::Placement::is_mirror_symmetric) placement's right
+    /// side has the left side's wheel and rail to the bit: its coarse samples, breaks and
+    /// block bounds, which are made from those alone, are the left side's, copied rather
+    /// than made again.
     pub fn both(placement: &'a crate::track::Placement) -> [SideGap<'a>; 2] {
-        [
-            SideGap::new(&placement.left, 1.0),
-            SideGap::new(&placement.right, -1.0),
-        ]
+        let left = SideGap::new(&placement.left, 1.0);
+        let right = if placement.is_mirror_symmetric() {
+            SideGap {
+                pair: &placement.right,
+                rail: placement.right.rail(),
+                sign: -1.0,
+                outline_base: Default::default(),
+                ..left.clone()
+            }
+        } else {
+            SideGap::new(&placement.right, -1.0)
+        };
+        [left, right]
     }
 
     /// Prepares the side with `sign` (+1 left, -1 right).

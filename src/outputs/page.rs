@@ -1,7 +1,7 @@
 //! The content of `index.html`: what ran and what to watch (summary, notes), the scene's
 //! parameters, the provenance of its profiles, the pair's key results.
 
-use super::{NamedTable, figures, tables};
+use super::{figures, tables};
 use crate::pipeline::Results;
 use crate::profile::Profile;
 use crate::profile::read::sha256_hex;
@@ -9,11 +9,12 @@ use crate::report::{FigureEntry, ReportPage, TableEntry};
 use crate::rigid::JumpKind;
 use crate::scene::Scene;
 
-/// The report page of a scene's run, listing `figures` and `tables`.
+/// The report page of a scene's run, listing `figures` and `tables` (each table's file name
+/// and description).
 pub(super) fn report_page(
     scene: &Scene,
     results: &Results,
-    tables: &[NamedTable],
+    tables: &[(String, String)],
     figures: Vec<FigureEntry>,
 ) -> ReportPage {
     let (summary, notes) = summary_and_notes(scene, results);
@@ -26,10 +27,10 @@ pub(super) fn report_page(
         figures,
         tables: tables
             .iter()
-            .map(|t| TableEntry {
-                name: t.file.trim_end_matches(".csv").to_string(),
-                file: t.file.clone(),
-                description: t.description.clone(),
+            .map(|(file, description)| TableEntry {
+                name: file.trim_end_matches(".csv").to_string(),
+                file: file.clone(),
+                description: description.clone(),
             })
             .collect(),
         data_tables: Vec::new(),

@@ -38,27 +38,28 @@ pub(crate) struct WheelCell {
 /// overlap twice in `jump`: an upper bound still).
 #[derive(Debug, Clone)]
 pub(crate) struct WheelCells {
-    /// `levels[k][i]`: the union of the cells `i..i + 2^k` (`levels[0]`: the cells).
-    levels: Vec<Vec<WheelCell>>,
+    /// `levels.level(k)[i]`: the union of the cells `i..i + 2^k` (level 0: the cells), each
+    /// level above the cells made on first use.
+    levels: super::sparse::LazyLevels<WheelCell>,
 }
 
 impl WheelCells {
     fn new(cells: Vec<WheelCell>) -> WheelCells {
         WheelCells {
-            levels: super::sparse::doubling_levels(cells, WheelCell::union),
+            levels: super::sparse::LazyLevels::new(cells, WheelCell::union),
         }
     }
 
     /// The cells, in order.
     pub(crate) fn cells(&self) -> &[WheelCell] {
-        &self.levels[0]
+        self.levels.level(0)
     }
 
     /// The bounds over the cells `i..j` (`i < j`): the union of theirs.
     #[inline]
     pub(crate) fn over(&self, i: usize, j: usize) -> WheelCell {
         let k = super::sparse::level_of(j - i);
-        let level = &self.levels[k];
+        let level = self.levels.level(k);
         level[i].union(level[j - (1 << k)])
     }
 }
@@ -248,6 +249,20 @@ impl PlacedWheel {
     pub(crate) fn share_cells_with(&mut self, other: &PlacedWheel) {
         debug_assert!(self.same_as(other));
         self.cells = Arc::clone(&other.cells);
+    }
+
+    /// Gives back the memory of the cell bounds (the searches' bounds of the wheel, some
+    /// 245 kB on a 1000-point measured wheel), to be built again should a search need them
+    /// (the same bounds: they are a function of the wheel). Shares the new, empty bounds
+    /// with `other` where the two shared theirs.
+    pub(crate) fn release_cells(&mut self, other: &mut PlacedWheel) {
+        let shared = Arc::ptr_eq(&self.cells, &other.cells);
+        self.cells = Arc::default();
+        other.cells = if shared {
+            Arc::clone(&self.cells)
+        } else {
+            Arc::default()
+        };
     }
 
     /// Whether `other` shares this wheel's cell bounds (a test of the sharing, which

@@ -54,9 +54,10 @@ pub(super) struct SurfaceTable {
 /// the union over bins `i..i + 2^k`, `levels[0]` the bins), for the bounds over any run of
 /// bins in two lookups. Two overlapping runs count the joints of their overlap twice in
 /// `jump`: an upper bound still.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone)]
 struct Bins {
-    levels: Vec<Vec<SurfaceBounds>>,
+    /// Each level above the bins made on first use.
+    levels: crate::track::sparse::LazyLevels<SurfaceBounds>,
 }
 
 /// Width of the bins of [`PlacedRail::binned_bounds`] (mm): the coarse step of the wheel,
@@ -498,12 +499,12 @@ impl PlacedRail {
         {
             return None;
         }
-        let last = bins.levels[0].len() - 1;
+        let last = bins.levels.level(0).len() - 1;
         let bin =
             |y: f64, widen: f64| (((y - lo) / SURFACE_BIN_MM + widen).max(0.0) as usize).min(last);
         let (i, j) = (bin(y_lo, -1e-9), bin(y_hi, 1e-9));
         let k = crate::track::sparse::level_of(j - i + 1);
-        Some((&bins.levels[k], i, j + 1 - (1 << k)))
+        Some((bins.levels.level(k), i, j + 1 - (1 << k)))
     }
 
     fn build_bins(&self) -> Bins {
@@ -518,7 +519,7 @@ impl PlacedRail {
             })
             .collect();
         Bins {
-            levels: crate::track::sparse::doubling_levels(bounds, SurfaceBounds::union),
+            levels: crate::track::sparse::LazyLevels::new(bounds, SurfaceBounds::union),
         }
     }
 }
