@@ -17,9 +17,8 @@
 //!
 //! # Plausible values
 //!
-//! Every number is checked against [`RANGES`](super::command::RANGES) (one table, the key,
-//! its range and why, shared with the Python binding: [`super::command`]);
-//! a value outside is an error naming the key and the range (exit code 2).
+//! Every number is checked against `creep::command::RANGES` (one table, the key, its range
+//! and why, shared with the Python binding through `creep::command`); a value outside is an error naming the key and the range (exit code 2).
 
 #[cfg(test)]
 use super::command::RANGES;
@@ -89,8 +88,8 @@ pub struct Solved {
 ///
 /// # Errors
 ///
-/// [`CommandError::Implausible`] for a value outside its [`RANGES`] entry (NaN and infinities
-/// included), naming the key.
+/// `CommandError::Implausible` for a value outside its range in `creep::command::RANGES`
+/// (NaN and infinities included), naming the key.
 ///
 /// # Example
 ///
