@@ -18,7 +18,8 @@
 //! # Plausible values
 //!
 //! Every number is checked against `creep::command::RANGES` (one table, the key, its range
-//! and why, shared with the Python binding through `creep::command`); a value outside is an error naming the key and the range (exit code 2).
+//! and why, shared with the Python binding through `creep::command`); a value outside is an
+//! error naming the key and the range (exit code 2).
 
 #[cfg(test)]
 use super::command::RANGES;
