@@ -5,7 +5,7 @@
 //! # Budget
 //!
 //! `WHEELRAIL_FUZZ_CASES` cases per property (default 256: under 1 s in `cargo test --release
-//! --test fuzz` on 2 cores, so the suite runs in CI). For a long session by hand:
+//! --test fuzz` on 2 cores, so the suite runs in CI). For a longer run by hand:
 //!
 //! ```text
 //! WHEELRAIL_FUZZ_CASES=20000 cargo test --release --test fuzz
