@@ -172,21 +172,12 @@ pub(super) fn find_jumps<'a>(
             let (pa, pb) = (whole(pa), whole(pb));
             let hollow = refined_hollow(solver, k, &pa, &pb, ca.s, cb.s);
             let sampled = solver.sides_at(pa.y_ws)[k].is_sampled();
-            jumps.push(Jump {
-                side,
-                y_from: pa.y_ws,
-                y_to: pb.y_ws,
-                s_from: ca.s,
-                s_to: cb.s,
-                delta_r_from: pa.delta_r(),
-                delta_r_to: pb.delta_r(),
-                hollow_mm: hollow,
-                kind: if sampled && hollow < ARTEFACT_HOLLOW_MM {
-                    JumpKind::Artefact
-                } else {
-                    JumpKind::Jump
-                },
-            });
+            let kind = if sampled && hollow < ARTEFACT_HOLLOW_MM {
+                JumpKind::Artefact
+            } else {
+                JumpKind::Jump
+            };
+            jumps.push(jump_between(side, (&pa, &pb), hollow, kind));
         }
     }
     jumps
@@ -481,17 +472,30 @@ fn unrefined_artefact<'a>(
     let hollow = gap.hollow(&pose, (a.s, a.g), (b.s, b.g))?;
     // Two minima, as far apart as a confirmed jump moves the contact point.
     let two = hollow > RIDGE_MM && (a.s - b.s).abs() > JUMP_CONFIRM_MM;
-    (two && hollow + (a.g - b.g).abs() < ARTEFACT_HOLLOW_MM).then_some(Jump {
+    (two && hollow + (a.g - b.g).abs() < ARTEFACT_HOLLOW_MM)
+        .then(|| jump_between(side, (pa, pb), hollow, JumpKind::Artefact))
+}
+
+/// The jump of `side`'s contact point from `pa` to `pb` (each with a contact on that side),
+/// with the hollow between the two contacts and its kind.
+fn jump_between(
+    side: super::Side,
+    (pa, pb): (&RigidPosition, &RigidPosition),
+    hollow_mm: f64,
+    kind: JumpKind,
+) -> Jump {
+    let s = |p: &RigidPosition| p.side(side).map_or(f64::NAN, |c| c.s);
+    Jump {
         side,
         y_from: pa.y_ws,
         y_to: pb.y_ws,
-        s_from: ca.s,
-        s_to: cb.s,
+        s_from: s(pa),
+        s_to: s(pb),
         delta_r_from: pa.delta_r(),
         delta_r_to: pb.delta_r(),
-        hollow_mm: hollow,
-        kind: JumpKind::Artefact,
-    })
+        hollow_mm,
+        kind,
+    }
 }
 
 /// The least rise of the gap between two points found as minima for them to be two minima
