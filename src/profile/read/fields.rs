@@ -74,7 +74,8 @@ const POWERS_OF_TEN: [f64; MAX_EXACT_POWER_OF_TEN + 1] = [
 /// IEEE operation on exact operands, rounded to nearest: the correctly rounded value, the
 /// one `str::parse` gives, to the bit (W. D. Clinger, "How to read floating point numbers
 /// accurately", PLDI 1990; the standard library's own first path). The test
-/// `exact_decimals_are_the_standard_parse_to_the_bit` compares the two on every form.
+/// `exact_decimals_are_the_standard_parse_to_the_bit` and the one after it compare the two
+/// on every form.
 ///
 /// Why: a profile file is two short decimals per line, which `number` gave to `str::parse`
 /// for 264 instructions each on the EN 15302 reference files (`tests/data/en15302/`); this
@@ -250,6 +251,8 @@ mod tests {
         true
     }
 
+    /// `exact_decimal` is `str::parse` to the bit wherever it gives a value (here and in
+    /// `random_decimals_read_as_the_standard_parse_reads_them`).
     #[test]
     fn exact_decimals_are_the_standard_parse_to_the_bit() {
         // Edges of the form and of the fast path's range: signed zeros, no digits before or
@@ -294,6 +297,10 @@ mod tests {
         ] {
             assert_eq!(check_exact(token), fast, "{token:?}");
         }
+    }
+
+    #[test]
+    fn random_decimals_read_as_the_standard_parse_reads_them() {
         // Random tokens of the form and near it: signs, up to 20 digits on either side of a
         // point, exponents of up to 3 digits, now and then a stray character.
         let mut rng = crate::rng::SplitMix64::new(29);
