@@ -281,6 +281,29 @@ mod tests {
         }
     }
 
+    /// A number from the random bits `r`: a mantissa from 1 to 10, a decade from `-decades`
+    /// to `decades`, either sign.
+    fn random_number(r: u64, decades: u64) -> f64 {
+        let decade = (r % (2 * decades + 1)) as i32 - decades as i32;
+        let mantissa = 1.0 + (r >> 11) as f64 / (1u64 << 53) as f64 * 9.0;
+        let sign = if r & 1 == 0 { 1.0 } else { -1.0 };
+        sign * mantissa * 10f64.powi(decade)
+    }
+
+    /// How many of `count` random numbers (seed `seed`, `random_number(_, decades)`) times
+    /// `digits` the fast path wrote, each checked against the standard formatting.
+    fn fast_and_agreeing(seed: u64, count: usize, decades: u64, digits: &[u32]) -> usize {
+        let mut rng = crate::rng::SplitMix64::new(seed);
+        let mut fast = 0;
+        for _ in 0..count {
+            let x = random_number(rng.next_u64(), decades);
+            for &d in digits {
+                fast += usize::from(check(x, d));
+            }
+        }
+        fast
+    }
+
     #[test]
     fn agrees_with_the_standard_formatting() {
         // Random numbers from 1e-20 to 1e20, both signs.
@@ -289,10 +312,7 @@ mod tests {
         let (mut fast, mut total) = (0, 0);
         for _ in 0..1_000_000 {
             let r = next();
-            let decade = (r % 41) as i32 - 20;
-            let mantissa = 1.0 + (r >> 11) as f64 / (1u64 << 53) as f64 * 9.0;
-            let sign = if r & 1 == 0 { 1.0 } else { -1.0 };
-            let x = sign * mantissa * 10f64.powi(decade);
+            let x = random_number(r, 20);
             for digits in [10, 3, 17] {
                 total += 1;
                 fast += usize::from(check(x, digits));
@@ -306,18 +326,8 @@ mod tests {
     fn every_digit_count_agrees() {
         // The digits eight, then two at a time: every count from 1 to 17 goes its own way
         // through them.
-        let mut rng = crate::rng::SplitMix64::new(0x0123_4567_89ab_cdef);
-        let mut fast = 0;
-        for _ in 0..50_000 {
-            let r = rng.next_u64();
-            let decade = (r % 21) as i32 - 10;
-            let mantissa = 1.0 + (r >> 11) as f64 / (1u64 << 53) as f64 * 9.0;
-            let sign = if r & 1 == 0 { 1.0 } else { -1.0 };
-            let x = sign * mantissa * 10f64.powi(decade);
-            for digits in 1..=17 {
-                fast += usize::from(check(x, digits));
-            }
-        }
+        let digits: Vec<u32> = (1..=17).collect();
+        let fast = fast_and_agreeing(0x0123_4567_89ab_cdef, 50_000, 10, &digits);
         assert!(fast > 50_000 * 16, "{fast}");
     }
 
@@ -326,17 +336,7 @@ mod tests {
         // With few digits the integer path reaches past the decades of `POW10_GUESS`
         // (1e-30 to 1e30), where the exponent's first guess comes from the binary exponent
         // alone.
-        let mut rng = crate::rng::SplitMix64::new(0x005e_ed0f_d161_7500);
-        let mut fast = 0;
-        for _ in 0..200_000 {
-            let r = rng.next_u64();
-            let decade = (r % 81) as i32 - 40;
-            let mantissa = 1.0 + (r >> 11) as f64 / (1u64 << 53) as f64 * 9.0;
-            let x = mantissa * 10f64.powi(decade);
-            for digits in [1, 2, 3] {
-                fast += usize::from(check(x, digits));
-            }
-        }
+        let fast = fast_and_agreeing(0x005e_ed0f_d161_7500, 200_000, 40, &[1, 2, 3]);
         assert!(fast > 400_000, "{fast}");
     }
 
