@@ -250,8 +250,9 @@ fn may_be_running(pid: u32) -> bool {
 }
 
 /// Moves the files in `dir` under the names `present` (those replaced and the stale ones)
-/// aside (to `aside(name)`), then the staged files (and manifest) `incoming` from `staged(name)` into place; on any failure undoes
-/// what was done, in reverse. The names moved aside, for the caller to delete.
+/// aside (to `aside(name)`), then the staged files (and manifest) `incoming` from
+/// `staged(name)` into place; on any failure undoes what was done, in reverse. The names
+/// moved aside, for the caller to delete.
 fn swap<'a>(
     dir: &Path,
     incoming: &[&'a str],
