@@ -93,6 +93,14 @@ pub(crate) struct PoseBox {
 }
 
 impl PoseBox {
+    /// Whether `other` was made at the same pose as this box (compared to the bit), so that,
+    /// for the same side, the two are the same box: a box is a function of its side and the
+    /// pose it was made at, and the certificate's cushions of one serve the other.
+    pub(crate) fn made_at_same_pose(&self, other: &PoseBox) -> bool {
+        let bits = |c: Option<(f64, f64, f64)>| c.map(|(d, s, y)| [d, s, y].map(f64::to_bits));
+        self.centre.is_some() && bits(self.centre) == bits(other.centre)
+    }
+
     /// Whether `pose` lies in the box (false before the first scan).
     #[inline]
     pub(super) fn holds(&self, pose: &SidePose) -> bool {
