@@ -78,6 +78,12 @@ pub(crate) fn push_significant(out: &mut Vec<u8>, x: f64, digits: u32) -> bool {
     }
 }
 
+/// [`push_significant`] with 10 digits, for callers that inline it.
+#[inline(always)]
+pub(crate) fn push_ten(out: &mut Vec<u8>, x: f64) -> bool {
+    significant(out, x, 10)
+}
+
 #[inline(always)]
 fn significant(out: &mut Vec<u8>, x: f64, digits: u32) -> bool {
     if !x.is_finite() || !(1..=17).contains(&digits) {
