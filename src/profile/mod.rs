@@ -215,7 +215,7 @@ impl Profile {
             Shape::Uic60 => uic60::eval(u),
             Shape::Sampled(sp) => {
                 let (lo, hi) = sp.domain();
-                sp.eval(u.clamp(lo, hi))
+                sp.eval_inside(u.clamp(lo, hi))
             }
         }
     }
@@ -243,6 +243,15 @@ impl Profile {
             // Through `eval`, not its arms: a second caller of `s1002::eval` would keep it
             // from being inlined into `eval`, which the gap calls most.
             _ => self.eval(u),
+        }
+    }
+
+    /// A scan of the profile's value and slope at increasing `u`
+    /// ([`SlopeScan::eval_slope`]): the first two numbers of [`Profile::eval`] to the bit.
+    pub(crate) fn slope_scan(&self) -> SlopeScan<'_> {
+        match &self.shape {
+            Shape::Sampled(sp) => SlopeScan::Walk(sp.walk_from_start(), sp.domain()),
+            _ => SlopeScan::Eval(self),
         }
     }
 
@@ -342,6 +351,31 @@ impl Profile {
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Cursor {
     interval: usize,
+}
+
+/// A scan of a profile's value and slope at increasing `u` ([`Profile::slope_scan`]): a
+/// sampled profile's spline walked forward (its slices held by the scan), another profile
+/// evaluated.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum SlopeScan<'a> {
+    /// The spline's walk and its domain.
+    Walk(spline::Walk<'a>, (f64, f64)),
+    /// The profile itself.
+    Eval(&'a Profile),
+}
+
+impl SlopeScan<'_> {
+    /// `[v, v']` at `u`: the first two numbers of [`Profile::eval`] to the bit.
+    #[inline(always)]
+    pub(crate) fn eval_slope(&mut self, u: f64) -> [f64; 2] {
+        match self {
+            SlopeScan::Walk(walk, (lo, hi)) => walk.eval_slope(u.clamp(*lo, *hi)),
+            SlopeScan::Eval(p) => {
+                let [v, d1, _] = p.eval(u);
+                [v, d1]
+            }
+        }
+    }
 }
 
 /// Curvature of a graph `v(u)` from its derivatives, positive where the surface is convex
