@@ -1,7 +1,6 @@
 //! A uniform table of a placed rail's heights, with block maxima for the coarse scans.
 
 use super::PlacedRail;
-use crate::profile::Cursor;
 use wide::f64x4;
 
 /// Step of the uniform table of rail heights [`PlacedRail::heights`] (mm): linear
@@ -63,15 +62,15 @@ impl HeightTable {
         let step = (hi - lo) / n as f64;
         // The heights made in the table's own entries, their differences filled in after:
         // no vector of the heights alone (28 kB on the EN 15302 rail) to copy them from.
-        // The heights increase in `y`: the rail inverted from a cursor where it must be.
+        // The heights increase in `y`: the rail inverted by a scan where it must be.
         // `i as f64` counted in floating point (exact below 2^53).
-        let mut cursor = Cursor::default();
+        let mut scan = rail.profile().scan();
         let mut z: Vec<[f64; 2]> = Vec::with_capacity(n + 1);
         let mut i = 0.0;
         for _ in 0..n + 1 {
             let y = (lo + i * step).min(hi);
             i += 1.0;
-            z.push([rail.height_from(&mut cursor, y).unwrap_or(f64::NAN), 0.0]);
+            z.push([rail.height_from(&mut scan, y).unwrap_or(f64::NAN), 0.0]);
         }
         // The difference after the last entry is to itself (a repeated last entry).
         let mut next = z[n][0];

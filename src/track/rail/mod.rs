@@ -16,7 +16,7 @@
 
 use super::heights::{HEIGHT_TABLE_STEP_MM, HeightTable};
 use super::{Inclination, PlacementError, TrackLayout, convex_from_second_derivative};
-use crate::profile::{Cursor, Profile, ProfileKind, SlopeScan};
+use crate::profile::{Profile, ProfileKind, ProfileScan};
 use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
 
 mod surface;
@@ -83,30 +83,22 @@ pub struct PlacedRail {
 }
 
 /// How the placement evaluates the rail profile at increasing `u` (its scan and tables):
-/// [`Profile::eval`] to the bit, from a [`Cursor`] that a sampled profile carries along
-/// ([`FromCursor`]) or by `eval` itself ([`Direct`]).
+/// [`Profile::eval`] to the bit, from a [`ProfileScan`] that walks a sampled profile's
+/// spline forward ([`Walked`]) or by `eval` itself ([`Direct`]).
 trait ScanEval: Copy {
-    /// `[v, v', v'']` at `u`.
-    fn eval(self, profile: &Profile, cursor: &mut Cursor, u: f64) -> [f64; 3];
-    /// `[v, v']` at increasing `u`: the first two numbers of [`ScanEval::eval`], without
-    /// the second derivative (which the scan does not use).
-    fn slope_scan(self, profile: &Profile) -> SlopeScan<'_>;
+    /// A scan of `profile` at increasing `u`.
+    fn scan(self, profile: &Profile) -> ProfileScan<'_>;
 }
 
-/// [`ScanEval`] from a cursor: [`Profile::eval_from`] (a sampled rail's spline steps
-/// forward from its last piece).
+/// [`ScanEval`] by [`Profile::scan`] (a sampled rail's spline steps forward from its last
+/// piece).
 #[derive(Debug, Clone, Copy)]
-struct FromCursor;
+struct Walked;
 
-impl ScanEval for FromCursor {
+impl ScanEval for Walked {
     #[inline]
-    fn eval(self, profile: &Profile, cursor: &mut Cursor, u: f64) -> [f64; 3] {
-        profile.eval_from(cursor, u)
-    }
-
-    #[inline]
-    fn slope_scan(self, profile: &Profile) -> SlopeScan<'_> {
-        profile.slope_scan()
+    fn scan(self, profile: &Profile) -> ProfileScan<'_> {
+        profile.scan()
     }
 }
 
@@ -117,13 +109,8 @@ struct Direct;
 
 impl ScanEval for Direct {
     #[inline]
-    fn eval(self, profile: &Profile, _: &mut Cursor, u: f64) -> [f64; 3] {
-        profile.eval(u)
-    }
-
-    #[inline]
-    fn slope_scan(self, profile: &Profile) -> SlopeScan<'_> {
-        SlopeScan::Eval(profile)
+    fn scan(self, profile: &Profile) -> ProfileScan<'_> {
+        ProfileScan::Eval(profile)
     }
 }
 
@@ -147,14 +134,14 @@ impl Scan {
         let (lo, hi) = profile.domain();
         let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
         // One plain loop (Scan::of 1.00 -> 0.75 M instructions on the EN 15302 rail): the
-        // samples increase, so the profile is evaluated from a cursor (the same values as
+        // samples increase, so the profile is evaluated by a scan (the same values as
         // `eval`), without the second derivative; `i as f64` is counted in floating point
         // (exact below 2^53), not converted from the index each time.
         let (width, count) = (hi - lo, n as f64);
         // Filled in place (no capacity tested per sample).
         let mut points = vec![[0.0; 2]; n + 1];
         let mut steep = vec![false; n + 1];
-        let mut scan = eval.slope_scan(profile);
+        let mut scan = eval.scan(profile);
         let mut i = 0.0;
         for (point, steep) in points.iter_mut().zip(&mut steep) {
             let u = lo + width * i / count;
@@ -212,9 +199,9 @@ impl PlacedRail {
             });
         }
         // The scan and the tables evaluate the profile at increasing `u`: a sampled one
-        // from a cursor, a built-in one as everywhere (one dispatch here, not per point).
+        // walked forward, a built-in one as everywhere (one dispatch here, not per point).
         if profile.is_sampled() {
-            PlacedRail::place_with(profile, profile_inclination, layout, FromCursor)
+            PlacedRail::place_with(profile, profile_inclination, layout, Walked)
         } else {
             PlacedRail::place_with(profile, profile_inclination, layout, Direct)
         }
@@ -460,7 +447,7 @@ impl PlacedRail {
     }
 
     /// [`PlacedRail::invert`] evaluating the profile by `eval` (`Profile::eval` or the
-    /// same bits from a cursor, for the tables built at increasing `y`).
+    /// same bits from a scan, for the tables built at increasing `y`).
     #[inline]
     fn invert_with(&self, y: f64, u: f64, eval: impl FnMut(f64) -> [f64; 3]) -> (f64, RailPoint) {
         let (u, value, _) = self.newton(y, u, eval);
@@ -530,9 +517,9 @@ impl PlacedRail {
         // at the first).
         let (cos, sin) = self.cos_sin();
         let mut guess = (y_lo - self.frame.translation.x) / cos;
-        // The entries increase in `y`, so in `u`: the profile from a cursor.
-        let mut cursor = Cursor::default();
-        let mut eval = |u| eval.eval(&self.profile, &mut cursor, u);
+        // The entries increase in `y`, so in `u`: the profile by a scan.
+        let mut scan = eval.scan(&self.profile);
+        let mut eval = |u| scan.eval(u);
         self.inverse = (0..=n)
             .map(|i| {
                 let y = if i == n { y_hi } else { y_lo + h * i as f64 };

@@ -2,7 +2,7 @@
 //! module's docs for what is tabulated and what falls back to the inversion).
 
 use super::{PlacedRail, RailPoint, ScanEval};
-use crate::profile::Cursor;
+use crate::profile::ProfileScan;
 use crate::profile::bounds::BOUND_PAD;
 use std::sync::OnceLock;
 
@@ -172,28 +172,28 @@ impl PlacedRail {
     /// The height `Z` at `y`, the `z` of [`PlacedRail::at`] to the bit without its slope
     /// and curvature (a sixth of its work on a tabulated piece): what the height table is
     /// filled with; `None` outside [`PlacedRail::y_range`]. For a scan at increasing `y`,
-    /// the profile is evaluated from `cursor` (see [`Cursor`]) where the rail is inverted;
-    /// any `y` is allowed.
+    /// the profile is evaluated by `scan` (of this rail's profile) where the rail is
+    /// inverted; any `y` is allowed.
     #[inline]
-    pub(in crate::track) fn height_from(&self, cursor: &mut Cursor, y: f64) -> Option<f64> {
+    pub(in crate::track) fn height_from(&self, scan: &mut ProfileScan, y: f64) -> Option<f64> {
         let (y_lo, y_hi) = self.y_range();
         if !(y_lo..=y_hi).contains(&y) {
             return None;
         }
         Some(match self.plain_piece(y) {
             Some((c, f)) => quintic_z(*c, f),
-            None => self.untabulated_height(cursor, y),
+            None => self.untabulated_height(scan, y),
         })
     }
 
     /// The `z` of [`PlacedRail::untabulated_at`] to the bit, the profile evaluated from
-    /// `cursor` where the rail is inverted.
+    /// `scan` where the rail is inverted.
     #[inline(never)]
-    fn untabulated_height(&self, cursor: &mut Cursor, y: f64) -> f64 {
+    fn untabulated_height(&self, scan: &mut ProfileScan, y: f64) -> f64 {
         match self.split_part(y) {
             Some((c, g)) => quintic_z(*c, g),
             None => {
-                let eval = |u| self.profile.eval_from(cursor, u);
+                let eval = |u| scan.eval(u);
                 self.invert_with(y, self.guess(y), eval).1.z
             }
         }
@@ -303,9 +303,9 @@ impl PlacedRail {
             .map(|u| self.point_of(u)[0])
             .collect();
         // A sampled rail's knots `(Y, u)` (its joints are among them); an analytic rail has
-        // none. The knots increase: their heights from a cursor (the value only).
+        // none. The knots increase: their heights by a scan (the value only).
         let mut knots: Vec<(f64, f64)> = if self.profile.is_sampled() {
-            let mut scan = eval.slope_scan(&self.profile);
+            let mut scan = eval.scan(&self.profile);
             self.profile
                 .breaks()
                 .into_iter()
@@ -319,16 +319,16 @@ impl PlacedRail {
         };
         knots.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut next_knot = 0;
-        // The nodes increase in `y`, so in `u`: the profile from a cursor (the same bits).
-        let mut cursor = Cursor::default();
+        // The nodes increase in `y`, so in `u`: the profile by a scan (the same bits).
+        let mut scan = eval.scan(&self.profile);
         // The node at `y`; the nodes' `y_lo + h i` each made once, for the node and for the
         // ends of its pieces.
         let mut node = |y: f64| {
-            let eval = |u| eval.eval(&self.profile, &mut cursor, u);
+            let eval = |u| scan.eval(u);
             self.invert_with(y, self.guess(y), eval).1
         };
-        // The knots that split pieces increase too: a cursor of their own.
-        let mut knot_cursor = Cursor::default();
+        // The knots that split pieces increase too: a scan of their own.
+        let mut knot_scan = eval.scan(&self.profile);
         let steep = |p: &RailPoint| !(p.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && p.z.is_finite());
         // A piece holds at most one split, at a knot of its own inside it: the knots on the
         // surface bound the splits.
@@ -364,8 +364,7 @@ impl PlacedRail {
                     match (inside.next(), inside.next()) {
                         (None, _) => quintic_piece(a, b, h, 1.0),
                         (Some((t_knot, u)), None) => {
-                            let k =
-                                self.surface_from(u, eval.eval(&self.profile, &mut knot_cursor, u));
+                            let k = self.surface_from(u, knot_scan.eval(u));
                             self.split_piece(a, b, t_knot, k, &mut splits)
                         }
                         (Some(_), Some(_)) => [f64::NAN; 6],

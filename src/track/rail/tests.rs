@@ -138,15 +138,15 @@ fn heights_are_the_surface_heights_to_the_bit() {
         let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.y_range();
         let n = 20_000;
-        // At increasing `y` from one cursor, as the table is filled.
-        let mut cursor = Cursor::default();
+        // At increasing `y` from one scan, as the table is filled.
+        let mut scan = rail.profile().scan();
         for i in 0..=n {
             let y = lo + (hi - lo) * f64::from(i) / f64::from(n);
             let z = rail.at(y).map(|p| p.z.to_bits());
-            let height = rail.height_from(&mut cursor, y);
+            let height = rail.height_from(&mut scan, y);
             assert_eq!(height.map(f64::to_bits), z, "y = {y}");
         }
-        let height_at = |y| rail.height_from(&mut Cursor::default(), y);
+        let height_at = |y| rail.height_from(&mut rail.profile().scan(), y);
         assert_eq!(height_at(lo - 1e-9), None);
         assert_eq!(height_at(hi + 1e-9), None);
     }
@@ -167,7 +167,7 @@ fn the_height_table_interpolates_the_rail_heights_bit_for_bit() {
         let step = (hi - lo) / n as f64;
         let entry = |i: usize| {
             let y = (lo + i.min(n) as f64 * step).min(hi);
-            rail.height_from(&mut Cursor::default(), y).unwrap()
+            rail.height_from(&mut rail.profile().scan(), y).unwrap()
         };
         let m = 50_000;
         for k in 0..=m {
@@ -262,11 +262,11 @@ fn height_table_minimum_lies_below_every_height_of_the_interval() {
     }
 }
 
-/// The placement of a sampled rail, whose scan and tables read the profile from a cursor,
+/// The placement of a sampled rail, whose scan and tables read the profile by a walk along its spline,
 /// is the placement from `Profile::eval` at every point, to the bit: the same top, gauge
 /// point, inverse table, quintic pieces, split pieces and heights.
 #[test]
-fn sampled_placement_from_a_cursor_is_the_placement_from_eval() {
+fn sampled_placement_from_a_walk_is_the_placement_from_eval() {
     let layout = paper_layout();
     let fast = PlacedRail::place(sampled_uic60(), Inclination::VERTICAL, &layout).unwrap();
     let slow =
