@@ -302,22 +302,7 @@ impl PlacedRail {
             .into_iter()
             .map(|u| self.point_of(u)[0])
             .collect();
-        // A sampled rail's knots `(Y, u)` (its joints are among them); an analytic rail has
-        // none. The knots increase: their heights by a scan (the value only).
-        let mut knots: Vec<(f64, f64)> = if self.profile.is_sampled() {
-            let mut scan = eval.scan(&self.profile);
-            self.profile
-                .breaks()
-                .into_iter()
-                .map(|u| {
-                    let [v, _] = scan.eval_slope(u);
-                    (self.to_side(self.rotated_point(u, v))[0], u)
-                })
-                .collect()
-        } else {
-            Vec::new()
-        };
-        knots.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let knots = self.knots_by_y(eval);
         let mut next_knot = 0;
         // The nodes increase in `y`, so in `u`: the profile by a scan (the same bits).
         let mut scan = eval.scan(&self.profile);
@@ -382,6 +367,27 @@ impl PlacedRail {
             value_jump: crate::track::wheel::value_jump(&self.profile),
         };
         self.splits = splits;
+    }
+
+    /// A sampled rail's knots `(Y, u)` by increasing `Y` (its joints are among them); an
+    /// analytic rail has none. The knots increase: their heights by a scan (the value
+    /// only).
+    fn knots_by_y(&self, eval: impl ScanEval) -> Vec<(f64, f64)> {
+        if !self.profile.is_sampled() {
+            return Vec::new();
+        }
+        let mut scan = eval.scan(&self.profile);
+        let mut knots: Vec<(f64, f64)> = self
+            .profile
+            .breaks()
+            .into_iter()
+            .map(|u| {
+                let [v, _] = scan.eval_slope(u);
+                (self.to_side(self.rotated_point(u, v))[0], u)
+            })
+            .collect();
+        knots.sort_by(|a, b| a.0.total_cmp(&b.0));
+        knots
     }
 
     /// The piece from nodes `a` to `b` split at the knot `k` (its surface point) of a
