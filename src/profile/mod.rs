@@ -215,7 +215,7 @@ impl Profile {
             Shape::Uic60 => uic60::eval(u),
             Shape::Sampled(sp) => {
                 let (lo, hi) = sp.domain();
-                sp.eval(u.clamp(lo, hi))
+                sp.eval_inside(u.clamp(lo, hi))
             }
         }
     }
@@ -230,19 +230,14 @@ impl Profile {
         }
     }
 
-    /// [`Profile::eval`] to the bit, for a scan at increasing `u`: a sampled profile's
-    /// spline carries its interval along in `cursor` (see [`Cursor`]) instead of looking it
-    /// up. Any `u` is allowed; one below the previous takes the lookup.
-    #[inline]
-    pub(crate) fn eval_from(&self, cursor: &mut Cursor, u: f64) -> [f64; 3] {
+    /// A scan of the profile at increasing `u` ([`ProfileScan`]): [`Profile::eval`] to the
+    /// bit.
+    pub(crate) fn scan(&self) -> ProfileScan<'_> {
         match &self.shape {
-            Shape::Sampled(sp) => {
-                let (lo, hi) = sp.domain();
-                sp.eval_walk(&mut cursor.interval, u.clamp(lo, hi))
-            }
+            Shape::Sampled(sp) => ProfileScan::Walk(sp.walk_from_start(), sp.domain()),
             // Through `eval`, not its arms: a second caller of `s1002::eval` would keep it
             // from being inlined into `eval`, which the gap calls most.
-            _ => self.eval(u),
+            _ => ProfileScan::Eval(self),
         }
     }
 
@@ -308,12 +303,12 @@ impl Profile {
     /// Samples the profile every `step_mm` over its domain (both ends included), plus the
     /// section joints, as `[u, v, tan_gamma, convex_curvature]` rows.
     pub fn sample(&self, step_mm: f64) -> Vec<[f64; 4]> {
-        // The positions increase: a scan from a cursor (the same values as `eval`).
-        let mut cursor = Cursor::default();
+        // The positions increase: a scan (the same values as `eval`).
+        let mut scan = self.scan();
         self.sample_positions(step_mm)
             .into_iter()
             .map(|u| {
-                let [v, d1, d2] = self.eval_from(&mut cursor, u);
+                let [v, d1, d2] = scan.eval(u);
                 // `tan_gamma(u)` from the slope just evaluated (the same number).
                 let tan_gamma = match self.kind {
                     ProfileKind::Wheel => -d1,
@@ -337,11 +332,41 @@ impl Profile {
     }
 }
 
-/// Where a scan along a profile is (see [`Profile::eval_from`]): the spline interval of its
-/// last evaluation. A new cursor starts at the first interval.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Cursor {
-    interval: usize,
+/// A scan of a profile at increasing `u` ([`Profile::scan`]): a sampled profile's spline
+/// walked forward from its last interval ([`spline::Walk`]: the same interval as the lookup
+/// of `eval`, found in about half its work, the spline's slices held by the scan, which a
+/// loop keeps in registers), another profile evaluated. Any `u` is allowed; one below the
+/// previous takes the lookup.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum ProfileScan<'a> {
+    /// The spline's walk and its domain.
+    Walk(spline::Walk<'a>, (f64, f64)),
+    /// The profile itself.
+    Eval(&'a Profile),
+}
+
+impl ProfileScan<'_> {
+    /// `[v, v']` at `u`: the first two numbers of [`Profile::eval`] to the bit, without the
+    /// second derivative.
+    #[inline(always)]
+    pub(crate) fn eval_slope(&mut self, u: f64) -> [f64; 2] {
+        match self {
+            ProfileScan::Walk(walk, (lo, hi)) => walk.eval_slope(u.clamp(*lo, *hi)),
+            ProfileScan::Eval(p) => {
+                let [v, d1, _] = p.eval(u);
+                [v, d1]
+            }
+        }
+    }
+
+    /// `[v, v', v'']` at `u`: [`Profile::eval`] to the bit.
+    #[inline(always)]
+    pub(crate) fn eval(&mut self, u: f64) -> [f64; 3] {
+        match self {
+            ProfileScan::Walk(walk, (lo, hi)) => walk.eval(u.clamp(*lo, *hi)),
+            ProfileScan::Eval(p) => p.eval(u),
+        }
+    }
 }
 
 /// Curvature of a graph `v(u)` from its derivatives, positive where the surface is convex
@@ -394,7 +419,7 @@ mod tests {
     #[test]
     fn samples_are_the_profile_at_the_sample_positions() {
         // The same numbers as evaluating each column on its own, to the bit (a sampled
-        // profile's rows come from a cursor).
+        // profile's rows come from a scan).
         for p in built_in_and_sampled() {
             let rows = p.sample(0.7);
             let us = p.sample_positions(0.7);
@@ -413,23 +438,29 @@ mod tests {
         }
     }
 
-    /// A scan from a cursor is `eval` to the bit, built-in and sampled profiles alike, over
-    /// and beyond the domain (clamped), at increasing `u` and stepping back.
+    /// A scan is `eval` to the bit (and its value and slope the first two numbers of
+    /// `eval`), built-in and sampled profiles alike, over and beyond the domain (clamped),
+    /// at increasing `u` and stepping back.
     #[test]
-    fn eval_from_a_cursor_is_eval_to_the_bit() {
+    fn a_scan_is_eval_to_the_bit() {
         for p in built_in_and_sampled() {
             let (lo, hi) = p.domain();
             let n = 20_000;
             let us = (0..=n).map(|k| lo - 1.0 + (hi - lo + 2.0) * f64::from(k) / f64::from(n));
             let back = (0..=n / 10).map(|k| hi - (hi - lo) * f64::from(k) / f64::from(n / 10));
-            let mut cursor = Cursor::default();
+            let (mut scan, mut slopes) = (p.scan(), p.scan());
             for u in us.chain(back) {
-                let (got, want) = (p.eval_from(&mut cursor, u), p.eval(u));
+                let (got, want) = (scan.eval(u), p.eval(u));
                 assert_eq!(
                     got.map(f64::to_bits),
                     want.map(f64::to_bits),
                     "{} {u}",
                     p.name()
+                );
+                let [v, d1] = slopes.eval_slope(u);
+                assert_eq!(
+                    [v, d1].map(f64::to_bits),
+                    [want[0], want[1]].map(f64::to_bits)
                 );
             }
         }

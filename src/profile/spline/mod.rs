@@ -182,42 +182,34 @@ impl SmoothingSpline {
             let s = self.end_slopes[1];
             return [v + s * (x - x1), s, 0.0];
         }
-        self.eval_piece(self.interval(x), x)
+        self.eval_inside(x)
     }
 
-    /// The cubic of interval `i` at `x`: the one formula of every evaluation, so that
-    /// [`eval_walk`](Self::eval_walk) gives the same bits as [`eval`](Self::eval).
+    /// [`eval`](Self::eval) at `x` inside the [`domain`](Self::domain) (or NaN): the
+    /// interval looked up and its cubic evaluated in one function, without the tests for
+    /// extrapolation (a profile clamps to the domain first). [`Profile::eval`](crate::profile::Profile::eval)
+    /// of a sampled profile 139 -> 105 instructions (the EN 15302 process: the gap's 2,583
+    /// evaluations 0.36 -> 0.27 M).
+    #[inline]
+    pub(crate) fn eval_inside(&self, x: f64) -> [f64; 3] {
+        self.eval_piece(self.interval_inline(x), x)
+    }
+
+    /// The cubic of interval `i` at `x`: the one formula of every evaluation, so that a
+    /// [`Walk`] gives the same bits as [`eval`](Self::eval).
     #[inline(always)]
     fn eval_piece(&self, i: usize, x: f64) -> [f64; 3] {
-        let [a, b, c, d] = self.coeffs[i];
-        let t = x - self.knots[i];
-        [
-            a + t * (b + t * (c + t * d)),
-            b + t * (2.0 * c + 3.0 * t * d),
-            2.0 * c + 6.0 * t * d,
-        ]
+        cubic(self.coeffs[i], x - self.knots[i])
     }
 
-    /// [`eval`](Self::eval) at `x` inside the domain (or NaN) for a scan at increasing `x`:
-    /// `*interval` is the interval of the previous `x` (0 to start), stepped forward to the
-    /// last `i` with `knots[i] <= x` instead of the bucket lookup of every `eval` (half its
-    /// work). The same interval, so the same bits as `eval`; an `x` below the previous
-    /// interval, or NaN, takes the lookup.
-    #[inline]
-    pub(crate) fn eval_walk(&self, interval: &mut usize, x: f64) -> [f64; 3] {
-        let knots = &self.knots;
-        let last = knots.len() - 2;
-        let mut i = (*interval).min(last);
-        if knots[i] <= x {
-            while i < last && knots[i + 1] <= x {
-                i += 1;
-            }
-        } else {
-            // A step back, or NaN.
-            i = self.interval_cold(x);
+    /// A scan at increasing `x` from the first interval ([`Walk`]).
+    pub(crate) fn walk_from_start(&self) -> Walk<'_> {
+        Walk {
+            knots: &self.knots,
+            coeffs: &self.coeffs,
+            interval: 0,
+            spline: self,
         }
-        *interval = i;
-        self.eval_piece(i, x)
     }
 
     /// Bounds of `f'` and `f''` over `[lo, hi]` (inside the domain): per cubic piece,
@@ -274,6 +266,12 @@ impl SmoothingSpline {
     /// the last `i < knots.len() - 1` with `knots[i] <= x`.
     #[inline]
     fn interval(&self, x: f64) -> usize {
+        self.interval_inline(x)
+    }
+
+    /// [`interval`](Self::interval), inlined into [`eval_inside`](Self::eval_inside).
+    #[inline(always)]
+    fn interval_inline(&self, x: f64) -> usize {
         let nb = self.buckets.len() - 1;
         let last = self.knots.len() - 2;
         // Saturating float-to-int cast: NaN gives 0, huge values nb. Through i32 (a bucket
@@ -302,6 +300,81 @@ impl SmoothingSpline {
         let lo = self.buckets[k.saturating_sub(1)];
         let hi = self.buckets[(k + 2).min(nb)];
         lo + self.knots[lo + 1..=hi].partition_point(|&knot| knot <= x)
+    }
+}
+
+/// A scan along a spline at increasing `x` ([`SmoothingSpline::walk_from_start`]): the
+/// interval of the previous `x` carried along and stepped forward to the last `i` with
+/// `knots[i] <= x`, instead of the bucket lookup of every [`SmoothingSpline::eval`] (half
+/// its work); the same interval, so the same bits as `eval`; an `x` below the previous
+/// interval, or NaN, takes the lookup. The spline's knots and coefficients are held as
+/// slices of its own, which a loop keeps in registers (through the spline, every
+/// evaluation reloads them after the loop's stores).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Walk<'a> {
+    knots: &'a [f64],
+    coeffs: &'a [[f64; 4]],
+    interval: usize,
+    spline: &'a SmoothingSpline,
+}
+
+impl Walk<'_> {
+    /// The value and slope of [`SmoothingSpline::eval`] at `x` (inside the domain, or NaN):
+    /// the same interval, the same operations, without the second derivative.
+    #[inline(always)]
+    pub(crate) fn eval_slope(&mut self, x: f64) -> [f64; 2] {
+        let i = self.step(x);
+        let [a, b, c, d] = self.coeffs[i];
+        let t = x - self.knots[i];
+        [
+            a + t * (b + t * (c + t * d)),
+            b + t * (2.0 * c + 3.0 * t * d),
+        ]
+    }
+
+    /// [`SmoothingSpline::eval`] at `x` (inside the domain, or NaN): the same interval, the
+    /// same cubic.
+    #[inline(always)]
+    pub(crate) fn eval(&mut self, x: f64) -> [f64; 3] {
+        let i = self.step(x);
+        cubic(self.coeffs[i], x - self.knots[i])
+    }
+
+    /// The interval of `x`, the walk moved to it (the lookup on a step back or NaN).
+    #[inline(always)]
+    fn step(&mut self, x: f64) -> usize {
+        let i = walk_forward(self.knots, self.interval, x)
+            .unwrap_or_else(|| self.spline.interval_cold(x));
+        self.interval = i;
+        i
+    }
+}
+
+/// `[f, f', f'']` of the cubic `a + b t + c t^2 + d t^3` at `t`: the one formula of every
+/// evaluation of a spline piece.
+#[inline(always)]
+fn cubic([a, b, c, d]: [f64; 4], t: f64) -> [f64; 3] {
+    [
+        a + t * (b + t * (c + t * d)),
+        b + t * (2.0 * c + 3.0 * t * d),
+        2.0 * c + 6.0 * t * d,
+    ]
+}
+
+/// The interval of `x` walking forward from the interval `from` (clamped to the last): the
+/// last `i` with `knots[i] <= x`; `None` where `x` is below `knots[from]` (a step back) or
+/// NaN.
+#[inline(always)]
+fn walk_forward(knots: &[f64], from: usize, x: f64) -> Option<usize> {
+    let last = knots.len() - 2;
+    let mut i = from.min(last);
+    if knots[i] <= x {
+        while i < last && knots[i + 1] <= x {
+            i += 1;
+        }
+        Some(i)
+    } else {
+        None
     }
 }
 
@@ -592,17 +665,26 @@ mod tests {
             .chain(ts.iter().copied().rev())
             .chain(scrambled)
             .collect();
-        let mut interval = 0;
+        let mut walk = s.walk_from_start();
         for &t in &order {
-            let (got, want) = (s.eval_walk(&mut interval, t), s.eval(t));
+            let (got, want) = (walk.eval(t), s.eval(t));
             assert_eq!(got.map(f64::to_bits), want.map(f64::to_bits), "t = {t}");
+            // The evaluation inside the domain, likewise.
+            assert_eq!(s.eval_inside(t).map(f64::to_bits), want.map(f64::to_bits));
         }
-        assert!(s.eval_walk(&mut interval, f64::NAN)[0].is_nan());
+        assert!(s.eval_inside(f64::NAN)[0].is_nan());
+        assert!(walk.eval(f64::NAN)[0].is_nan());
         // The walk goes on from the lookup after NaN.
-        assert_eq!(
-            s.eval_walk(&mut interval, b).map(f64::to_bits),
-            s.eval(b).map(f64::to_bits)
-        );
+        assert_eq!(walk.eval(b).map(f64::to_bits), s.eval(b).map(f64::to_bits));
+        // A walk's value and slope, likewise (the same order of points).
+        let mut walk = s.walk_from_start();
+        for &t in &order {
+            let want = s.eval(t);
+            assert_eq!(
+                walk.eval_slope(t).map(f64::to_bits),
+                [want[0], want[1]].map(f64::to_bits)
+            );
+        }
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! module's docs for what is tabulated and what falls back to the inversion).
 
 use super::{PlacedRail, RailPoint, ScanEval};
-use crate::profile::Cursor;
+use crate::profile::ProfileScan;
 use crate::profile::bounds::BOUND_PAD;
 use std::sync::OnceLock;
 
@@ -171,17 +171,32 @@ where
 impl PlacedRail {
     /// The height `Z` at `y`, the `z` of [`PlacedRail::at`] to the bit without its slope
     /// and curvature (a sixth of its work on a tabulated piece): what the height table is
-    /// filled with. `None` outside [`PlacedRail::y_range`].
+    /// filled with; `None` outside [`PlacedRail::y_range`]. For a scan at increasing `y`,
+    /// the profile is evaluated by `scan` (of this rail's profile) where the rail is
+    /// inverted; any `y` is allowed.
     #[inline]
-    pub(in crate::track) fn height_at(&self, y: f64) -> Option<f64> {
+    pub(in crate::track) fn height_from(&self, scan: &mut ProfileScan, y: f64) -> Option<f64> {
         let (y_lo, y_hi) = self.y_range();
         if !(y_lo..=y_hi).contains(&y) {
             return None;
         }
         Some(match self.plain_piece(y) {
             Some((c, f)) => quintic_z(*c, f),
-            None => self.untabulated_at(y).z,
+            None => self.untabulated_height(scan, y),
         })
+    }
+
+    /// The `z` of [`PlacedRail::untabulated_at`] to the bit, the profile evaluated from
+    /// `scan` where the rail is inverted.
+    #[inline(never)]
+    fn untabulated_height(&self, scan: &mut ProfileScan, y: f64) -> f64 {
+        match self.split_part(y) {
+            Some((c, g)) => quintic_z(*c, g),
+            None => {
+                let eval = |u| scan.eval(u);
+                self.invert_with(y, self.guess(y), eval).1.z
+            }
+        }
     }
 
     /// The plain quintic piece of the table at `y` (inside `y_range`) and `y`'s place `f`
@@ -249,6 +264,14 @@ impl PlacedRail {
     /// The surface at `y` (inside `y_range`) from the part of a piece split at a knot, `None`
     /// where `y` is in no such part.
     pub(super) fn split_at(&self, y: f64) -> Option<RailPoint> {
+        let (c, g) = self.split_part(y)?;
+        Some(quintic_point(c, g, self.surface_table.inv_step))
+    }
+
+    /// The quintic of the part of a piece split at a knot that holds `y` (inside
+    /// `y_range`) and `y`'s place in it, `None` where `y` is in no such part.
+    #[inline]
+    fn split_part(&self, y: f64) -> Option<(&[f64; 6], f64)> {
         let table = &self.surface_table;
         let t = (y - table.y0) * table.inv_step;
         let i = t as i32 as usize;
@@ -261,13 +284,14 @@ impl PlacedRail {
         } else {
             (&split.above, f - split.t_knot)
         };
-        (!c[0].is_nan()).then(|| quintic_point(c, g, table.inv_step))
+        (!c[0].is_nan()).then_some((c, g))
     }
 
     /// Fills the quintic table of the surface from exact inversions every
     /// [`SURFACE_TABLE_STEP_MM`]; pieces that are steep, hold a joint of an analytic rail or
     /// several knots of a sampled one are left out (NaN), pieces that hold one knot are split
     /// there (see [`SURFACE_TABLE_MAX_SLOPE`]).
+    #[inline(never)] // called once: its cost stays visible in a profile
     pub(super) fn tabulate_surface(&mut self, eval: impl ScanEval) {
         let (y_lo, y_hi) = self.y_range;
         let n = ((y_hi - y_lo) / SURFACE_TABLE_STEP_MM).floor() as usize;
@@ -278,26 +302,18 @@ impl PlacedRail {
             .into_iter()
             .map(|u| self.point_of(u)[0])
             .collect();
-        // A sampled rail's knots `(Y, u)` (its joints are among them); an analytic rail has
-        // none.
-        let mut knots: Vec<(f64, f64)> = if self.profile.is_sampled() {
-            self.profile
-                .breaks()
-                .into_iter()
-                .map(|u| (self.point_of(u)[0], u))
-                .collect()
-        } else {
-            Vec::new()
-        };
-        knots.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let knots = self.knots_by_y(eval);
         let mut next_knot = 0;
-        // The nodes increase in `y`, so in `u`: the profile from a cursor (the same bits).
-        let mut cursor = Cursor::default();
-        let mut node = |i: usize| {
-            let y = y_lo + h * i as f64;
-            let eval = |u| eval(&self.profile, &mut cursor, u);
+        // The nodes increase in `y`, so in `u`: the profile by a scan (the same bits).
+        let mut scan = eval.scan(&self.profile);
+        // The node at `y`; the nodes' `y_lo + h i` each made once, for the node and for the
+        // ends of its pieces.
+        let mut node = |y: f64| {
+            let eval = |u| scan.eval(u);
             self.invert_with(y, self.guess(y), eval).1
         };
+        // The knots that split pieces increase too: a scan of their own.
+        let mut knot_scan = eval.scan(&self.profile);
         let steep = |p: &RailPoint| !(p.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && p.z.is_finite());
         // A piece holds at most one split, at a knot of its own inside it: the knots on the
         // surface bound the splits.
@@ -308,12 +324,14 @@ impl PlacedRail {
         let mut splits = Vec::with_capacity(on_surface);
         // The nodes are made as the pieces need them, each once: no table of them is kept.
         let mut pieces: Vec<[f64; 6]> = Vec::with_capacity(n);
-        let mut b = node(0);
+        let node_y = |i: usize| y_lo + h * i as f64;
+        let mut yb = node_y(0);
+        let mut b = node(yb);
         for i in 0..n {
-            let a = b;
-            b = node(i + 1);
+            let (a, ya) = (b, yb);
+            yb = node_y(i + 1);
+            b = node(yb);
             let piece = {
-                let (ya, yb) = (y_lo + h * i as f64, y_lo + h * (i + 1) as f64);
                 let holds_joint = joints.iter().any(|&j| (ya..=yb).contains(&j));
                 if holds_joint || steep(&a) || steep(&b) {
                     [f64::NAN; 6]
@@ -330,7 +348,10 @@ impl PlacedRail {
                         .filter(|&(t, _)| t > KNOT_AT_END_T && t < 1.0 - KNOT_AT_END_T);
                     match (inside.next(), inside.next()) {
                         (None, _) => quintic_piece(a, b, h, 1.0),
-                        (Some((t_knot, u)), None) => self.split_piece(a, b, t_knot, u, &mut splits),
+                        (Some((t_knot, u)), None) => {
+                            let k = self.surface_from(u, knot_scan.eval(u));
+                            self.split_piece(a, b, t_knot, k, &mut splits)
+                        }
                         (Some(_), Some(_)) => [f64::NAN; 6],
                     }
                 }
@@ -348,19 +369,39 @@ impl PlacedRail {
         self.splits = splits;
     }
 
-    /// The piece from nodes `a` to `b` split at the knot `u` of a sampled rail, at `t_knot`
-    /// of the piece: its two quintics pushed onto `splits`, and the marker `[NaN, k, ..]`
-    /// that points to them (NaN where the knot is steep).
+    /// A sampled rail's knots `(Y, u)` by increasing `Y` (its joints are among them); an
+    /// analytic rail has none. The knots increase: their heights by a scan (the value
+    /// only).
+    fn knots_by_y(&self, eval: impl ScanEval) -> Vec<(f64, f64)> {
+        if !self.profile.is_sampled() {
+            return Vec::new();
+        }
+        let mut scan = eval.scan(&self.profile);
+        let mut knots: Vec<(f64, f64)> = self
+            .profile
+            .breaks()
+            .into_iter()
+            .map(|u| {
+                let [v, _] = scan.eval_slope(u);
+                (self.to_side(self.rotated_point(u, v))[0], u)
+            })
+            .collect();
+        knots.sort_by(|a, b| a.0.total_cmp(&b.0));
+        knots
+    }
+
+    /// The piece from nodes `a` to `b` split at the knot `k` (its surface point) of a
+    /// sampled rail, at `t_knot` of the piece: its two quintics pushed onto `splits`, and
+    /// the marker `[NaN, k, ..]` that points to them (NaN where the knot is steep).
     fn split_piece(
         &self,
         a: RailPoint,
         b: RailPoint,
         t_knot: f64,
-        u: f64,
+        k: RailPoint,
         splits: &mut Vec<Split>,
     ) -> [f64; 6] {
         let h = SURFACE_TABLE_STEP_MM;
-        let k = self.surface_at(u);
         if !(k.slope.abs() <= SURFACE_TABLE_MAX_SLOPE && k.z.is_finite()) {
             return [f64::NAN; 6];
         }

@@ -138,13 +138,17 @@ fn heights_are_the_surface_heights_to_the_bit() {
         let rail = PlacedRail::place(profile, Inclination::VERTICAL, &paper_layout()).unwrap();
         let (lo, hi) = rail.y_range();
         let n = 20_000;
+        // At increasing `y` from one scan, as the table is filled.
+        let mut scan = rail.profile().scan();
         for i in 0..=n {
             let y = lo + (hi - lo) * f64::from(i) / f64::from(n);
             let z = rail.at(y).map(|p| p.z.to_bits());
-            assert_eq!(rail.height_at(y).map(f64::to_bits), z, "y = {y}");
+            let height = rail.height_from(&mut scan, y);
+            assert_eq!(height.map(f64::to_bits), z, "y = {y}");
         }
-        assert_eq!(rail.height_at(lo - 1e-9), None);
-        assert_eq!(rail.height_at(hi + 1e-9), None);
+        let height_at = |y| rail.height_from(&mut rail.profile().scan(), y);
+        assert_eq!(height_at(lo - 1e-9), None);
+        assert_eq!(height_at(hi + 1e-9), None);
     }
 }
 
@@ -162,8 +166,8 @@ fn the_height_table_interpolates_the_rail_heights_bit_for_bit() {
         let n = ((hi - lo) / HEIGHT_TABLE_STEP_MM).ceil().max(1.0) as usize;
         let step = (hi - lo) / n as f64;
         let entry = |i: usize| {
-            rail.height_at((lo + i.min(n) as f64 * step).min(hi))
-                .unwrap()
+            let y = (lo + i.min(n) as f64 * step).min(hi);
+            rail.height_from(&mut rail.profile().scan(), y).unwrap()
         };
         let m = 50_000;
         for k in 0..=m {
@@ -258,16 +262,15 @@ fn height_table_minimum_lies_below_every_height_of_the_interval() {
     }
 }
 
-/// The placement of a sampled rail, whose scan and tables read the profile from a cursor,
+/// The placement of a sampled rail, whose scan and tables read the profile by a walk along its spline,
 /// is the placement from `Profile::eval` at every point, to the bit: the same top, gauge
 /// point, inverse table, quintic pieces, split pieces and heights.
 #[test]
-fn sampled_placement_from_a_cursor_is_the_placement_from_eval() {
+fn sampled_placement_from_a_walk_is_the_placement_from_eval() {
     let layout = paper_layout();
     let fast = PlacedRail::place(sampled_uic60(), Inclination::VERTICAL, &layout).unwrap();
-    let eval = |p: &Profile, _: &mut Cursor, u| p.eval(u);
     let slow =
-        PlacedRail::place_with(sampled_uic60(), Inclination::VERTICAL, &layout, eval).unwrap();
+        PlacedRail::place_with(sampled_uic60(), Inclination::VERTICAL, &layout, Direct).unwrap();
     let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
     assert_eq!(bits(&fast.top()), bits(&slow.top()));
     assert_eq!(bits(&fast.gauge_point()), bits(&slow.gauge_point()));
