@@ -38,7 +38,7 @@
 //! towards the field side, refined by bisection to 1e-9 mm (`BISECTION_TOLERANCE_MM`). A sampled
 //! (spline) profile is measured as the run fits it, with the scene's smoothing filter.
 
-use crate::profile::{Cursor, Profile, ProfileKind};
+use crate::profile::{Profile, ProfileKind};
 use crate::track::TAPING_LINE_FROM_INNER_FACE_MM;
 use std::fmt;
 
@@ -173,12 +173,12 @@ pub fn flange_dimensions(wheel: &Profile) -> Result<FlangeDimensions, DimensionE
 fn flange_tip(wheel: &Profile, s_min: f64) -> f64 {
     let n = (-s_min / SCAN_STEP_MM).ceil().max(1.0) as usize;
     let s_at = |i: usize| s_min + (-s_min) * i as f64 / n as f64;
-    // The samples increase: evaluated from a cursor, to the bit as `eval` (with the scan of
-    // `first_descent`, the dimensions of the 1001-point R-UIC519A wheel take 0.23 M
+    // The samples increase: a scan along the profile, to the bit as `eval` (with the scan of
+    // `first_descent`, the dimensions of the 1001-point R-UIC519A wheel take 0.21 M
     // instructions instead of 0.32 M).
-    let mut cursor = Cursor::default();
+    let mut scan = wheel.scan();
     let best = (0..=n)
-        .map(|i| (i, wheel.eval_from(&mut cursor, s_at(i))[0]))
+        .map(|i| (i, scan.eval_slope(s_at(i))[0]))
         .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a })
         .0;
     let (lo, hi) = (s_at(best.saturating_sub(1)), s_at((best + 1).min(n)));
@@ -204,12 +204,12 @@ fn first_descent(wheel: &Profile, from: f64, level: f64) -> f64 {
     let above = |s: f64| wheel.eval(s)[0] >= level;
     let n = (-from / SCAN_STEP_MM).ceil().max(1.0) as usize;
     let s_at = |i: usize| from + (-from) * i as f64 / n as f64;
-    // The samples increase: from a cursor (see `flange_tip`).
-    let mut cursor = Cursor::default();
+    // The samples increase: a scan along the profile (see `flange_tip`).
+    let mut scan = wheel.scan();
     let i = (1..=n)
         .find(|&i| {
             // Not `above`: below the level, or NaN.
-            let v = wheel.eval_from(&mut cursor, s_at(i))[0];
+            let v = scan.eval_slope(s_at(i))[0];
             v < level || v.is_nan()
         })
         .unwrap_or(n);
