@@ -101,9 +101,7 @@ pub fn rail_profile(rail: &PlacedRail, side: Side) -> Result<Table, TableError> 
     let mut curvature = Vec::with_capacity(us.len());
     let mut face = Vec::with_capacity(us.len());
     let (y_lo, y_hi) = rail.y_range();
-    for &u in &us {
-        let q = rail.surface_at(u);
-        let y_side = rail.point_of(u)[0];
+    for (y_side, q) in rail.surface_along(&us) {
         y.push(y_side);
         z.push(q.z);
         // Only the running surface has a slope that Z(Y) can carry; the flanks beyond it
