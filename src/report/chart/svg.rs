@@ -453,6 +453,13 @@ mod tests {
         let sub = root.margin(7, 11, 13, 17);
         sub.draw(&PathElement::new(vec![(0, 0), (20, 30)], BLACK))
             .unwrap();
+        draw_texts(root);
+    }
+
+    /// Text in every anchor, rotation, style and colour, with characters to escape.
+    fn draw_texts<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>) {
+        let grey = RGBColor(0x44, 0x44, 0x44);
+        let blue = RGBColor(0x1f, 0x77, 0xb4);
         let texts = [
             "plain",
             "lateral shift y_ws (mm)",
