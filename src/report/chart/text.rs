@@ -10,7 +10,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{ChartError, FONT_FAMILY, drawing_error};
+use super::{ChartError, FONT_FAMILY, drawing_error, ensure_font};
 
 /// Alignment along or across a line of text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,15 +59,43 @@ impl TextSpec {
     }
 
     fn font(&self) -> FontDesc<'static> {
-        FontDesc::new(FontFamily::Name(FONT_FAMILY), self.px, FontStyle::Normal)
+        self.with_font(FontDesc::clone)
+    }
+
+    /// Calls `f` with the font of this size, made once per size: making one looks the family
+    /// up in plotters' font table and copies the font's parsed tables, ~2.4 k instructions,
+    /// which the EN 15302 E1 comparison scene's figure (`../shared/peer/awrcc/compare.sh`)
+    /// paid 36 times (its SVG 1.788 -> 1.754 M instructions so). `f` must not make fonts
+    /// itself.
+    fn with_font<T>(&self, f: impl FnOnce(&FontDesc<'static>) -> T) -> T {
+        let key = self.px.to_bits();
+        FONTS.with(|fonts| {
+            if let Some((_, font)) = fonts.borrow().iter().find(|(k, _)| *k == key) {
+                return f(font);
+            }
+            let font = FontDesc::new(FontFamily::Name(FONT_FAMILY), self.px, FontStyle::Normal);
+            // Keep only a font that found the bundled font file (made before it was
+            // registered, it would fail for good).
+            if ensure_font().is_err() {
+                return f(&font);
+            }
+            let mut kept = fonts.borrow_mut();
+            if kept.len() >= FONTS_CAPACITY {
+                kept.clear();
+            }
+            kept.push((key, font));
+            drop(kept);
+            let kept = fonts.borrow();
+            let (_, font) = kept.last().expect("just pushed");
+            f(font)
+        })
     }
 
     /// Advance width and line height in pixels (memoised: charts measure the same labels
     /// many times, and the layout engine is the costliest part of drawing text).
     pub(super) fn size(&self, text: &str) -> (i32, i32) {
         memo(&SIZES, text, self.px, || {
-            self.font()
-                .box_size(text)
+            self.with_font(|font| font.box_size(text))
                 .map(|(w, h)| (w as i32, h as i32))
                 .unwrap_or((0, 0))
         })
@@ -127,7 +155,7 @@ pub(super) fn draw_text<DB: DrawingBackend>(
     // texts of the EN 15302 E1 comparison scene's figure (`../shared/peer/awrcc/compare.sh`)
     // took 0.55 M instructions with the builder, 0.35 M so.
     let font = if place.upwards {
-        spec.font().transform(FontTransform::Rotate270)
+        spec.with_font(|font| font.transform(FontTransform::Rotate270))
     } else {
         spec.font()
     };
@@ -195,9 +223,14 @@ fn glyph_offsets(text: &str, spec: TextSpec) -> Vec<(String, i32)> {
 type Memo<T> = std::cell::RefCell<std::collections::HashMap<(String, u64), T>>;
 
 thread_local! {
+    static FONTS: std::cell::RefCell<Vec<(u64, FontDesc<'static>)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
     static SIZES: Memo<(i32, i32)> = Memo::default();
     static GLYPHS: Memo<Vec<(String, i32)>> = Memo::default();
 }
+
+/// Fonts (sizes) kept at once: a figure uses a handful.
+const FONTS_CAPACITY: usize = 16;
 
 /// Entries a memo holds before it starts afresh (a few figures' worth of labels).
 const MEMO_CAPACITY: usize = 4096;

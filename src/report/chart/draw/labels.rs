@@ -12,6 +12,7 @@ use super::super::text::{Align, Place, TextMode, draw_text};
 use super::super::{Chart, ChartError, drawing_error};
 use super::annotations::vline_spec;
 use super::occupancy::Marks;
+use super::series::Drawn;
 use super::{Ctx, MARKER_PX, PxRect};
 
 /// Gap between a marker line and its label, and between a label and the plot's frame.
@@ -52,13 +53,14 @@ impl Label {
 /// lines, the labels and their leader lines.
 pub(super) fn lay_out<DB: DrawingBackend>(
     chart: &Chart,
+    drawn: &[Drawn],
     ctx: &Ctx<'_, DB>,
     xmap: AxisMap,
     ymap: AxisMap,
     frame: &Frame,
     plot: PxRect,
 ) -> (Vec<Label>, Marks) {
-    let mut grid = Marks::of_data(chart, ctx, xmap, ymap, frame, plot);
+    let mut grid = Marks::of_data(chart, drawn, ctx, xmap, ymap, frame, plot);
     let mut labels = Vec::new();
     // The marker lines' own cells are left out while their labels are placed (a label sits
     // beside its line, nearer than the grid's clearance); the others are kept clear of

@@ -6,7 +6,7 @@ use plotters::prelude::*;
 use super::super::geometry::{AxisMap, Frame, Point};
 use super::super::{Chart, LegendPosition};
 use super::annotations::off_chart_runs;
-use super::series::drawn;
+use super::series::Drawn;
 use super::{Ctx, LEGEND_INSET_PX, LINE_WIDTH, MARKER_PX, OFF_CHART_MARK_PX, PxRect};
 
 /// Least distance in pixels between a legend and anything drawn in the plot.
@@ -104,9 +104,11 @@ impl Marks {
 
     /// The cells near what the plot's data draws: every line (sampled every
     /// [`SEGMENT_SAMPLE_PX`]), point and marker, and the off-chart marks, within
-    /// [`LEGEND_CLEARANCE_PX`] plus the line width or marker size.
+    /// [`LEGEND_CLEARANCE_PX`] plus the line width or marker size. `drawn` is what each
+    /// series draws ([`drawn`](super::series::drawn)), in series order.
     pub(super) fn of_data<DB: DrawingBackend>(
         chart: &Chart,
+        drawn: &[Drawn],
         ctx: &Ctx<'_, DB>,
         xmap: AxisMap,
         ymap: AxisMap,
@@ -119,8 +121,7 @@ impl Marks {
             (f64::from(x), f64::from(y))
         };
         let line_radius = f64::from(LINE_WIDTH);
-        for s in &chart.series {
-            let d = drawn(s, xmap, ymap, frame, |p| ctx.backend_coord(&p));
+        for d in drawn {
             for line in &d.lines {
                 if line.len() == 1 {
                     grid.mark(to_px(line[0]), 2.0);

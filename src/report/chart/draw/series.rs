@@ -174,16 +174,16 @@ pub(super) fn thinned(line: &[Point], px: impl Fn(Point) -> (i32, i32)) -> Vec<P
     keep.into_iter().map(|i| line[i]).collect()
 }
 
+/// Draws `series` (the `position`th of its chart), `drawn` being what it draws ([`drawn`]
+/// on `ctx`'s frame).
 pub(super) fn draw_series<DB: DrawingBackend>(
     ctx: &mut Ctx<'_, DB>,
     series: &Series,
     position: usize,
-    xmap: AxisMap,
-    ymap: AxisMap,
-    frame: &Frame,
+    drawn: Drawn,
 ) -> Result<(), ChartError> {
     let look = Look::of(series, position);
-    let Drawn { lines, markers } = drawn(series, xmap, ymap, frame, |p| ctx.backend_coord(&p));
+    let Drawn { lines, markers } = drawn;
     // A point of a line whose neighbours are missing would be invisible: show it as a dot.
     let (long, single): (Vec<_>, Vec<_>) = lines.into_iter().partition(|l| l.len() >= 2);
     if series.dashed {
