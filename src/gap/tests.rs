@@ -389,3 +389,35 @@ fn four_gaps_at_once_are_at_to_the_bit() {
         assert!(nones > 0 && somes > 0);
     }
 }
+
+/// The breaks sorted by a check and two insertions are those `sort_by(f64::total_cmp)`
+/// gives, bit for bit: increasing, decreasing and unordered inputs, ends inside, outside
+/// and equal to a break, signed zeros.
+#[test]
+fn breaks_sorted_with_their_ends_are_those_of_a_sort() {
+    let inputs: [&[f64]; 6] = [
+        &[],
+        &[1.0, 2.0, 2.0, 5.0],
+        &[5.0, 2.0, 2.0, 1.0],
+        &[3.0, 1.0, 2.0],
+        &[-0.0, 0.0, 1.0],
+        &[0.0, -0.0],
+    ];
+    let ends = [
+        [0.5, 6.0],
+        [2.0, 2.0],
+        [-1.0, -0.0],
+        [7.0, 0.0],
+        [0.0, -0.0],
+    ];
+    for values in inputs {
+        for extra in ends {
+            let mut sorted = values.to_vec();
+            sorted.extend(extra);
+            sorted.sort_by(f64::total_cmp);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            let got = super::sorted_with(values.to_vec(), extra);
+            assert_eq!(bits(&got), bits(&sorted), "{values:?} with {extra:?}");
+        }
+    }
+}
