@@ -459,6 +459,31 @@ impl SideGap<'_> {
         pose: &SidePose,
         scanned: &mut Scanned,
     ) -> (f64, bool) {
+        // Exactly no roll: the identity of the rotation is what the fast form needs.
+        #[allow(clippy::float_cmp)]
+        let level = pose.sin == 0.0 && pose.cos == 1.0;
+        if level {
+            self.block_gaps_posed::<true>(range, pose, scanned)
+        } else {
+            self.block_gaps_posed::<false>(range, pose, scanned)
+        }
+    }
+
+    /// [`Self::block_gaps`]; `LEVEL`: the pose has no roll (`sin phi = 0`, `cos phi = 1`,
+    /// the level wheelset's), and a wheel point lies at `Y = delta + Yw`, `z = Zw`. Those
+    /// are the gaps [`SidePose::apply`] gives, to the bit: `cos Yw` is `Yw`, `sin Zw` and
+    /// `sin Yw` are zeros, which leave a sum unchanged but for the sign of a zero `Y`
+    /// (`delta + Yw = -0` needs both -0), and the height of a signed zero is the same
+    /// height. Four multiplications and two additions fewer a group of four samples, and
+    /// a loop the compiler keeps in registers: on the EN 15302 E1 scene the sweep's scans
+    /// (with their blocks' gaps) 1.54 -> 1.33 M instructions.
+    #[inline(always)]
+    fn block_gaps_posed<const LEVEL: bool>(
+        &self,
+        range: std::ops::Range<usize>,
+        pose: &SidePose,
+        scanned: &mut Scanned,
+    ) -> (f64, bool) {
         count!(CoarseSample, range.len());
         let heights = self.rail.heights();
         let lanes = heights.lanes();
@@ -473,7 +498,11 @@ impl SideGap<'_> {
         for (g4, c4) in quads.chunks_exact_mut(4).zip(coarse.chunks_exact(4)) {
             let yw = f64x4::from([c4[0][1], c4[1][1], c4[2][1], c4[3][1]]);
             let zw = f64x4::from([c4[0][2], c4[1][2], c4[2][2], c4[3][2]]);
-            let [y, z] = pose.apply_to(yw, zw);
+            let [y, z] = if LEVEL {
+                [f64x4::splat(pose.delta) + yw, zw]
+            } else {
+                pose.apply_to(yw, zw)
+            };
             let (zr, on_table) = lanes.height(y);
             let g = on_table.select(z - zr, inf);
             g4.copy_from_slice(&g.to_array());
