@@ -168,16 +168,14 @@ impl SideGap<'_> {
         if cells.is_empty() {
             return;
         }
-        let gap = |i: usize, scanned: &Scanned| {
-            if scanned.evaluated(i / SCAN_BLOCK) {
-                scanned.gaps[i]
-            } else {
-                self.coarse_gap(i, pose)
-            }
+        // The sample after the last cell (the next block's first, or this block's last).
+        let end = if scanned.evaluated(cells.end / SCAN_BLOCK) {
+            scanned.gaps[cells.end]
+        } else {
+            self.coarse_gap(cells.end, pose)
         };
         // The whole block at once: its lowest sample and the next block's first, less the
         // cushion over the box.
-        let end = gap(cells.end, scanned);
         let lowest = scanned.block_min[b].min(end);
         if lowest >= t {
             if pose_box.cushions[b].is_nan() {
@@ -192,9 +190,16 @@ impl SideGap<'_> {
             }
         }
         let mut cushion = None;
+        let last_cell = cells.end - 1;
         for i in cells {
+            // The block's own gaps, then `end`: one test of which block a sample is in
+            // less per cell.
             let ga = scanned.gaps[i];
-            let gb = gap(i + 1, scanned);
+            let gb = if i == last_cell {
+                end
+            } else {
+                scanned.gaps[i + 1]
+            };
             let (lo, t) = (ga.min(gb), pass.threshold());
             // Both samples over the rail: the cell does not leave it between them.
             if ga.max(gb) < f64::INFINITY

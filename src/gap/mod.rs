@@ -221,6 +221,32 @@ fn sample_blocks(coarse: &[[f64; 3]], out: &mut Vec<[f64; 4]>) {
     }));
 }
 
+/// `values` and `extra` sorted increasing, as `sort_by(f64::total_cmp)` sorts them (numbers
+/// equal under `total_cmp` have the same bits, so there is one such order). A profile's
+/// breaks come in order (the rail's may come decreasing in the side frame): those are
+/// checked, turned where they decrease and `extra` inserted, instead of a merge sort of the
+/// whole; any other order is sorted. On the EN 15302 E1 pair (two 1001-point splines) the
+/// two sorts of a side took 84 k instructions.
+fn sorted_with(mut values: Vec<f64>, extra: [f64; 2]) -> Vec<f64> {
+    // A plain `<` between neighbours first (breaks differ): numbers in increasing order
+    // are in `total_cmp`'s order too; the slower `total_cmp` decides only where that fails.
+    let le = |a: &f64, b: &f64| a.total_cmp(b).is_le();
+    let increasing = |v: &[f64]| v.windows(2).all(|w| w[0] < w[1]) || v.is_sorted_by(le);
+    if !increasing(&values) && values.windows(2).all(|w| w[0] > w[1]) {
+        values.reverse();
+    }
+    if !increasing(&values) {
+        values.extend(extra);
+        values.sort_by(f64::total_cmp);
+        return values;
+    }
+    for x in extra {
+        let at = values.partition_point(|v| v.total_cmp(&x).is_lt());
+        values.insert(at, x);
+    }
+    values
+}
+
 /// A bracket `[lo, hi]` in `s` around a coarse minimum, to be refined.
 pub(crate) type Basin = (f64, f64);
 impl<'a> SideGap<'a> {
@@ -280,23 +306,16 @@ impl<'a> SideGap<'a> {
             rail_break_ys: {
                 // The ends of the running surface too: beyond them the gap is undefined.
                 let (y_lo, y_hi) = pair.rail.y_range();
-                let mut ys: Vec<f64> = pair
+                let ys: Vec<f64> = pair
                     .rail
                     .profile()
                     .breaks()
                     .into_iter()
                     .map(|u| pair.rail.point_of(u)[0])
-                    .chain([y_lo, y_hi])
                     .collect();
-                ys.sort_by(f64::total_cmp);
-                ys
+                sorted_with(ys, [y_lo, y_hi])
             },
-            wheel_breaks: {
-                let mut b = pair.wheel.profile().breaks();
-                b.extend([lo, hi]);
-                b.sort_by(f64::total_cmp);
-                b
-            },
+            wheel_breaks: sorted_with(pair.wheel.profile().breaks(), [lo, hi]),
         };
         let (mut cert_blocks, mut group_extents) = (Vec::new(), Vec::new());
         side.certified_blocks(&mut cert_blocks);

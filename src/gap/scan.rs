@@ -244,18 +244,100 @@ fn lower(low: f64, g: f64) -> f64 {
     if g < low { g } else { low }
 }
 
-/// Keeps the coarse minimum `(g, i)` among the lowest `found.len()`.
-#[inline]
-fn record(found: &mut [(f64, usize); 16], count: &mut usize, g: f64, i: usize) {
-    if *count < found.len() {
-        found[*count] = (g, i);
-        *count += 1;
-    } else if let Some(worst) = found
-        .iter_mut()
-        .max_by(|a, b| a.0.total_cmp(&b.0))
-        .filter(|w| w.0 > g)
-    {
-        *worst = (g, i);
+/// The sampled local minima of a scan for basins, followed sample by sample: `(gap,
+/// index)` of the lowest few (more than 16 coarse minima within one wheel would be noise;
+/// the lowest are the ones refined), and the lowest of all.
+struct SampledMinima {
+    found: [(f64, usize); 16],
+    count: usize,
+    lowest: f64,
+    /// The gaps of the two samples before the next one (`+inf` before the first, and for
+    /// the samples of a skipped block): the next one tells whether `here` is a minimum.
+    prev: f64,
+    here: f64,
+}
+
+impl SampledMinima {
+    fn new() -> SampledMinima {
+        SampledMinima {
+            found: [(0.0, 0); 16],
+            count: 0,
+            lowest: f64::INFINITY,
+            prev: f64::INFINITY,
+            here: f64::INFINITY,
+        }
+    }
+
+    /// Whether `here`, between `prev` and `next`, is a sampled local minimum (over the rail).
+    #[inline(always)]
+    fn is_minimum(prev: f64, here: f64, next: f64) -> bool {
+        here <= prev && here <= next && here < f64::INFINITY
+    }
+
+    /// Keeps the minimum `g` of the sample `i` (counted from the scan's first).
+    #[inline]
+    fn keep(&mut self, g: f64, i: usize) {
+        self.lowest = self.lowest.min(g);
+        if self.count < self.found.len() {
+            self.found[self.count] = (g, i);
+            self.count += 1;
+        } else if let Some(worst) = self
+            .found
+            .iter_mut()
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .filter(|w| w.0 > g)
+        {
+            *worst = (g, i);
+        }
+    }
+
+    /// The next sample `i` (counted from the scan's first) with gap `next`.
+    #[inline(always)]
+    fn step(&mut self, next: f64, i: usize) {
+        if Self::is_minimum(self.prev, self.here, next) {
+            self.keep(self.here, i - 1);
+        }
+        (self.prev, self.here) = (self.here, next);
+    }
+
+    /// The samples `i0..` with the gaps `gaps` (an evaluated block), as [`Self::step`] on
+    /// each in turn: the same compares and the same minima kept in the same order, four
+    /// samples tested at a time in SIMD lanes (minima are rare: a lane mask that is all
+    /// zero passes four samples at once). On the EN 15302 E1 scene the scans' loop over
+    /// their samples took about 9.5 instructions a sample one by one.
+    #[inline]
+    fn block(&mut self, gaps: &[f64], i0: usize) {
+        let n = gaps.len();
+        let mut m = 0;
+        if n >= 4 {
+            let lanes = |a: usize| f64x4::from([gaps[a], gaps[a + 1], gaps[a + 2], gaps[a + 3]]);
+            let inf = f64x4::splat(f64::INFINITY);
+            // Lane `l` of a group from sample `m` on: `here` is the gap before sample
+            // `m + l`, `prev` the one before that (the first group's from before the block).
+            let mut prev = f64x4::from([self.prev, self.here, gaps[0], gaps[1]]);
+            let mut here = f64x4::from([self.here, gaps[0], gaps[1], gaps[2]]);
+            loop {
+                let next = lanes(m);
+                let mask =
+                    (here.simd_le(prev) & here.simd_le(next) & here.simd_lt(inf)).to_bitmask();
+                if mask != 0 {
+                    for (l, &g) in here.to_array().iter().enumerate() {
+                        if mask & (1 << l) != 0 {
+                            self.keep(g, i0 + m + l - 1);
+                        }
+                    }
+                }
+                m += 4;
+                if m + 4 > n {
+                    break;
+                }
+                (prev, here) = (lanes(m - 2), lanes(m - 1));
+            }
+            (self.prev, self.here) = (gaps[m - 2], gaps[m - 1]);
+        }
+        for (k, &next) in gaps.iter().enumerate().skip(m) {
+            self.step(next, i0 + k);
+        }
     }
 }
 impl SideGap<'_> {
@@ -313,15 +395,10 @@ impl SideGap<'_> {
         // bound lies below them, so it is not skipped).
         let first_eval = self.block_gaps(block_samples(first_block, first, last), pose, scanned);
         let mut running = first_eval.0;
-        // Sampled local minima `(gap, index)`, the lowest few kept (more than 16 coarse
-        // minima within one wheel would be noise; the lowest are the ones refined).
-        let mut found: [(f64, usize); 16] = [(0.0, 0); 16];
-        let mut count = 0;
-        let mut lowest = f64::INFINITY;
         // The gap of sample i is known when sample i + 1 is computed: `here` is sample i - 1.
         // Samples of skipped blocks count as off the rail (+inf): higher than any sample
         // that could be refined, so the minima that matter are found as without skipping.
-        let (mut prev, mut here) = (f64::INFINITY, f64::INFINITY);
+        let mut minima = SampledMinima::new();
         for b in blocks.clone() {
             let samples = block_samples(b, first, last);
             let above = running + COARSE_MARGIN_MM;
@@ -329,16 +406,16 @@ impl SideGap<'_> {
                 // In one step what its samples at +inf would do one by one: the first makes
                 // the sample before the block a minimum where it is not above its own left
                 // neighbour; after two, `prev` and `here` are both +inf.
+                let SampledMinima { prev, here, .. } = minima;
                 if here <= prev && here < f64::INFINITY {
-                    lowest = lowest.min(here);
-                    record(&mut found, &mut count, here, samples.start - first - 1);
+                    minima.keep(here, samples.start - first - 1);
                 }
-                prev = if samples.len() > 1 {
+                minima.prev = if samples.len() > 1 {
                     f64::INFINITY
                 } else {
                     here
                 };
-                here = f64::INFINITY;
+                minima.here = f64::INFINITY;
                 continue;
             }
             let eval = if b == first_block {
@@ -351,22 +428,16 @@ impl SideGap<'_> {
             if block_min < running {
                 running = block_min;
             }
-            for (i, &next) in samples.clone().zip(&scanned.gaps[samples]) {
-                if here <= prev && here <= next && here < f64::INFINITY {
-                    lowest = lowest.min(here);
-                    record(&mut found, &mut count, here, i - first - 1);
-                }
-                prev = here;
-                here = next;
-            }
+            minima.block(&scanned.gaps[samples.clone()], samples.start - first);
         }
         scanned.lowest = running;
         // The last sample has no right neighbour.
+        let SampledMinima { prev, here, .. } = minima;
         if here <= prev && here < f64::INFINITY {
-            lowest = lowest.min(here);
-            record(&mut found, &mut count, here, n - 1);
+            minima.keep(here, n - 1);
         }
-        let found = &mut found[..count];
+        let lowest = minima.lowest;
+        let found = &mut minima.found[..minima.count];
         found.sort_by(|a, b| a.0.total_cmp(&b.0));
         for &(g, i) in found.iter() {
             if g <= lowest + COARSE_MARGIN_MM {
@@ -388,6 +459,31 @@ impl SideGap<'_> {
         pose: &SidePose,
         scanned: &mut Scanned,
     ) -> (f64, bool) {
+        // Exactly no roll: the identity of the rotation is what the fast form needs.
+        #[allow(clippy::float_cmp)]
+        let level = pose.sin == 0.0 && pose.cos == 1.0;
+        if level {
+            self.block_gaps_posed::<true>(range, pose, scanned)
+        } else {
+            self.block_gaps_posed::<false>(range, pose, scanned)
+        }
+    }
+
+    /// [`Self::block_gaps`]; `LEVEL`: the pose has no roll (`sin phi = 0`, `cos phi = 1`,
+    /// the level wheelset's), and a wheel point lies at `Y = delta + Yw`, `z = Zw`. Those
+    /// are the gaps [`SidePose::apply`] gives, to the bit: `cos Yw` is `Yw`, `sin Zw` and
+    /// `sin Yw` are zeros, which leave a sum unchanged but for the sign of a zero `Y`
+    /// (`delta + Yw = -0` needs both -0), and the height of a signed zero is the same
+    /// height. Four multiplications and two additions fewer a group of four samples, and
+    /// a loop the compiler keeps in registers: on the EN 15302 E1 scene the sweep's scans
+    /// (with their blocks' gaps) 1.54 -> 1.33 M instructions.
+    #[inline(always)]
+    fn block_gaps_posed<const LEVEL: bool>(
+        &self,
+        range: std::ops::Range<usize>,
+        pose: &SidePose,
+        scanned: &mut Scanned,
+    ) -> (f64, bool) {
         count!(CoarseSample, range.len());
         let heights = self.rail.heights();
         let lanes = heights.lanes();
@@ -402,7 +498,11 @@ impl SideGap<'_> {
         for (g4, c4) in quads.chunks_exact_mut(4).zip(coarse.chunks_exact(4)) {
             let yw = f64x4::from([c4[0][1], c4[1][1], c4[2][1], c4[3][1]]);
             let zw = f64x4::from([c4[0][2], c4[1][2], c4[2][2], c4[3][2]]);
-            let [y, z] = pose.apply_to(yw, zw);
+            let [y, z] = if LEVEL {
+                [f64x4::splat(pose.delta) + yw, zw]
+            } else {
+                pose.apply_to(yw, zw)
+            };
             let (zr, on_table) = lanes.height(y);
             let g = on_table.select(z - zr, inf);
             g4.copy_from_slice(&g.to_array());
@@ -589,15 +689,44 @@ impl SideGap<'_> {
         let reach = pose.sin.abs() * (wheel.nominal_radius_mm() + 100.0)
             + (1.0 - pose.cos) * (wheel.taping_line_mm() + 100.0)
             + 1.0;
-        let first = self
-            .coarse
-            .partition_point(|c| pose.delta + c[1] < y_lo - reach)
-            .saturating_sub(1);
-        let last = (self
-            .coarse
-            .partition_point(|c| pose.delta + c[1] <= y_hi + reach)
-            + 1)
-        .min(self.coarse.len());
+        let coarse = &self.coarse;
+        let first = partition_near(coarse, y_lo - reach - pose.delta, |c| {
+            pose.delta + c[1] < y_lo - reach
+        })
+        .saturating_sub(1);
+        let last = (partition_near(coarse, y_hi + reach - pose.delta, |c| {
+            pose.delta + c[1] <= y_hi + reach
+        }) + 1)
+            .min(coarse.len());
         (first, last)
     }
+}
+
+/// `coarse.partition_point(below)` (`below` holds for the samples up to some `Yw` and for
+/// none after), found by walking from the sample whose `Yw` would be `yw` were the samples
+/// evenly spaced in it (they are without yaw): the same index, in a few tests of `below`
+/// instead of the ten of a bisection of 541 samples (about 110 instructions saved per
+/// call, two calls per scan).
+#[inline]
+pub(super) fn partition_near(
+    coarse: &[[f64; 3]],
+    yw: f64,
+    below: impl Fn(&[f64; 3]) -> bool,
+) -> usize {
+    let n = coarse.len();
+    let mut i = 0;
+    if n >= 2 {
+        let step = (coarse[n - 1][1] - coarse[0][1]) / (n - 1) as f64;
+        // Saturating: a NaN or negative guess is 0, one beyond the end is clamped.
+        i = (((yw - coarse[0][1]) / step) as usize).min(n);
+    }
+    // Below the partition point `below` holds, from it on not: down to the first sample
+    // where it fails after one where it holds, then up past any where it still holds.
+    while i > 0 && !below(&coarse[i - 1]) {
+        i -= 1;
+    }
+    while i < n && below(&coarse[i]) {
+        i += 1;
+    }
+    i
 }

@@ -389,3 +389,62 @@ fn four_gaps_at_once_are_at_to_the_bit() {
         assert!(nones > 0 && somes > 0);
     }
 }
+
+/// The breaks sorted by a check and two insertions are those `sort_by(f64::total_cmp)`
+/// gives, bit for bit: increasing, decreasing and unordered inputs, ends inside, outside
+/// and equal to a break, signed zeros.
+#[test]
+fn breaks_sorted_with_their_ends_are_those_of_a_sort() {
+    let inputs: [&[f64]; 6] = [
+        &[],
+        &[1.0, 2.0, 2.0, 5.0],
+        &[5.0, 2.0, 2.0, 1.0],
+        &[3.0, 1.0, 2.0],
+        &[-0.0, 0.0, 1.0],
+        &[0.0, -0.0],
+    ];
+    let ends = [
+        [0.5, 6.0],
+        [2.0, 2.0],
+        [-1.0, -0.0],
+        [7.0, 0.0],
+        [0.0, -0.0],
+    ];
+    for values in inputs {
+        for extra in ends {
+            let mut sorted = values.to_vec();
+            sorted.extend(extra);
+            sorted.sort_by(f64::total_cmp);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            let got = super::sorted_with(values.to_vec(), extra);
+            assert_eq!(bits(&got), bits(&sorted), "{values:?} with {extra:?}");
+        }
+    }
+}
+
+/// The partition point found by walking from a guess is the bisection's, on the coarse
+/// samples of S1002 (evenly spaced in `Yw`) and of the outline of a yaw (not evenly
+/// spaced), for thresholds before, among and beyond the samples, and guesses that are far
+/// off or NaN.
+#[test]
+fn partition_near_is_the_partition_point() {
+    let placement = placement();
+    for yaw in YAWS {
+        let side = left_at_yaw(&placement, yaw);
+        let coarse = &side.coarse;
+        let (y0, y1) = (coarse[0][1], coarse[coarse.len() - 1][1]);
+        let mut rng = crate::rng::SplitMix64::new(5);
+        for _ in 0..2000 {
+            let y = y0 - 5.0 + (y1 - y0 + 10.0) * rng.uniform();
+            let below = |c: &[f64; 3]| c[1] < y;
+            let expected = coarse.partition_point(below);
+            for guess in [y, y + 30.0 * (rng.uniform() - 0.5), f64::NAN, -1e9, 1e9] {
+                assert_eq!(
+                    super::scan::partition_near(coarse, guess, below),
+                    expected,
+                    "yaw {yaw}, y {y}, guess {guess}"
+                );
+            }
+        }
+    }
+}
