@@ -13,10 +13,7 @@
 /// terminators: quoted, with its quotes doubled, when it holds a comma, a quote, `\r` or
 /// `\n`; as is otherwise.
 pub(super) fn push_csv_field(out: &mut Vec<u8>, field: &[u8]) {
-    if field
-        .iter()
-        .any(|&b| matches!(b, b',' | b'"' | b'\r' | b'\n'))
-    {
+    if needs_quotes(field) {
         out.push(b'"');
         for &b in field {
             if b == b'"' {
@@ -28,6 +25,13 @@ pub(super) fn push_csv_field(out: &mut Vec<u8>, field: &[u8]) {
     } else {
         out.extend_from_slice(field);
     }
+}
+
+/// Whether [`push_csv_field`] quotes `field` (it holds a comma, a quote, `\r` or `\n`).
+pub(super) fn needs_quotes(field: &[u8]) -> bool {
+    field
+        .iter()
+        .any(|&b| matches!(b, b',' | b'"' | b'\r' | b'\n'))
 }
 
 /// Ends the record that began at `start`: a record of one empty field is written `""` (as

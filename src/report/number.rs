@@ -69,47 +69,63 @@ const POW10_GUESS: [f64; 61] = {
 /// digits - 1)` writes it, and returns `true`; returns `false` having appended nothing where
 /// the integer path does not apply (not finite, out of range, an exact tie).
 pub(crate) fn push_significant(out: &mut Vec<u8>, x: f64, digits: u32) -> bool {
+    let mut text = [0u8; TEXT];
     // The tables' count (`outputs::CSV_FORMAT`) as a constant: the digits' places, the
     // powers of ten and the loops are then fixed (319 -> 250 instructions a number).
-    if digits == 10 {
-        significant(out, x, 10)
+    let len = if digits == 10 {
+        significant(&mut text, x, 10)
     } else {
-        significant(out, x, digits)
-    }
+        significant(&mut text, x, digits)
+    };
+    let Some(len) = len else {
+        return false;
+    };
+    out.extend_from_slice(&text[..len]);
+    true
 }
 
-/// [`push_significant`] with 10 digits, for callers that inline it.
+/// The room [`put_ten`] writes in: at most a sign, 17 digits, the point, `e`, a sign and 3
+/// digits (26 bytes) fit, and the digits' places are constants within it.
+pub(crate) const TEXT: usize = 33;
+
+/// Writes `x` with 10 significant digits at the start of `out` exactly as `format!("{x:.9e}")`
+/// writes it and returns its length, or `None` (the bytes then are of no meaning) where the
+/// integer path does not apply; for callers that inline it.
 #[inline(always)]
-pub(crate) fn push_ten(out: &mut Vec<u8>, x: f64) -> bool {
+pub(crate) fn put_ten(out: &mut [u8; TEXT], x: f64) -> Option<usize> {
     significant(out, x, 10)
 }
 
 #[inline(always)]
-fn significant(out: &mut Vec<u8>, x: f64, digits: u32) -> bool {
-    if !x.is_finite() || !(1..=17).contains(&digits) {
-        return false;
+fn significant(out: &mut [u8; TEXT], x: f64, digits: u32) -> Option<usize> {
+    if !(1..=17).contains(&digits) {
+        return None;
     }
     let n = digits as usize;
+    let bits = x.to_bits();
+    let magnitude = bits & !(1u64 << 63);
     // `0.000e0` for a zero, signed as the zero is. One call of `write`: with a second one
     // for the zero the compiler called the vector's copy out of line (the scene's numbers
-    // 3.34 M instructions, 3.04 M so).
-    let Some((q, k)) = (if x == 0.0 {
-        Some((0, 0))
+    // 3.34 M instructions, 3.04 M so). Not-a-number and the infinities are told apart in
+    // `rounded` by the exponent it takes apart anyway.
+    let (q, k) = if magnitude == 0 {
+        (0, 0)
     } else {
-        rounded(x.abs(), n)
-    }) else {
-        return false;
+        rounded(magnitude, n)?
     };
-    write(out, x.is_sign_negative(), q, n, k);
-    true
+    Some(write(out, bits != magnitude, q, n, k))
 }
 
-/// The `n` significant digits of `a > 0` as an integer `q` (`10^(n-1) <= q < 10^n`) and the
-/// decimal exponent `k` of its first digit; `None` where the integer path does not apply.
+/// The `n` significant digits of `a > 0` (given as its bits) as an integer `q` (`10^(n-1) <=
+/// q < 10^n`) and the decimal exponent `k` of its first digit; `None` where the integer path
+/// does not apply (`a` not finite included).
 #[inline(always)]
-fn rounded(a: f64, n: usize) -> Option<(u64, i32)> {
-    let bits = a.to_bits();
+fn rounded(bits: u64, n: usize) -> Option<(u64, i32)> {
+    let a = f64::from_bits(bits);
     let biased = (bits >> 52) as i32;
+    if biased == 0x7ff {
+        return None;
+    }
     let fraction = bits & ((1u64 << 52) - 1);
     let (m, e) = if biased == 0 {
         (fraction, -1074)
@@ -215,21 +231,25 @@ const PAIRS: [[u8; 2]; 100] = {
     p
 };
 
-/// Writes the `n` digits of `q` as `d.ddd` (`d` alone for one digit), `e` and `k`.
+/// Writes a `-` for a negative number and the `n` digits of `q` as `d.ddd` (`d` alone for
+/// one digit), `e` and `k` at the start of `out`; returns the length.
 #[inline(always)]
-fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
-    // The text is put together on the stack from index 1, after a `-` that starts it only
-    // for a negative number: the digits' places do not depend on the sign (constants where
-    // `n` is). At most a sign, 17 digits, the point, `e`, a sign and 3 digits (26 bytes).
-    let mut text = [0u8; 33];
-    text[0] = b'-';
-    // The digits from the last, from index 2 on, eight at a time while eight are left
+fn write(out: &mut [u8; TEXT], negative: bool, q: u64, n: usize, k: i32) -> usize {
+    // A `-` always, and the text after it only for a negative number (over it otherwise):
+    // from there the digits' places do not depend on the sign (constants where `n` is).
+    // Written in place by `Table::to_csv_with` (where it was put together on the stack,
+    // copied out as 32 bytes from the sign or the first digit and truncated: the measure is
+    // given there).
+    out[0] = b'-';
+    let first = usize::from(negative);
+    let text: &mut [u8; 32] = out[first..].first_chunk_mut().expect("33 bytes");
+    // The digits from the last, from index 1 on, eight at a time while eight are left
     // (one 64-bit division, then 32-bit ones: 232 -> 224 instructions a number for ten
     // digits against two at a time throughout), then two at a time (an odd count starts
     // with a pair's second); the first then moves left over the point.
     let mut q = q;
-    let mut end = n + 2;
-    while end >= 10 {
+    let mut end = n + 1;
+    while end >= 9 {
         let eight = (q % 100_000_000) as u32;
         q /= 100_000_000;
         let (high, low) = (eight / 10_000, eight % 10_000);
@@ -240,20 +260,20 @@ fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
         }
         end -= 8;
     }
-    while end > 3 {
+    while end > 2 {
         text[end - 2..end].copy_from_slice(&PAIRS[(q % 100) as usize]);
         q /= 100;
         end -= 2;
     }
-    if end > 2 {
-        text[2] = b'0' + q as u8;
+    if end > 1 {
+        text[1] = b'0' + q as u8;
     }
-    text[1] = text[2];
+    text[0] = text[1];
     let mut len = if n > 1 {
-        text[2] = b'.';
-        n + 2
+        text[1] = b'.';
+        n + 1
     } else {
-        2
+        1
     };
     text[len] = b'e';
     len += 1;
@@ -272,14 +292,7 @@ fn write(out: &mut Vec<u8>, negative: bool, q: u64, n: usize, k: i32) {
         len += 1;
     }
     text[len] = PAIRS[k % 100][1];
-    len += 1;
-    // 32 bytes from the sign or the first digit and then the length: a copy of known
-    // size, no call to `memcpy`.
-    let first = usize::from(!negative);
-    let window: &[u8; 32] = text[first..].first_chunk().expect("33 bytes");
-    let start = out.len();
-    out.extend_from_slice(window);
-    out.truncate(start + len - first);
+    first + len + 1
 }
 
 #[cfg(test)]
