@@ -83,6 +83,18 @@ impl<'a> SvgWriter<'a> {
         self.out.push('"');
     }
 
+    /// `fill` in `color` and no stroke, or the other way round (a filled or an outlined
+    /// shape, as plotters writes them).
+    fn attr_paint(&mut self, color: BackendColor, fill: bool) {
+        if fill {
+            self.attr_color("fill", color);
+            self.attr_str("stroke", "none");
+        } else {
+            self.attr_str("fill", "none");
+            self.attr_color("stroke", color);
+        }
+    }
+
     fn attr_opacity(&mut self, color: BackendColor) {
         self.attr("opacity");
         push_f64(self.out, color.alpha);
@@ -194,13 +206,7 @@ impl DrawingBackend for SvgWriter<'_> {
         self.attr_i32("width", bottom_right.0 - upper_left.0);
         self.attr_i32("height", bottom_right.1 - upper_left.1);
         self.attr_opacity(color);
-        if fill {
-            self.attr_color("fill", color);
-            self.attr_str("stroke", "none");
-        } else {
-            self.attr_str("fill", "none");
-            self.attr_color("stroke", color);
-        }
+        self.attr_paint(color, fill);
         self.out.push_str("/>\n");
         Ok(())
     }
@@ -256,13 +262,7 @@ impl DrawingBackend for SvgWriter<'_> {
         self.attr_i32("cy", center.1);
         self.attr_u32("r", radius);
         self.attr_opacity(color);
-        if fill {
-            self.attr_color("fill", color);
-            self.attr_str("stroke", "none");
-        } else {
-            self.attr_str("fill", "none");
-            self.attr_color("stroke", color);
-        }
+        self.attr_paint(color, fill);
         self.attr_u32("stroke-width", style.stroke_width());
         self.out.push_str("/>\n");
         Ok(())
