@@ -292,7 +292,7 @@ impl SideGap<'_> {
     #[inline]
     pub(super) fn cells_over(&self, cells: &WheelCells, i: usize, j: usize) -> WheelCell {
         if !self.yawed() {
-            return one_or_over(cells, i, j);
+            return cells.over(i, j);
         }
         let h = self.coarse[1][0] - self.coarse[0][0];
         // Only the cells that take part (between the domain's samples).
@@ -302,7 +302,7 @@ impl SideGap<'_> {
             return NO_CELL;
         }
         self.yaw
-            .outline_cell(one_or_over(cells, i, j), h)
+            .outline_cell(cells.over(i, j), h)
             .unwrap_or_else(|| {
                 // The union's ranges are wider than any one cell's: cell by cell.
                 cells.cells()[i..j]
@@ -353,25 +353,6 @@ impl SideGap<'_> {
         } else {
             self.coarse[1][0] - self.coarse[0][0]
         }
-    }
-}
-
-/// [`WheelCells::over`] the cells `i..j`, to the bit, with one cell read directly: `over`
-/// joins two runs of `2^k` cells that cover `i..j`, for one cell the cell with itself,
-/// whose ranges are its own (`min(x, x)` and `max(x, x)` are `x`) and whose joint terms
-/// count twice (`jump + jump`, as the join sums them). The certificate asks for single
-/// cells most (its cells left to the zeroth-order bound, its deep searches): about 60
-/// instructions of a lookup through the levels saved per call.
-#[inline]
-fn one_or_over(cells: &WheelCells, i: usize, j: usize) -> WheelCell {
-    if j == i + 1 {
-        let c = cells.cells()[i];
-        WheelCell {
-            jump: c.jump + c.jump,
-            ..c
-        }
-    } else {
-        cells.over(i, j)
     }
 }
 
@@ -493,9 +474,9 @@ impl OutlineBase {
 mod tests {
     use super::*;
 
-    /// One cell read directly is what the lookup through the levels gives, to the bit
-    /// (compared through `Debug`, which tells -0 from 0), on S1002, whose joints give some
-    /// cells joint terms.
+    /// One cell, which `WheelCells::over` reads directly, is what the lookup through the
+    /// levels gives, to the bit: the cell joined with itself (compared through `Debug`,
+    /// which tells -0 from 0), on S1002, whose joints give some cells joint terms.
     #[test]
     fn one_cell_is_the_cell_over_itself() {
         let placement = super::super::tests::placement();
@@ -504,7 +485,8 @@ mod tests {
         let cells = side.pair.wheel.cells(n);
         assert!(cells.cells().iter().any(|c| c.jump > 0.0));
         for i in 0..n {
-            let (direct, looked_up) = (one_or_over(&cells, i, i + 1), cells.over(i, i + 1));
+            let c = cells.cells()[i];
+            let (direct, looked_up) = (cells.over(i, i + 1), c.union(c));
             assert_eq!(format!("{direct:?}"), format!("{looked_up:?}"), "cell {i}");
         }
     }
