@@ -27,10 +27,11 @@
 //!   `compare.sh`). The linker-script fragment `link/hot-text.ld` gathers them (their
 //!   sections, by symbol, hashes as wildcards) into one output section before the rest
 //!   (`INSERT BEFORE .text`; GNU ld and LLD both read it; `scripts/hot_text.py` writes it from
-//!   a callgrind run of the EN 15302 E1 report): the code pages faulted in 47 -> 31 and the
-//!   compare scene after the peer 5.50 -> 5.24 ms (medians of 40 alternated runs). A
-//!   function missing from it only stays with the rest. Not where a linker is configured
-//!   (`RUSTC_LINKER`, `-C linker`), which may read no linker scripts.
+//!   a callgrind run of the EN 15302 E1 report): the program's own pages faulted in 59 -> 44
+//!   (all page faults 413 -> 393), the compare scene run after the peer 5.43 -> 5.21 and
+//!   5.35 -> 5.16 ms (two runs of 40 alternated pairs, medians). A function missing from it
+//!   only stays with the rest. Not where a linker is configured (`RUSTC_LINKER`, `-C
+//!   linker`), which may read no linker scripts.
 //!
 //! Only the binaries are linked so; the library, its tests and the Python extension are not.
 use std::path::PathBuf;
