@@ -27,9 +27,10 @@
 //!   `compare.sh`). The linker-script fragment `link/hot-text.ld` gathers them (their
 //!   sections, by symbol, hashes as wildcards) into one output section before the rest
 //!   (`INSERT BEFORE .text`; GNU ld and LLD both read it; `scripts/hot_text.py` writes it from
-//!   a callgrind run of the EN 15302 E1 report): the program's own pages faulted in 59 -> 44
-//!   (all page faults 413 -> 393), the compare scene run after the peer 5.43 -> 5.21 and
-//!   5.35 -> 5.16 ms (two runs of 40 alternated pairs, medians). A function missing from it
+//!   a callgrind run of the EN 15302 E1 report): the program's own pages faulted in 66 -> 48
+//!   (all page faults 415 -> 396), the compare scene run after the peer 5.76 -> 5.65 and
+//!   5.46 -> 5.38 ms (two runs of 200 alternated pairs, medians), 4.81 -> 4.76 ms run
+//!   after itself. A function missing from it
 //!   only stays with the rest. Not where a linker is configured (`RUSTC_LINKER`, `-C
 //!   linker`), which may read no linker scripts.
 //!
