@@ -34,13 +34,16 @@ pub(super) fn needs_quotes(field: &[u8]) -> bool {
         .any(|&b| matches!(b, b',' | b'"' | b'\r' | b'\n'))
 }
 
-/// Ends the record that began at `start`: a record of one empty field is written `""` (as
-/// the csv crate does, so that it is not read as a blank line).
+/// Ends the record that began at `start` (see [`record_end`]).
 pub(super) fn end_csv_record(out: &mut Vec<u8>, start: usize) {
-    if out.len() == start {
-        out.extend_from_slice(b"\"\"");
-    }
-    out.push(b'\n');
+    out.extend_from_slice(record_end(out.len() == start));
+}
+
+/// The bytes that end a record, `empty` when nothing was written for it: a record of one
+/// empty field is written `""` (as the csv crate does, so that it is not read as a blank
+/// line).
+pub(super) fn record_end(empty: bool) -> &'static [u8] {
+    if empty { b"\"\"\n" } else { b"\n" }
 }
 
 /// Appends one record of `fields` (see [`push_csv_field`]).

@@ -24,7 +24,7 @@
 //!   changed line in a diff. Not-a-number is `NaN`, infinities are `inf` and `-inf`.
 //! * Text is quoted only when needed (commas, quotes, line breaks), as RFC 4180 says.
 
-use super::csv_out::{needs_quotes, push_csv_field, push_csv_record};
+use super::csv_out::{needs_quotes, push_csv_field, push_csv_record, record_end};
 use super::number;
 use std::borrow::Cow;
 use std::fmt;
@@ -523,13 +523,9 @@ fn write_rows(
             at += scratch.len();
             scratch.clear();
         }
-        // A record of one empty field is written `""` (see `end_csv_record`).
-        if at == start {
-            bytes[at..at + 2].copy_from_slice(b"\"\"");
-            at += 2;
-        }
-        bytes[at] = b'\n';
-        at += 1;
+        let end = record_end(at == start);
+        bytes[at..at + end.len()].copy_from_slice(end);
+        at += end.len();
     }
     at
 }
