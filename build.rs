@@ -1,6 +1,7 @@
 //! Links the command-line program for a short process on Linux: as a position-dependent
-//! executable, with GCC's unwinder built in instead of loaded from `libgcc_s.so.1`, and with
-//! the functions a report runs gathered in one place.
+//! executable, statically where the C library's archives are installed (else with GCC's
+//! unwinder built in instead of loaded from `libgcc_s.so.1`), and with the functions a
+//! report runs gathered in one place.
 //!
 //! A report is a short process, where what the dynamic loader does at every start is a
 //! visible share of the run time (on the EN 15302 E1 pair as
@@ -13,29 +14,49 @@
 //!   up is the address randomisation of the program's own image (the heap, the stack and the
 //!   shared libraries stay randomised), a hardening that matters for programs facing
 //!   untrusted peers, not for a numerical tool reading its user's files.
-//! - The standard library unwinds panics with GCC's unwinder, which it links from the shared
-//!   `libgcc_s.so.1`: a second library to map, relocate and fault in at every start besides
-//!   `libc` and `libm`. Its static archive `libgcc_eh.a` (the same unwinder, shipped with
-//!   GCC wherever `libgcc_s` is) linked whole into the program defines those symbols first,
-//!   and `--as-needed` then drops `libgcc_s.so.1`: `wheelrail --version` 1.48 -> 1.31 ms, the
-//!   compare scene 5.22 -> 5.06 ms (medians of 300 and 40 alternated runs). Panics unwind as
-//!   before (catching, dropping, backtraces). Where the archive is not found (another C
-//!   compiler, a cross build) the program links `libgcc_s` as usual.
+//! - The program is linked statically where it can be: by `link/cc-static`, the linker that
+//!   `.cargo/config.toml` names for x86_64 GNU/Linux, where the C compiler has the static
+//!   archives of the C library and of GCC's unwinder. No dynamic loader runs then: no shared
+//!   library to find, map and relocate, no symbol to look up. rustc writes the standard
+//!   library's system libraries for a dynamic link; `link/cc-static` turns them into
+//!   archives for the link that asks for `-static` (the program's; every other link, of
+//!   tests, build scripts, macros and the Python extension, goes to `cc` as rustc wrote it).
+//!   Measured on the compare scene run after the peer (medians of 150 alternated runs each):
+//!   5.30 -> 4.97 ms, and 5.79 -> 5.45 ms in a slower hour of the shared machine; page
+//!   faults 396 -> 350; 22.03 -> 21.77 M instructions. What it gives up: the C library's
+//!   functions that load modules at run time (name services for users and hosts, `dlopen`)
+//!   work only with the same C library installed, and the program uses none of them; a
+//!   security fix to the C library reaches the program when it is built again. Panics,
+//!   threads and backtraces work as before (a test program linked so: caught, dropped,
+//!   joined, traced). `cargo install` from the registry, another linker or another target
+//!   link dynamically, as below.
+//! - Linked dynamically, the standard library unwinds panics with GCC's unwinder, which it
+//!   links from the shared `libgcc_s.so.1`: a second library to map, relocate and fault in
+//!   at every start besides `libc` and `libm`. Its static archive `libgcc_eh.a` (the same
+//!   unwinder, shipped with GCC wherever `libgcc_s` is) linked whole into the program
+//!   defines those symbols first, and `--as-needed` then drops `libgcc_s.so.1`:
+//!   `wheelrail --version` 1.48 -> 1.31 ms, the compare scene 5.22 -> 5.06 ms (medians of
+//!   300 and 40 alternated runs). Panics unwind as before (catching, dropping,
+//!   backtraces). Where the archive is not found (another C compiler, a cross build) the
+//!   program links `libgcc_s` as usual.
 //! - The functions a report runs lie scattered over the program's 3 MB of code, so that its
 //!   first run of each touches a new page of it, and the kernel maps the program's code in
 //!   64 kB steps (a page fault each, slower when the caches are cold, as after the peer in
 //!   `compare.sh`). The linker-script fragment `link/hot-text.ld` gathers them (their
-//!   sections, by symbol, hashes as wildcards) into one output section before the rest
-//!   (`INSERT BEFORE .text`; GNU ld and LLD both read it; `scripts/hot_text.py` writes it from
-//!   a callgrind run of the EN 15302 E1 report): the program's own pages faulted in 66 -> 48
-//!   (all page faults 415 -> 396), the compare scene run after the peer 5.76 -> 5.65 and
-//!   5.46 -> 5.38 ms (two runs of 200 alternated pairs, medians), 4.81 -> 4.76 ms run
-//!   after itself. A function missing from it
-//!   only stays with the rest. Not where a linker is configured (`RUSTC_LINKER`, `-C
-//!   linker`), which may read no linker scripts.
+//!   sections, by symbol, hashes as wildcards, and the C library's archive members where it
+//!   is linked statically) into one output section before the rest (`INSERT BEFORE .text`;
+//!   GNU ld and LLD both read it; `scripts/hot_text.py` writes it from callgrind runs of
+//!   the EN 15302 E1 report, the functions of its core, one figure in SVG, first): the
+//!   program's own pages faulted in 66 -> 48 (all page faults 415 -> 396), the compare
+//!   scene run after the peer 5.76 -> 5.65 and 5.46 -> 5.38 ms (two runs of 200 alternated
+//!   pairs, medians), 4.81 -> 4.76 ms run after itself. Linked statically, with the C
+//!   library's functions and the core first: faults on code 39 -> 23, the compare scene
+//!   5.45 -> 5.29 ms (120 alternated runs). A function missing from it only stays with the
+//!   rest. Not where another linker is configured (`RUSTC_LINKER`, `-C linker`), which may
+//!   read no linker scripts.
 //!
 //! Only the binaries are linked so; the library, its tests and the Python extension are not.
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 fn main() {
@@ -43,34 +64,55 @@ fn main() {
     println!("cargo:rerun-if-env-changed=RUSTC_LINKER");
     println!("cargo:rerun-if-changed=link/hot-text.ld");
     println!("cargo::rustc-check-cfg=cfg(hot_text)");
+    println!("cargo::rustc-check-cfg=cfg(linked_static)");
     let os = std::env::var("CARGO_CFG_TARGET_OS").unwrap_or_default();
     if os != "linux" {
         return;
     }
     println!("cargo:rustc-link-arg-bins=-no-pie");
+    let linked_static = static_link();
     if let Some(script) = hot_text_script() {
         println!("cargo:rustc-link-arg-bins=-Wl,-T,{}", script.display());
         // For the test that the program was linked so (`tests/cli.rs`).
         println!("cargo:rustc-cfg=hot_text");
     }
-    if let Some(unwinder) = static_unwinder() {
+    if linked_static {
+        println!("cargo:rustc-link-arg-bins=-static");
+        println!("cargo:rustc-cfg=linked_static");
+    } else if let Some(unwinder) = gnu_archive("libgcc_eh.a") {
         println!("cargo:rustc-link-arg-bins=-Wl,--whole-archive");
         println!("cargo:rustc-link-arg-bins={}", unwinder.display());
         println!("cargo:rustc-link-arg-bins=-Wl,--no-whole-archive");
     }
 }
 
-/// GCC's static unwinder `libgcc_eh.a` as the C compiler that links the program finds it,
-/// for a native GNU build only (`None` otherwise, or where the compiler has no such file).
-fn static_unwinder() -> Option<PathBuf> {
+/// Whether the program is linked statically: by `link/cc-static` (the linker
+/// `.cargo/config.toml` names), where the C compiler finds the static archives of the C
+/// library and of GCC's unwinder.
+fn static_link() -> bool {
+    let linker = std::env::var("RUSTC_LINKER").unwrap_or_default();
+    Path::new(&linker).ends_with(OUR_LINKER)
+        && gnu_archive("libc.a").is_some()
+        && gnu_archive("libgcc_eh.a").is_some()
+}
+
+/// The linker that `.cargo/config.toml` names for x86_64 GNU/Linux.
+const OUR_LINKER: &str = "link/cc-static";
+
+/// The static archive `name` as the C compiler that links the program finds it, for a native
+/// GNU build only (`None` otherwise, or where the compiler has no such file).
+fn gnu_archive(name: &str) -> Option<PathBuf> {
     let var = |name: &str| std::env::var(name).unwrap_or_default();
     if var("CARGO_CFG_TARGET_ENV") != "gnu" || var("TARGET") != var("HOST") {
         return None;
     }
-    // rustc links with `cc` unless a linker is configured for the target.
-    let linker = std::env::var("RUSTC_LINKER").unwrap_or_else(|_| "cc".to_string());
+    // Ours passes `cc` its arguments; another configured linker is asked as it is.
+    let linker = match std::env::var("RUSTC_LINKER") {
+        Ok(l) if !Path::new(&l).ends_with(OUR_LINKER) => l,
+        _ => "cc".to_string(),
+    };
     let out = Command::new(linker)
-        .arg("-print-file-name=libgcc_eh.a")
+        .arg(format!("-print-file-name={name}"))
         .output()
         .ok()?;
     // Without the file, the compiler prints the bare name back.
@@ -84,7 +126,9 @@ fn static_unwinder() -> Option<PathBuf> {
 fn hot_text_script() -> Option<PathBuf> {
     let var = |name: &str| std::env::var(name).unwrap_or_default();
     let flags = var("CARGO_ENCODED_RUSTFLAGS");
-    if !var("RUSTC_LINKER").is_empty() || flags.split('\x1f').any(|f| f.contains("linker")) {
+    let linker = var("RUSTC_LINKER");
+    let other = !linker.is_empty() && !Path::new(&linker).ends_with(OUR_LINKER);
+    if other || flags.split('\x1f').any(|f| f.contains("linker")) {
         return None;
     }
     let script = PathBuf::from(var("CARGO_MANIFEST_DIR")).join("link/hot-text.ld");

@@ -617,7 +617,7 @@ fn a_report_has_the_profile_dimensions_and_the_rail_wear() {
 
 /// The program's sections `(name, size)` in file order, read from its ELF section headers
 /// (64-bit little-endian, as on x86_64 and aarch64 Linux).
-#[cfg(hot_text)]
+#[cfg(any(hot_text, linked_static))]
 fn elf_sections(path: &Path) -> Vec<(String, u64)> {
     let bytes = std::fs::read(path).unwrap();
     let u16_at = |at: usize| u64::from(u16::from_le_bytes([bytes[at], bytes[at + 1]]));
@@ -641,7 +641,7 @@ fn elf_sections(path: &Path) -> Vec<(String, u64)> {
 
 /// `build.rs` gathers the functions a report runs (`link/hot-text.ld`) into `.text.hot`
 /// before the rest of the code: the section is there, before `.text`, and holds a good
-/// part of the program's code (1.7 of 3.0 MB when the fragment was written; a fragment
+/// part of the program's code (2.0 of 3.8 MB, the C library's included, when the fragment was written; a fragment
 /// whose patterns no longer match the program's symbols leaves it small).
 #[cfg(hot_text)]
 #[test]
@@ -657,4 +657,20 @@ fn the_functions_a_report_runs_are_linked_together() {
         hot_size > (hot_size + text_size) / 4,
         ".text.hot {hot_size} bytes against .text {text_size}: regenerate link/hot-text.ld (scripts/hot_text.py)"
     );
+}
+
+/// `build.rs` links the program statically where `link/cc-static` is its linker
+/// (`.cargo/config.toml`) and the C library's static archives are installed: no dynamic
+/// loader named (`.interp`), nothing for one to do (`.dynamic`). That it runs, unwinds and
+/// starts threads is what every other test here and in `tests/` shows.
+#[cfg(linked_static)]
+#[test]
+fn the_program_is_linked_statically() {
+    let sections = elf_sections(Path::new(env!("CARGO_BIN_EXE_wheelrail")));
+    for name in [".interp", ".dynamic"] {
+        assert!(
+            sections.iter().all(|(n, _)| n != name),
+            "{name} in {sections:?}"
+        );
+    }
 }
