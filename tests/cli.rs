@@ -641,8 +641,9 @@ fn elf_sections(path: &Path) -> Vec<(String, u64)> {
 
 /// `build.rs` gathers the functions a report runs (`link/hot-text.ld`) into `.text.hot`
 /// before the rest of the code: the section is there, before `.text`, and holds a good
-/// part of the program's code (2.0 of 3.8 MB, the C library's included, when the fragment was written; a fragment
-/// whose patterns no longer match the program's symbols leaves it small).
+/// part of the program's code (2.0 of 3.8 MB, the C library's included, when the fragment
+/// was written; a fragment whose patterns no longer match the program's symbols leaves it
+/// small).
 #[cfg(hot_text)]
 #[test]
 fn the_functions_a_report_runs_are_linked_together() {
