@@ -91,7 +91,10 @@ fn main() {
 /// library and of GCC's unwinder.
 fn static_link() -> bool {
     let linker = std::env::var("RUSTC_LINKER").unwrap_or_default();
+    // A linker given in the flags (`-C linker`) is the one rustc runs.
+    let flags = std::env::var("CARGO_ENCODED_RUSTFLAGS").unwrap_or_default();
     Path::new(&linker).ends_with(OUR_LINKER)
+        && !flags.split('\x1f').any(|f| f.contains("linker"))
         && gnu_archive("libc.a").is_some()
         && gnu_archive("libgcc_eh.a").is_some()
 }
