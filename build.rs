@@ -23,7 +23,7 @@
 //!   tests, build scripts, macros and the Python extension, goes to `cc` as rustc wrote it).
 //!   Measured on the compare scene run after the peer (medians of 150 alternated runs each):
 //!   5.30 -> 4.97 ms, and 5.79 -> 5.45 ms in a slower hour of the shared machine; page
-//!   faults 396 -> 350; 22.03 -> 21.77 M instructions. What it gives up: the C library's
+//!   faults about 400 -> 360; 22.03 -> 21.77 M instructions. What it gives up: the C library's
 //!   functions that load modules at run time (name services for users and hosts, `dlopen`)
 //!   work only with the same C library installed, and the program uses none of them; a
 //!   security fix to the C library reaches the program when it is built again. Panics,
