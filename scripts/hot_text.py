@@ -32,10 +32,10 @@ the others that ran. Standard library only (with valgrind's `callgrind_annotate`
 
 import os
 import re
-import tomllib
 import subprocess
 import sys
 import tempfile
+import tomllib
 
 BIN = "target/release/wheelrail"
 
@@ -92,18 +92,19 @@ def archive_members():
         for archive in archives(path):
             listing = subprocess.run(["nm", "-A", "--defined-only", archive],
                                      capture_output=True, text=True).stdout
-            base = os.path.basename(archive)
-            every = set()
+            # `archive:member:address type symbol` per line.
+            every, defined_in = set(), {}
             for line in listing.splitlines():
                 where, _, rest = line.rpartition(":")
-                every.add(where.rpartition(":")[2])
+                member = where.rpartition(":")[2]
+                every.add(member)
                 parts = rest.split()
                 if len(parts) == 3 and parts[1] in "tTwWi":
-                    member = where.rpartition(":")[2]
-                    members.setdefault(parts[2], [member])
-            for symbol, found in members.items():
-                if len(found) == 1 and not found[0].startswith("*"):
-                    found[:] = [f"*{base}:{m}(.text .text.*)" for m in variants(found[0], every)]
+                    defined_in.setdefault(parts[2], member)
+            base = os.path.basename(archive)
+            for symbol, member in defined_in.items():
+                members.setdefault(symbol, [f"*{base}:{m}(.text .text.*)"
+                                            for m in variants(member, every)])
     return members
 
 
