@@ -21,7 +21,7 @@
 //!   library's system libraries for a dynamic link; `link/cc-static` turns them into
 //!   archives for the link that asks for `-static` (the program's; every other link, of
 //!   tests, build scripts, macros and the Python extension, goes to `cc` as rustc wrote it).
-//!   Measured on the compare scene run after the peer (medians of 150 alternated runs each):
+//!   Measured on the compare scene run after the peer (medians of 150 and 120 alternated runs):
 //!   5.30 -> 4.97 ms, and 5.79 -> 5.45 ms in a slower hour of the shared machine; page
 //!   faults about 400 -> 360; 22.03 -> 21.77 M instructions. What it gives up: the C library's
 //!   functions that load modules at run time (name services for users and hosts, `dlopen`)
