@@ -662,8 +662,8 @@ fn the_functions_a_report_runs_are_linked_together() {
 
 /// `build.rs` links the program statically where `link/cc-static` is its linker
 /// (`.cargo/config.toml`) and the C library's static archives are installed: no dynamic
-/// loader named (`.interp`), nothing for one to do (`.dynamic`). That it runs, unwinds and
-/// starts threads is what every other test here and in `tests/` shows.
+/// loader named (`.interp`), nothing for one to do (`.dynamic`). That it runs, fleets on
+/// several threads included, is what the other tests that run it show (`tests/fleet.rs`).
 #[cfg(linked_static)]
 #[test]
 fn the_program_is_linked_statically() {
