@@ -70,51 +70,61 @@ fn main() {
         return;
     }
     println!("cargo:rustc-link-arg-bins=-no-pie");
-    let linked_static = static_link();
-    if let Some(script) = hot_text_script() {
+    let linker = linker();
+    if let Some(script) = hot_text_script(&linker) {
         println!("cargo:rustc-link-arg-bins=-Wl,-T,{}", script.display());
         // For the test that the program was linked so (`tests/cli.rs`).
         println!("cargo:rustc-cfg=hot_text");
     }
-    if linked_static {
+    let unwinder = gnu_archive(&linker, "libgcc_eh.a");
+    // Statically by `link/cc-static` where the C library's archive is found too.
+    if linker == Linker::Ours && unwinder.is_some() && gnu_archive(&linker, "libc.a").is_some() {
         println!("cargo:rustc-link-arg-bins=-static");
         println!("cargo:rustc-cfg=linked_static");
-    } else if let Some(unwinder) = gnu_archive("libgcc_eh.a") {
+    } else if let Some(unwinder) = unwinder {
         println!("cargo:rustc-link-arg-bins=-Wl,--whole-archive");
         println!("cargo:rustc-link-arg-bins={}", unwinder.display());
         println!("cargo:rustc-link-arg-bins=-Wl,--no-whole-archive");
     }
 }
 
-/// Whether the program is linked statically: by `link/cc-static` (the linker
-/// `.cargo/config.toml` names), where the C compiler finds the static archives of the C
-/// library and of GCC's unwinder.
-fn static_link() -> bool {
-    let linker = std::env::var("RUSTC_LINKER").unwrap_or_default();
-    // A linker given in the flags (`-C linker`) is the one rustc runs.
-    let flags = std::env::var("CARGO_ENCODED_RUSTFLAGS").unwrap_or_default();
-    Path::new(&linker).ends_with(OUR_LINKER)
-        && !flags.split('\x1f').any(|f| f.contains("linker"))
-        && gnu_archive("libc.a").is_some()
-        && gnu_archive("libgcc_eh.a").is_some()
+/// The linker rustc runs for the program.
+#[derive(PartialEq)]
+enum Linker {
+    /// The toolchain's default, `cc`.
+    Toolchain,
+    /// `link/cc-static`, which `.cargo/config.toml` names for x86_64 GNU/Linux: it passes
+    /// `cc` its arguments.
+    Ours,
+    /// Another configured linker: for the target (`RUSTC_LINKER`, its path) or in the flags
+    /// (`-C linker`, the one rustc runs; its path unknown here).
+    Other(Option<String>),
 }
 
-/// The linker that `.cargo/config.toml` names for x86_64 GNU/Linux.
-const OUR_LINKER: &str = "link/cc-static";
+fn linker() -> Linker {
+    let flags = std::env::var("CARGO_ENCODED_RUSTFLAGS").unwrap_or_default();
+    if flags.split('\x1f').any(|f| f.contains("linker")) {
+        return Linker::Other(None);
+    }
+    match std::env::var("RUSTC_LINKER") {
+        Ok(l) if Path::new(&l).ends_with("link/cc-static") => Linker::Ours,
+        Ok(l) if !l.is_empty() => Linker::Other(Some(l)),
+        _ => Linker::Toolchain,
+    }
+}
 
 /// The static archive `name` as the C compiler that links the program finds it, for a native
 /// GNU build only (`None` otherwise, or where the compiler has no such file).
-fn gnu_archive(name: &str) -> Option<PathBuf> {
+fn gnu_archive(linker: &Linker, name: &str) -> Option<PathBuf> {
     let var = |name: &str| std::env::var(name).unwrap_or_default();
     if var("CARGO_CFG_TARGET_ENV") != "gnu" || var("TARGET") != var("HOST") {
         return None;
     }
-    // Ours passes `cc` its arguments; another configured linker is asked as it is.
-    let linker = match std::env::var("RUSTC_LINKER") {
-        Ok(l) if !Path::new(&l).ends_with(OUR_LINKER) => l,
-        _ => "cc".to_string(),
+    let compiler = match linker {
+        Linker::Other(Some(path)) => path.as_str(),
+        _ => "cc",
     };
-    let out = Command::new(linker)
+    let out = Command::new(compiler)
         .arg(format!("-print-file-name={name}"))
         .output()
         .ok()?;
@@ -123,17 +133,14 @@ fn gnu_archive(name: &str) -> Option<PathBuf> {
     (out.status.success() && path.is_absolute() && path.is_file()).then_some(path)
 }
 
-/// `link/hot-text.ld` for the toolchain's own linker: `None` where a linker is configured for
-/// the target (`RUSTC_LINKER`) or in the flags (`-C linker`), or where the path would not
-/// survive `-Wl,` (a comma in it).
-fn hot_text_script() -> Option<PathBuf> {
-    let var = |name: &str| std::env::var(name).unwrap_or_default();
-    let flags = var("CARGO_ENCODED_RUSTFLAGS");
-    let linker = var("RUSTC_LINKER");
-    let other = !linker.is_empty() && !Path::new(&linker).ends_with(OUR_LINKER);
-    if other || flags.split('\x1f').any(|f| f.contains("linker")) {
+/// `link/hot-text.ld` for the toolchain's own linker or ours: `None` where another linker is
+/// configured, which may read no linker scripts, or where the path would not survive `-Wl,`
+/// (a comma in it).
+fn hot_text_script(linker: &Linker) -> Option<PathBuf> {
+    if matches!(linker, Linker::Other(_)) {
         return None;
     }
+    let var = |name: &str| std::env::var(name).unwrap_or_default();
     let script = PathBuf::from(var("CARGO_MANIFEST_DIR")).join("link/hot-text.ld");
     (script.is_file() && !script.to_string_lossy().contains(',')).then_some(script)
 }
