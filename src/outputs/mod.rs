@@ -363,19 +363,31 @@ pub fn render(
     results: &Results,
     extra: &[FigureEntry],
 ) -> Result<Vec<OutputFile>, Error> {
-    let mut files = Vec::new();
-    render_each(scene, results, extra, |f| {
-        files.push(f);
-        Ok(())
-    })?;
-    Ok(files)
+    let (mut tables, mut figures) = (Vec::new(), Vec::new());
+    let page = render_into(
+        scene,
+        results,
+        extra,
+        |f| {
+            tables.push(f);
+            Ok(())
+        },
+        |f| {
+            figures.push(f);
+            Ok(())
+        },
+    )?;
+    tables.append(&mut figures);
+    tables.push(page);
+    Ok(tables)
 }
 
 #[cfg(feature = "cli")]
-/// [`render`] file by file: `put` is given each file as soon as it is made (the tables in
-/// their order, the figures in theirs, `index.html` last), so that a caller that writes it
-/// out holds one file's bytes at a time, not all (the report of the EN 15302 E1 comparison
-/// scene: 341 -> 330 page faults, as `perf stat` counts them).
+/// [`render`] file by file: `put` is given each file as soon as it is made (`index.html`
+/// last), so that a caller that writes it out holds one file's bytes at a time, not all (the
+/// report of the EN 15302 E1 comparison scene: 341 -> 330 page faults, as `perf stat` counts
+/// them). On two threads of a pool the tables and the figures are made at once and take
+/// turns to hand their files over, so that their order is not [`render`]'s.
 ///
 /// # Errors
 /// [`Error::Chart`] when a figure cannot be rendered; the first error of `put`, after which
@@ -386,26 +398,40 @@ pub fn render_each(
     extra: &[FigureEntry],
     put: impl FnMut(OutputFile) -> Result<(), Error> + Send,
 ) -> Result<(), Error> {
-    // The tables and the figures are independent: on two threads of a pool they are
-    // rendered at once (4.7 M and 3.5 M instructions on the EN 15302 scene of
-    // `benches/data`), and take turns to hand their files over.
-    //
-    // Each table is handed over as soon as it is made and then dropped: the columns of one
-    // table at a time are held, not those of all beside all their CSV text (on the EN 15302
-    // scene some 170 kB, 40 pages the process no longer faults in).
     let put = std::sync::Mutex::new(put);
     // A panic of the other thread reaches the caller through the join.
     let put = |f: OutputFile| {
         put.lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner)(f)
     };
+    let page = render_into(scene, results, extra, put, put)?;
+    put(page)
+}
+
+#[cfg(feature = "cli")]
+/// The tables, each handed to `put_table` as soon as it is made, and the figures, each to
+/// `put_figure`; returns the report page, made last.
+fn render_into(
+    scene: &Scene,
+    results: &Results,
+    extra: &[FigureEntry],
+    mut put_table: impl FnMut(OutputFile) -> Result<(), Error> + Send,
+    put_figure: impl FnMut(OutputFile) -> Result<(), Error> + Send,
+) -> Result<OutputFile, Error> {
+    // The tables and the figures are independent: on two threads of a pool they are
+    // rendered at once (4.7 M and 3.5 M instructions on the EN 15302 scene of
+    // `benches/data`).
+    //
+    // Each table is handed over as soon as it is made and then dropped: the columns of one
+    // table at a time are held, not those of all beside all their CSV text (on the EN 15302
+    // scene some 170 kB, 40 pages the process no longer faults in).
     let (tables, figures) = crate::pipeline::join_in_pool(
         || -> Result<_, Error> {
             let mut listed = Vec::new();
             let mut handed = Ok(());
             each_table(scene, results, |t| {
                 if handed.is_ok() {
-                    handed = put(OutputFile {
+                    handed = put_table(OutputFile {
                         name: t.file.clone(),
                         bytes: t.table.to_csv_with(CSV_FORMAT).into_bytes(),
                     });
@@ -414,13 +440,13 @@ pub fn render_each(
             })?;
             handed.map(|()| listed)
         },
-        || figure_files(scene, results, &put),
+        || figure_files(scene, results, put_figure),
     );
     let tables = tables?;
     let mut entries = figures?;
     entries.extend_from_slice(extra);
     let page = page::report_page(scene, results, &tables, entries);
-    put(OutputFile {
+    Ok(OutputFile {
         name: "index.html".into(),
         bytes: report::render_html(&page).into_bytes(),
     })
@@ -432,7 +458,7 @@ pub fn render_each(
 fn figure_files(
     scene: &Scene,
     results: &Results,
-    put: &impl Fn(OutputFile) -> Result<(), Error>,
+    mut put: impl FnMut(OutputFile) -> Result<(), Error>,
 ) -> Result<Vec<FigureEntry>, Error> {
     let mut entries = Vec::new();
     for &fig in &scene.figures {
