@@ -33,8 +33,8 @@
 //!   large writes: as the linker wrote it, a few kB at a time, the page cache holds it in
 //!   pages of 4 kB, which every run maps one by one; copied, it is held in large folios
 //!   (the compare scene 5.19 ms as linked, 4.77-4.88 ms copied; 4 kB writes 5.17 ms;
-//!   medians of 30 alternated runs), until the cache splits or drops them (a program paged
-//!   in by running it is held in 4 kB pages).
+//!   medians of 30 alternated runs), until the cache drops them (a program paged in by
+//!   running it is held in 4 kB pages).
 //! - Linked dynamically, the standard library unwinds panics with GCC's unwinder, which it
 //!   links from the shared `libgcc_s.so.1`: a second library to map, relocate and fault in
 //!   at every start besides `libc` and `libm`. Its static archive `libgcc_eh.a` (the same
