@@ -390,8 +390,8 @@ pub fn render(
 /// turns to hand their files over, so that their order is not [`render`]'s.
 ///
 /// # Errors
-/// [`Error::Chart`] when a figure cannot be rendered; the first error of `put`, after which
-/// nothing more is rendered.
+/// [`Error::Chart`] when a figure cannot be rendered; the first error of `put` (the tables
+/// after one of theirs are not written out, the figures stop at one of their own).
 pub fn render_each(
     scene: &Scene,
     results: &Results,
