@@ -153,16 +153,19 @@ def main():
     seen = set()
     with tempfile.TemporaryDirectory() as tmp:
         runs = []
+
+        def run(scene, tag):
+            runs.append(ran(scene, os.path.join(tmp, f"{tag}{len(runs)}"),
+                            os.path.join(tmp, f"cg{len(runs)}")))
+
         for scene in scenes:
             core = core_scene(scene)
             try:
-                runs.append(ran(core, os.path.join(tmp, f"core{len(runs)}"),
-                                os.path.join(tmp, f"cg{len(runs)}")))
+                run(core, "core")
             finally:
                 os.remove(core)
         for scene in scenes:
-            runs.append(ran(scene, os.path.join(tmp, f"out{len(runs)}"),
-                            os.path.join(tmp, f"cg{len(runs)}")))
+            run(scene, "out")
         for names in runs:
             for name in names:
                 if name not in defined:

@@ -363,13 +363,13 @@ pub fn render(
     results: &Results,
     extra: &[FigureEntry],
 ) -> Result<Vec<OutputFile>, Error> {
-    let (mut tables, mut figures) = (Vec::new(), Vec::new());
+    let (mut files, mut figures) = (Vec::new(), Vec::new());
     let page = render_into(
         scene,
         results,
         extra,
         |f| {
-            tables.push(f);
+            files.push(f);
             Ok(())
         },
         |f| {
@@ -377,9 +377,10 @@ pub fn render(
             Ok(())
         },
     )?;
-    tables.append(&mut figures);
-    tables.push(page);
-    Ok(tables)
+    // The tables, then the figures, then the page.
+    files.append(&mut figures);
+    files.push(page);
+    Ok(files)
 }
 
 #[cfg(feature = "cli")]
