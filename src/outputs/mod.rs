@@ -434,7 +434,7 @@ fn render_into(
                 if handed.is_ok() {
                     handed = put_table(OutputFile {
                         name: t.file.clone(),
-                        bytes: t.table.to_csv_with(CSV_FORMAT).into_bytes(),
+                        bytes: t.table.to_csv_bytes(CSV_FORMAT),
                     });
                 }
                 listed.push((t.file, t.description));

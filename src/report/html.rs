@@ -243,16 +243,24 @@ fn key_value_table(out: &mut String, (key, value): (&str, &str), rows: &[(String
 /// attribute values.
 fn escape_html(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            _ => out.push(c),
-        }
+    let mut rest = text;
+    // The five are ASCII: found as bytes, they end runs at character boundaries, and each
+    // run between them is copied whole.
+    while let Some(i) = rest
+        .bytes()
+        .position(|b| matches!(b, b'&' | b'<' | b'>' | b'"' | b'\''))
+    {
+        out.push_str(&rest[..i]);
+        out.push_str(match rest.as_bytes()[i] {
+            b'&' => "&amp;",
+            b'<' => "&lt;",
+            b'>' => "&gt;",
+            b'"' => "&quot;",
+            _ => "&#39;",
+        });
+        rest = &rest[i + 1..];
     }
+    out.push_str(rest);
     out
 }
 
@@ -310,6 +318,12 @@ mod tests {
             escape_html(r#"<a href="x">'&'</a>"#),
             "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;"
         );
+        // Characters of several bytes next to the escaped ones, at both ends and alone.
+        assert_eq!(escape_html("Δr<γ>&µ"), "Δr&lt;γ&gt;&amp;µ");
+        assert_eq!(escape_html("&é"), "&amp;é");
+        assert_eq!(escape_html("é\""), "é&quot;");
+        assert_eq!(escape_html("Δ"), "Δ");
+        assert_eq!(escape_html(""), "");
     }
 
     #[test]

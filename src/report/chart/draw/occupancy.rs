@@ -45,13 +45,16 @@ impl Marks {
         let r = radius + f64::from(LEGEND_CLEARANCE_PX);
         let cell = f64::from(OCCUPANCY_CELL_PX);
         let (left, top) = (f64::from(self.left), f64::from(self.top));
-        let c1 = ((x + r - left) / cell).floor();
-        let r1 = ((y + r - top) / cell).floor();
+        // Cells from the pixel coordinates without `floor` (a call into the C library on
+        // x86-64's baseline): `as usize` truncates, which floors what is not negative, and
+        // takes a negative or NaN coordinate to 0 (the first cell), as flooring and then
+        // clamping at 0 did.
+        let (c1, r1) = ((x + r - left) / cell, (y + r - top) / cell);
         if !(c1 >= 0.0 && r1 >= 0.0) {
             return;
         }
-        let c0 = ((x - r - left) / cell).floor().max(0.0) as usize;
-        let r0 = ((y - r - top) / cell).floor().max(0.0) as usize;
+        let c0 = ((x - r - left) / cell) as usize;
+        let r0 = ((y - r - top) / cell) as usize;
         let c1 = (c1 as usize).min(self.cols - 1);
         let r1 = (r1 as usize).min(self.rows - 1);
         for row in r0..=r1 {
