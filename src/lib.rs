@@ -24,9 +24,9 @@
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
 //! need, [`fleet`] assesses many profiles against one scene. [`prelude`] holds what a
-//! typical use needs; [`Error`] converts from every error type of the crate. With the
-//! feature `cli` (default), `report` and `outputs` turn results into bytes (CSV, SVG, PNG,
-//! HTML) and `app` is the command line.
+//! typical use needs; [`Error`] converts from every error type of the crate. The crate has
+//! no features and knows no file format it writes: the crate `wheelrail-report` turns
+//! results into tables, CSV, charts and pages, and `wheelrail-cli` is the command line.
 //!
 //! # Quick start
 //!
@@ -89,8 +89,6 @@ macro_rules! count {
     };
 }
 
-#[cfg(feature = "cli")]
-pub mod app;
 // The placement cache: public for the benchmark of a cached placement, not part of the API.
 #[doc(hidden)]
 pub mod cache;
@@ -111,11 +109,7 @@ pub mod fleet;
 pub mod gap;
 pub mod hertz;
 pub mod maintenance;
-mod message;
-// Results -> report tables (and with `cli` charts and pages): public for the Python binding's
-// `run(...).tables`, the benchmarks and the report tests, not part of the API.
-#[doc(hidden)]
-pub mod outputs;
+pub mod message;
 pub mod pipeline;
 // The ranges of physical inputs: public for the Python binding's checks of `hertz_ellipse`
 // and the adversarial tests, not part of the API.
@@ -124,19 +118,13 @@ pub mod plausible;
 pub mod prelude;
 pub mod profile;
 pub mod quasi_elastic;
-// Tables, CSV and (with `cli`) charts and pages: public for the Python binding's conversion
-// of tables and the report tests, not part of the API.
-#[doc(hidden)]
-pub mod report;
 pub mod rigid;
-mod rng;
+pub mod rng;
 pub mod scene;
 mod stage;
 mod stop;
 pub mod sweep;
 pub mod track;
-#[cfg(feature = "cli")]
-pub mod tradeoff;
 
 pub use error::Error;
 pub use stop::Stop;

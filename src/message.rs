@@ -7,7 +7,7 @@ use std::fmt;
 /// same `f64`, in scientific notation when it is very large or very small (`1e308`, not 309
 /// digits; `1e-300`, not 300 zeros).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Number(pub f64);
+pub struct Number(pub f64);
 
 impl fmt::Display for Number {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

@@ -42,7 +42,7 @@ pub struct RunRecord {
 
 /// A stage starting (`None`) or done after so many seconds, as a run reports it to its
 /// caller's progress callback.
-pub(crate) type Progress<'a> = &'a mut dyn FnMut(Stage, Option<f64>);
+pub type Progress<'a> = &'a mut dyn FnMut(Stage, Option<f64>);
 
 impl RunRecord {
     /// Whether `stage` ran.
@@ -170,7 +170,7 @@ pub fn run(scene: &Scene) -> Result<Results, SceneError> {
 /// does) before any other stage: it may refuse the run (a work budget that needs the
 /// profiles), or return whether to tell `progress` of each stage's start and end (a long
 /// run's progress).
-pub(crate) fn run_gated<E: From<SceneError>>(
+pub fn run_gated<E: From<SceneError>>(
     scene: &Scene,
     cache: Option<&PlacementCache>,
     gate: impl FnOnce(&Placement) -> Result<bool, E>,

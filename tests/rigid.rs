@@ -357,15 +357,26 @@ proptest! {
     }
 }
 
-/// The paper placement rebuilt from the analytic profiles sampled every `step` mm and read
-/// back through the CSV reader and an interpolating spline.
+/// The paper placement rebuilt from the analytic profiles sampled every `step` mm, written as
+/// a CSV profile (every digit of each point), read back through the CSV reader and fitted
+/// with an interpolating spline.
 fn resampled_placement(step: f64) -> Placement {
-    use wheelrail::profile::Profile;
     use wheelrail::profile::read::{ProfileFormat, parse_str};
+    use wheelrail::profile::{Profile, ProfileKind};
     use wheelrail::track::{Inclination, PlacedRail, PlacedWheel, SidePair};
     let sampled = |p: Profile| {
-        let table = wheelrail::outputs::tables::profile_points(&p, step).unwrap();
-        let text = table.to_csv_with(wheelrail::report::NumberFormat::Significant(17));
+        let header = match p.kind() {
+            ProfileKind::Wheel => "s_mm,F_mm",
+            ProfileKind::Rail => "y_mm,z_mm",
+        };
+        let text: String = std::iter::once(header.to_string())
+            .chain(
+                p.sample(step)
+                    .iter()
+                    .map(|r| format!("{:?},{:?}", r[0], r[1])),
+            )
+            .map(|line| line + "\n")
+            .collect();
         let points = parse_str(&text, ProfileFormat::Csv, p.kind(), "resampled").unwrap();
         Profile::from_points(points, 0.0).unwrap()
     };

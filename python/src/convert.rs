@@ -9,8 +9,8 @@ use std::fmt::Display;
 use wheelrail::plausible::Range;
 use wheelrail::profile::read::PointProfile;
 use wheelrail::profile::{Profile, ProfileKind};
-use wheelrail::report::{Column, ColumnData, Table};
 use wheelrail::scene::{ImageFormat, ProfileRef, Scene};
+use wheelrail_report::{Column, ColumnData, Table};
 
 pyo3::create_exception!(
     wheelrail,

@@ -4,7 +4,7 @@
 //! A thin skin: every function converts its arguments, calls the library with the
 //! interpreter released (`convert::detached`), and converts the result; no numerics live
 //! here, so the library's tests cover what it computes. Tables are the library's own
-//! (`wheelrail::outputs::tables`), handed to NumPy column by column without a copy: the
+//! (`wheelrail_report::outputs::tables`), handed to NumPy column by column without a copy: the
 //! same names and values as the CSV files of `wheelrail report`. Errors of input map to
 //! `wheelrail.InputError` (a `ValueError`) with the library's message, the one the command
 //! line prints (`convert::input`); a panic (a bug) becomes a `RuntimeError`, never an
@@ -23,16 +23,16 @@ use std::path::{Path, PathBuf};
 use wheelrail::conicity::DeltaR;
 use wheelrail::fleet::{Fleet, FleetError, Inputs, items_of_files, read_pairs};
 use wheelrail::hertz::Contact;
-use wheelrail::outputs;
 use wheelrail::pipeline::Stage;
 use wheelrail::plausible;
 use wheelrail::prelude::{
-    ConicityMethod, ConicitySettings, EllipseMethod, Error, Inclination, Material, Placement,
-    ProfileKind, ReadOptions, Scene, Solver, StepBack, Sweep, TrackLayout, conicity, hertz,
-    pipeline, read_profile_with, rigid,
+    ConicityMethod, ConicitySettings, EllipseMethod, Inclination, Material, Placement, ProfileKind,
+    ReadOptions, Scene, Solver, StepBack, Sweep, TrackLayout, conicity, hertz, pipeline,
+    read_profile_with, rigid,
 };
 use wheelrail::sweep::SweepError;
 use wheelrail::track::LayoutError;
+use wheelrail_report::outputs;
 
 /// The result of :func:`run`: the tables of every stage that ran and the checked scene.
 ///
@@ -117,7 +117,7 @@ fn run(py: Python<'_>, scene_path: PathBuf, stages: Option<Vec<String>>) -> PyRe
             Some(stages) => pipeline::run_on(&scene, pipeline::place(&scene)?, stages),
         };
         let tables = outputs::tables(&scene, &results)?;
-        Ok::<_, wheelrail::Error>((scene, results, tables))
+        Ok::<_, wheelrail_report::Error>((scene, results, tables))
     })?
     .map_err(input)?;
     let all = PyDict::new(py);
@@ -303,7 +303,7 @@ fn rigid_sweep<'py>(
         .map_err(|e| e.to_string())?;
         let sweep = rigid::search(&placement, &shifts, solver);
         let pair = conicity::assess(&sweep, &settings);
-        let table = |name: &'static str, t: Result<wheelrail::report::Table, _>| {
+        let table = |name: &'static str, t: Result<wheelrail_report::Table, _>| {
             t.map(|t| (name, t))
                 .map_err(|e| format!("internal error building {name}: {e}"))
         };
@@ -676,7 +676,7 @@ fn fleet<'py>(
         let fleet = Fleet::new(template, inputs, &items, false)?;
         let mut rows = Vec::with_capacity(items.len());
         fleet.assess_in_order(&items, |item| fleet.assess(item), |_, row| rows.push(row));
-        outputs::fleet::table(&fleet, &rows).map_err(Error::Table)
+        outputs::fleet::table(&fleet, &rows).map_err(wheelrail_report::Error::from)
     })?
     .map_err(input)?;
     table_dict(py, table)

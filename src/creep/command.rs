@@ -1,5 +1,5 @@
 //! The tangential problem of one elliptic patch from plain numbers, checked against the
-//! plausible ranges of `wheelrail creep`: what the command line (`creep::cli`, with the
+//! plausible ranges of `wheelrail creep`: what the command line (`wheelrail-cli`'s `creep` module, with the
 //! `cli` feature) and the Python binding's `creep_forces` share, so that both accept the same
 //! values and refuse the others with the same words.
 //!

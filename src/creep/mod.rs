@@ -47,8 +47,6 @@
 //!   flexibilities and their blending (`simpflex` in `src/m_hertz.f90`).
 //! * K.L. Johnson (1985), Contact Mechanics, Cambridge University Press, Ch. 8.
 
-#[cfg(feature = "cli")]
-pub mod cli;
 pub mod coefficients;
 #[doc(hidden)] // public for the command line and the Python binding's `creep_forces`
 pub mod command;
@@ -73,7 +71,6 @@ use tangential::{EllipticPatch, Tangential};
 
 /// The tangential model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum Method {
     /// Kalker's FASTSIM (module [`fastsim`]).
     #[default]
@@ -96,7 +93,6 @@ impl fmt::Display for Method {
 
 /// FASTSIM's traction bound `μ p(x, y)`: the shape of the pressure it assumes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum Bound {
     /// `p = 2 FN/(π a b) · (1 - x²/a² - y²/b²)`: Kalker's choice for FASTSIM, which makes
     /// its force-creepage curves closest to the exact theory's (Kalker 1990, §3.3).

@@ -71,8 +71,6 @@
 // (`tests/hertz.rs`); the study's result is `HertzAccuracy`.
 #[doc(hidden)]
 pub mod accuracy;
-#[cfg(feature = "cli")]
-pub mod cli;
 mod elliptic;
 mod exact;
 pub(crate) mod paper;
@@ -257,7 +255,6 @@ pub fn relative_curvatures(k: &PrincipalCurvatures, psi_rad: f64) -> (f64, f64) 
 
 /// How [`ellipse`] evaluates the elliptic integrals and the shape.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 pub enum EllipseMethod {
     /// AGM for `K`, `E`, cancellation-free shape equation, Newton in `ln(b/a)`: machine
     /// precision.

@@ -337,7 +337,7 @@ impl Jump {
 /// examined as a possible jump (mm).
 pub(crate) const JUMP_SCREEN_MM: f64 = 0.5;
 /// Jump intervals are refined by bisection to this width in `y_ws` (mm).
-pub(crate) const JUMP_REFINE_MM: f64 = 1e-4;
+pub const JUMP_REFINE_MM: f64 = 1e-4;
 /// After refinement a jump must still move the contact point this far (mm); a contact point
 /// that only moves fast shrinks its motion with the interval.
 pub(crate) const JUMP_CONFIRM_MM: f64 = 0.1;
@@ -495,7 +495,7 @@ pub(crate) fn contact_angle(p: &RigidPosition, side: Side) -> f64 {
 
 /// Shifts closer to 0 than this are the centred wheelset, where Wickens' parameters, ratios
 /// to `y_ws`, are undefined (mm; the sweep rounds its positions to 1e-9 mm).
-pub(crate) const WICKENS_CENTRE_MM: f64 = 1e-12;
+pub const WICKENS_CENTRE_MM: f64 = 1e-12;
 
 /// Wickens' linearisation parameters of one position (A. H. Wickens, Fundamentals of Rail
 /// Vehicle Dynamics, 2003), with `l0` half the lateral distance between the contact points

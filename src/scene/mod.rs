@@ -261,15 +261,31 @@ impl Scene {
             && self.rail_material == paper.rail_material
     }
 
+    /// The scene with other numerical settings: the rigid solver, the quasi-elastic
+    /// search's and the Hertz method (the variants a tradeoff study runs), each a checked
+    /// value.
+    pub fn with_numerics(
+        &self,
+        rigid_solver: crate::rigid::Solver,
+        quasi_elastic: crate::quasi_elastic::QuasiElasticSettings,
+        hertz_method: crate::hertz::EllipseMethod,
+    ) -> Scene {
+        let mut scene = self.clone();
+        scene.rigid_solver = rigid_solver;
+        scene.quasi_elastic = quasi_elastic;
+        scene.hertz.method = hertz_method;
+        scene
+    }
+
     /// Whether both wheels are one: the same profile at the same radius (placed once and
     /// cloned, a mirror-symmetric wheelset with [`Scene::same_rails`]).
-    pub(crate) fn same_wheels(&self) -> bool {
+    pub fn same_wheels(&self) -> bool {
         self.wheel_profiles[1] == self.wheel_profiles[0]
             && self.nominal_radius_mm[1].to_bits() == self.nominal_radius_mm[0].to_bits()
     }
 
     /// Whether both rails name the same profile (placed once and shared).
-    pub(crate) fn same_rails(&self) -> bool {
+    pub fn same_rails(&self) -> bool {
         self.rail_profiles[1] == self.rail_profiles[0]
     }
 

@@ -288,16 +288,6 @@ impl Placement {
         })
     }
 
-    /// Gives back the memory the contact searches keep with the wheels (their cell
-    /// bounds), once no search is left to run: what is made afterwards (a report's tables
-    /// and figures) reuses it instead of growing the process. A search run later builds
-    /// them again, the same.
-    #[cfg(feature = "cli")] // the report command's
-    pub(crate) fn release_search_memory(&mut self) {
-        let (left, right) = (&mut self.left.wheel, &mut self.right.wheel);
-        left.release_cells(right);
-    }
-
     /// The layout the sides were placed with.
     pub fn layout(&self) -> &TrackLayout {
         &self.layout

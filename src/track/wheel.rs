@@ -268,21 +268,6 @@ impl PlacedWheel {
         self.cells = Arc::clone(&other.cells);
     }
 
-    /// Gives back the memory of the cell bounds (the searches' bounds of the wheel, some
-    /// 245 kB on a 1000-point measured wheel), to be built again should a search need them
-    /// (the same bounds: they are a function of the wheel). Shares the new, empty bounds
-    /// with `other` where the two shared theirs.
-    #[cfg(feature = "cli")] // the report command's
-    pub(crate) fn release_cells(&mut self, other: &mut PlacedWheel) {
-        let shared = Arc::ptr_eq(&self.cells, &other.cells);
-        self.cells = Arc::default();
-        other.cells = if shared {
-            Arc::clone(&self.cells)
-        } else {
-            Arc::default()
-        };
-    }
-
     /// Whether `other` shares this wheel's cell bounds (a test of the sharing, which
     /// decides nothing).
     #[cfg(test)]

@@ -1,22 +1,20 @@
-//! Fixtures shared by the integration tests: the `wheelrail` binary and scratch folders, and
-//! the check that every non-finite number of a CSV output is flagged (`tests/robustness.rs`,
-//! `tests/adversarial.rs`). Each test file uses some of them (`mod common;`), hence the
-//! `dead_code` allowance.
+//! Fixtures shared by the integration tests of the numerics and of the program
+//! (`crates/cli/tests/common` includes this file): the checkout's root, scratch folders, the
+//! Manchester cases, and the check that every non-finite number of a CSV output is flagged.
+//! Each test file uses some of them (`mod common;`), hence the `dead_code` allowance.
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-/// The `wheelrail` binary, run from the checkout's root.
-pub fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_wheelrail"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
+use std::process::Output;
 
 /// The checkout's root.
 pub fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    // This file is compiled into the tests of the root package and of `crates/cli`.
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    manifest
+        .ancestors()
+        .find(|dir| dir.join("reports/paper/scene.toml").is_file())
+        .unwrap_or(manifest)
 }
 
 /// A fresh, empty folder under the target directory for one test.
@@ -25,19 +23,6 @@ pub fn scratch(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
-}
-
-/// Writes `text` as `dir/scene.toml` and runs `wheelrail report` on it into `dir/out`.
-pub fn report_scene(dir: &Path, text: &str) -> Output {
-    let scene = dir.join("scene.toml");
-    std::fs::write(&scene, text).unwrap();
-    bin()
-        .arg("report")
-        .arg(&scene)
-        .arg("--out")
-        .arg(dir.join("out"))
-        .output()
-        .unwrap()
 }
 
 /// Exit code `code`, no panic, and every piece of `must_contain` in standard error.

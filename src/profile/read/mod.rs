@@ -521,7 +521,7 @@ fn parse_with_hash(
 }
 
 /// SHA-256 of `bytes` as lower-case hex: the provenance hash of profile files and tables.
-pub(crate) fn sha256_hex(bytes: &[u8]) -> String {
+pub fn sha256_hex(bytes: &[u8]) -> String {
     use sha2::{Digest, Sha256};
     use std::fmt::Write;
     Sha256::digest(bytes)

@@ -375,7 +375,7 @@ impl PlacedRail {
     /// [`PlacedRail::point_of`] and [`PlacedRail::surface_at`], the same numbers from one
     /// walk along the profile, one evaluation a point instead of two looked up (the rail
     /// table of a report on the EN 15302 E1 rail: 0.32 -> 0.17 M instructions).
-    pub(crate) fn surface_along(&self, us: &[f64]) -> Vec<(f64, RailPoint)> {
+    pub fn surface_along(&self, us: &[f64]) -> Vec<(f64, RailPoint)> {
         let mut scan = self.profile.scan();
         us.iter()
             .map(|&u| {
