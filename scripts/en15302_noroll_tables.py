@@ -7,8 +7,8 @@ Usage (from the project's root; Python 3 standard library; a few minutes):
     python3 scripts/en15302_noroll_tables.py
 
 Each case as tests/data/en15302/cases_e1_e9.csv sets it (wheels per side, radii, rail), at
-the committed scenes' gauge of 1435.16 mm (each rail 0.08 mm further out than the files'
-frame of 1435 mm: --rail-offset-mm 0.08), shifts from -11 to 11 mm (the motions up to 7.5 mm
+the committed scenes' gauge of 1435 mm at the rail file's gauge point (the files' own frame:
+--rail-offset-mm 0), shifts from -11 to 11 mm (the motions up to 7.5 mm
 of the off-centre cases reach beyond -10 mm) in steps of 0.1 mm, of 0.01 mm for the
 cylindrical band of R-UIC519I (E4, E8), whose edge is a jump the Klingel integral of a
 table locates only to its step.
@@ -40,7 +40,7 @@ def main():
                 os.path.join(DATA, r["right_wheel"] + ".csv"),
                 os.path.join(DATA, r["rail"] + ".csv"),
                 os.path.join(tmp, case),
-                "--rail-offset-mm", "0.08", "--from-mm", "-11", "--to-mm", "11",
+                "--rail-offset-mm", "0", "--from-mm", "-11", "--to-mm", "11",
                 "--step-mm", step, "--radii-mm", str(radii[0]), str(radii[1]),
             ]
             jobs.append((case, r, step, subprocess.Popen(args)))
@@ -53,7 +53,7 @@ def main():
             iy, idr = head.index("y_ws_mm"), head.index("delta_r_mm")
             with open(os.path.join(OUT, f"{case}_delta_r.csv"), "w") as f:
                 f.write(f"# EN 15302 case {case}: left {r['left_wheel']} ({r['left_wheel_diameter_mm']} mm), "
-                        f"right {r['right_wheel']} ({r['right_wheel_diameter_mm']} mm), rail {r['rail']}, gauge 1435.16 mm\n")
+                        f"right {r['right_wheel']} ({r['right_wheel_diameter_mm']} mm), rail {r['rail']}, gauge 1435 mm\n")
                 f.write("# independent no-roll model (scripts/en15302_noroll.py, written by "
                         "scripts/en15302_noroll_tables.py), not wheelrail's rigid search\n")
                 f.write(f"# y lateral shift of the wheelset, positive to the left; delta_r = r_left - r_right; step {step} mm\n")

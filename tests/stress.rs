@@ -552,7 +552,9 @@ fn assert_converges_near_centre(sweep: &RigidSweep, context: &str) {
 /// The solution at `-y` of the mirrored wheelset equals the solution at `y` mirrored.
 /// Positions with a second contact within the two-point tolerance, or next to a contact
 /// jump, are skipped: there the last digits decide which of two equal minima is reported.
-fn assert_mirror(a: &RigidSweep, b: &RigidSweep, context: &str) {
+/// Asserts that at least `min_compared` positions were compared.
+fn assert_mirror(a: &RigidSweep, b: &RigidSweep, min_compared: usize, context: &str) {
+    let mut compared = 0;
     let near_jump = |s: &RigidSweep, y: f64| s.jumps().iter().any(|j| (j.y_from - y).abs() < 0.6);
     for pa in a.positions() {
         let Some(pb) = b
@@ -573,6 +575,7 @@ fn assert_mirror(a: &RigidSweep, b: &RigidSweep, context: &str) {
         if two_point {
             continue;
         }
+        compared += 1;
         assert!(
             (pa.roll + pb.roll).abs() < 1e-9,
             "{at}: roll {} vs {}",
@@ -610,6 +613,10 @@ fn assert_mirror(a: &RigidSweep, b: &RigidSweep, context: &str) {
             );
         }
     }
+    assert!(
+        compared >= min_compared,
+        "{context}: only {compared} positions compared (at least {min_compared})"
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -707,7 +714,9 @@ fn sparse_and_asymmetric_case(seed: u64, std_um: f64, smoothing: f64, incl: &str
     let sweep_ba = run(&ba, &ys, 0.01, &context);
     assert_converges_near_centre(&sweep_ab, &context);
     assert_converges_near_centre(&sweep_ba, &context);
-    assert_mirror(&sweep_ab, &sweep_ba, &context);
+    // Measured: 9 to 26 of the 29 positions over the random cases of two runs; the noisy
+    // wheel's contact jumps leave few positions 0.6 mm away from all of them.
+    assert_mirror(&sweep_ab, &sweep_ba, 4, &context);
 }
 
 /// A case where the roll iteration stalled (found by `sparse_and_asymmetric_wheelsets_mirror`
@@ -748,7 +757,9 @@ proptest! {
         let sweep = run(&placement, &ys, 0.01, &context);
         assert_converges_near_centre(&sweep, &context);
         // Symmetric input: the sweep is its own mirror image.
-        assert_mirror(&sweep, &sweep, &context);
+        // Measured: 4 to 35 of the 37 positions over the random cases of a run; the noisy profiles' many
+        // contact jumps leave few positions 0.6 mm away from all of them.
+        assert_mirror(&sweep, &sweep, 2, &context);
     }
 
     /// Sparse profiles (2 mm spacing), interpolated or smoothed, and a different noisy wheel
@@ -799,7 +810,8 @@ proptest! {
         ys.sort_by(f64::total_cmp);
         let lr = run(&scene_of(left_r, right_r), &ys, eps, &context);
         let rl = run(&scene_of(right_r, left_r), &ys, eps, &context);
-        assert_mirror(&lr, &rl, &context);
+        // Measured: 30 to 39 of the 43 positions over the random cases of a run.
+        assert_mirror(&lr, &rl, 20, &context);
         // With very unequal radii the axle tilts by up to 0.2 rad and the wheels reach
         // further; real wheelsets differ by millimetres.
         let realistic = (left_r - right_r).abs() <= 20.0;
@@ -865,11 +877,13 @@ fn rail_listed_backwards_shifted_or_mirrored_gives_the_same_solution() {
         ("mirrored", mirrored),
     ] {
         let got = solve(from_csv(ProfileKind::Rail, &copy, 0.0, "copy.csv"));
+        let mut compared = 0;
         for (a, b) in want.positions().iter().zip(got.positions()) {
             assert_eq!(a.stop, b.stop, "{name}, y_ws = {}", a.y_ws);
             if a.stop != Stop::Converged {
                 continue;
             }
+            compared += 1;
             // The spline through shifted points is the shifted spline up to rounding of
             // the coordinates (1e-14 mm); the solution moves by as little.
             assert!((a.roll - b.roll).abs() < 1e-10, "{name}, y_ws = {}", a.y_ws);
@@ -884,5 +898,7 @@ fn rail_listed_backwards_shifted_or_mirrored_gives_the_same_solution() {
                 );
             }
         }
+        // Measured: all 25 positions converge for each copy.
+        assert!(compared >= 20, "{name}: only {compared} positions compared");
     }
 }
