@@ -88,6 +88,9 @@ pub struct Profile {
     name: String,
     source: Source,
     shape: Shape,
+    /// The points a sampled profile was read from, as the spline was fitted to them (before
+    /// any smoothing); `None` for a built-in definition. Shared by clones, as the spline is.
+    points: Option<std::sync::Arc<[[f64; 2]]>>,
 }
 
 impl Profile {
@@ -104,6 +107,7 @@ impl Profile {
                 "S1002 (EN 13715, flange 28 / 32.5 mm), piecewise analytic definition (DLR, H. Netter)",
             ),
             shape: Shape::S1002,
+            points: None,
         }
     }
 
@@ -116,6 +120,7 @@ impl Profile {
                 "UIC60 / 60E1 head (EN 13674-1): arcs R300, R80, R13 and 1:20 flank, upright",
             ),
             shape: Shape::Uic60,
+            points: None,
         }
     }
 
@@ -163,6 +168,7 @@ impl Profile {
                 sha256: points.source.sha256.clone(),
             },
             shape: Shape::Sampled(std::sync::Arc::new(spline)),
+            points: Some(points.points.into()),
         })
     }
 
@@ -178,6 +184,24 @@ impl Profile {
                 }
                 _ => false,
             }
+            && match (&self.points, &other.points) {
+                (Some(a), Some(b)) => {
+                    std::sync::Arc::ptr_eq(a, b)
+                        || a.as_flattened()
+                            .iter()
+                            .map(|v| v.to_bits())
+                            .eq(b.as_flattened().iter().map(|v| v.to_bits()))
+                }
+                (a, b) => a.is_none() && b.is_none(),
+            }
+    }
+
+    /// The points a sampled profile was read from (`[u, v]` in mm, side frame, strictly
+    /// increasing `u`), as the reader kept them and before the spline's smoothing; `None`
+    /// for a built-in definition. What a gauge measured, for dimensions that must not
+    /// depend on the filter chosen for the contact (`maintenance::flange_dimensions`).
+    pub fn points(&self) -> Option<&[[f64; 2]]> {
+        self.points.as_deref()
     }
 
     /// Wheel or rail.

@@ -830,7 +830,7 @@ pub fn profile_points(
 }
 
 /// The definitions of the flange dimensions, as the tables and pages state them.
-pub const FLANGE_DIMENSIONS_TEXT: &str = "flange dimensions (EN 15313, UIC 510-2; TSI WAG Regulation (EU) No 321/2013 4.2.3.6.2 Figure 1): Sh flange height, the flange tip above the profile's point on the taping line (70 mm from the inner face, s = 0); Sd flange thickness, from the inner face (s = -70 mm) to the flank 10 mm above the taping-line point; qR, from the Sd point to the flank 2 mm below the tip";
+pub const FLANGE_DIMENSIONS_TEXT: &str = "flange dimensions (EN 15313, UIC 510-2; TSI WAG Regulation (EU) No 321/2013 4.2.3.6.2 Figure 1): Sh flange height, the flange tip above the profile's point on the taping line (70 mm from the inner face, s = 0); Sd flange thickness, from the inner face (s = -70 mm) to the flank 10 mm above the taping-line point; qR, from the Sd point to the flank 2 mm below the tip; measured on the wheel's points joined by straight lines (a built-in profile on its definition), whatever smoothing_wavelength_mm filters for the contact";
 
 /// The definitions of the rail wear, as the tables and pages state them.
 pub const RAIL_WEAR_TEXT: &str = "rail wear against the nominal rail, both upright (profile_inclination taken out) in the frame their files give (no fitting): vertical_wear, nominal minus measured height on the centre line (halfway between the nominal head's faces at the gauge-point depth); gauge_face_wear, how far the gauge face lies towards the field side of the nominal's at the gauge-point depth below the nominal top; positive where material is gone";
