@@ -284,8 +284,8 @@ fn quasi_elastic_positions(bencher: divan::Bencher, n: usize) {
 /// compiler can shorten: a product by a constant factor it can regroup), 3 cycles each on
 /// current x86_64 cores (Intel since Nehalem, AMD since Zen), so 3,000,000 cycles. The clock
 /// in GHz is 3 / the median in ms; with callgrind's instructions per call it gives the
-/// instructions per cycle of a benchmark (README, Speed). Measured in the same run as the
-/// benchmarks it converts: a virtual machine's clock moves with its host's load.
+/// instructions per cycle of a benchmark. Measured in the same run as the benchmarks it
+/// converts: a virtual machine's clock moves with its host's load.
 #[divan::bench]
 fn clock_reference() -> u64 {
     let mut x = black_box(3_u64);

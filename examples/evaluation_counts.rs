@@ -1,7 +1,8 @@
 //! How many gap evaluations each stage of a scene makes: the machine-independent side of
-//! the speed measurements (README, Speed). Counts coarse samples (a wheel sample against the
-//! rail's height table), exact gaps (with derivatives: Newton's steps, the certificate's
-//! cell ends, quadrature nodes), scans for basins, certificates and deep-search cells.
+//! the speed measurements (docs/performance.md). Counts coarse samples (a wheel sample
+//! against the rail's height table), exact gaps (with derivatives: Newton's steps, the
+//! certificate's cell ends, quadrature nodes), scans for basins, certificates and
+//! deep-search cells.
 //!
 //! Run with `cargo run --release --example evaluation_counts --features count-evaluations`
 //! (the counting is compiled in only with that feature). Without arguments: the paper

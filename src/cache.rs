@@ -18,10 +18,10 @@
 //!   [`PlacedRail::place`] reads).
 //!
 //! Only successes are kept: an unreadable file or a rail without a gauge point fails again,
-//! with the scene's own message. A lookup of a file reads and hashes its bytes (about 20 µs
-//! for a 1000-point file) before the profile is read on a miss, so a run of one scene does
-//! not use a cache. The cache holds at most its capacity of each (least recently used
-//! dropped first): a fleet of distinct files does not grow it.
+//! with the scene's own message. A lookup of a file reads and hashes its bytes before the
+//! profile is read on a miss, work without a return where each file is read once, so a run
+//! of one scene does not use a cache. The cache holds at most its capacity of each (least
+//! recently used dropped first): a fleet of distinct files does not grow it.
 //!
 //! ```
 //! use std::sync::Arc;

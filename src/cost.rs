@@ -26,8 +26,8 @@ pub const WRITE_BUDGET_BYTES: f64 = 1e8;
 const CSV_BYTES_PER_VALUE: f64 = 15.0;
 /// Values per row of the tables that have one row per position (`outputs::tables`: the
 /// column counts of `rigid.csv`, `quasi_elastic.csv`, `hertz.csv`; `qe_epsilon.csv` has
-/// 4 plus 2 per value of eps). A 100,001-position run measured 418, 315, 226 and 191 (5
-/// values of eps) bytes a row: the estimate errs high by 3 to 19 %.
+/// 4 plus 2 per value of eps). The counts are upper ones, so the estimate errs high
+/// (`tests/robustness.rs` holds it above what a long sweep writes, by less than a third).
 const RIGID_VALUES: f64 = 30.0;
 const QUASI_ELASTIC_VALUES: f64 = 25.0;
 const HERTZ_VALUES: f64 = 17.0;
@@ -55,8 +55,8 @@ const RIGID_PAPER_FACTOR: f64 = 27.0;
 pub const FLAT_GAP_CURVATURE_PER_MM: f64 = 1e-3;
 /// Nodes of a Gauss-Legendre panel (8 points, both halves of a piece).
 const GAUSS_NODES_PER_PANEL: f64 = 16.0;
-/// One conicity amplitude walks every piece of the Δr function at about 3 ns: this many
-/// pieces cost one gap evaluation.
+/// One conicity amplitude walks every piece of the Δr function, a few operations each: this
+/// many pieces cost about one gap evaluation.
 const CONICITY_PIECES_PER_EVALUATION: f64 = 25.0;
 
 /// The estimated work of a scene, the bytes it will write and what drives them.

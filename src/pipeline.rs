@@ -479,8 +479,8 @@ pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, 
 /// Runs `a` and `b` in parallel on a thread of a rayon pool (joining there costs
 /// microseconds), one after the other on any other thread (where starting the pool would
 /// cost more than the work saves). Both run either way, and each returns what it would
-/// alone: the results do not depend on the number of threads. The wheels and the rails of
-/// the EN 15302 scene of `benches/data` are 3.2 M and 7.2 M instructions.
+/// alone: the results do not depend on the number of threads. A scene's wheels and rails
+/// are the two halves (the rails, with their tables, the larger).
 pub(crate) fn join_in_pool<A, B, RA, RB>(a: A, b: B) -> (RA, RB)
 where
     A: FnOnce() -> RA + Send,
@@ -553,8 +553,7 @@ fn place_wheels_in(
     let same_profile = scene.wheel_profiles[1] == scene.wheel_profiles[0];
     let right = if scene.same_wheels() {
         // The same wheel: its clone shares the cell bounds the searches build on first use
-        // (0.75 M instructions and some 50 pages of memory per wheel on the EN 15302 scene
-        // of `benches/data`).
+        // (a function of the wheel alone, so built once for both).
         left.clone()
     } else if same_profile {
         place(1, left.profile().clone())?

@@ -49,10 +49,10 @@
 //! elongated contacts the fixed point jumps from `e = 0.5` to within 10⁻³ of its limit in two
 //! updates, so the loose `|Δe|` stop is not the limiting factor there. Near the circle the
 //! truncated series make the update leave `0 < e < 1` and the result is flagged
-//! [`Stop::LeftDomain`], although `b/a` is then within 10⁻³. The exact method is
-//! 1.7-6.4 times faster than the paper's (medians of `cargo bench --bench hertz`: 135-212 ns
-//! per solve against 227-1357 ns for `A/B` from 0.5 to 1e-3; 37 ns against 159 ns at the
-//! circle).
+//! [`Stop::LeftDomain`], although `b/a` is then within 10⁻³. The exact method is also the
+//! faster one, at every `A/B` from 1e-3 to 1 (`cargo bench --bench hertz` times both per
+//! solve): the arithmetic-geometric mean converges quadratically, where the paper's fixed
+//! point sums its series again at every update, with more terms as `e` nears 1.
 //!
 //! # References
 //!

@@ -149,8 +149,8 @@ impl HeightTable {
         if !(t >= 0.0 && t <= self.t_max) {
             return None;
         }
-        // Through i32 (the table is far shorter): one conversion each way, where usize
-        // would cost a dozen instructions for its saturation and sign handling.
+        // Through i32 (the table is far shorter): one conversion each way, where a usize
+        // conversion adds saturation and sign handling.
         let ti = t as i32;
         let [a, d] = self.z[ti as usize];
         Some(interpolate(a, t - f64::from(ti), d))

@@ -27,9 +27,9 @@ pub(crate) fn doubling_levels<T: Copy>(base: Vec<T>, join: impl Fn(T, T) -> T) -
 /// The levels of [`doubling_levels`] made as they are first asked for: the base at once, each
 /// level above it from the one below, by the same joins in the same order (the same numbers
 /// to the bit), when a run as long as its spans is first looked up. The searches of a
-/// sweep ask for runs of a few entries mostly: on the EN 15302 E1 pair the wheel's cell
-/// bounds were read on 5 of their 10 levels (runs of up to 31 cells); the five above, 96 kB,
-/// were never read.
+/// sweep ask for runs of a few entries mostly: on the EN 15302 E1 pair the searches read
+/// the wheel's cell bounds on 5 of their 10 levels (runs of up to 31 cells), and the five
+/// above are never made.
 #[derive(Debug, Clone)]
 pub(crate) struct LazyLevels<T> {
     /// The entries (level 0), read most often: a plain slice.

@@ -59,8 +59,8 @@ impl WheelCells {
     /// runs of `2^k` cells that cover `i..j`, for one cell the cell with itself, whose
     /// ranges are its own (`min(x, x)` and `max(x, x)` are `x`) and whose joint terms count
     /// twice (`jump + jump`, as the join sums them): one cell is read directly, the same
-    /// bits (the certificate asks for single cells most: about 60 instructions of a lookup
-    /// through the levels saved per call).
+    /// bits (the certificate asks for single cells most, and reads them without the lookup
+    /// through the levels).
     #[inline]
     pub(crate) fn over(&self, i: usize, j: usize) -> WheelCell {
         if j == i + 1 {
@@ -280,8 +280,7 @@ impl PlacedWheel {
         let s = |i: usize| lo + (hi - lo) * i as f64 / n as f64;
         let joints = self.profile.joints();
         // The height of each grid point evaluated once (the end of one cell and the start
-        // of the next), the value only, by a scan: the `z` of `at` to the bit
-        // (build_cells 0.46 -> 0.33 M instructions on the EN 15302 wheel).
+        // of the next), the value only, by a scan: the `z` of `at` to the bit.
         let mut scan = self.profile.scan();
         let mut z_of = |s: f64| -(self.nominal_radius_mm + scan.eval_slope(s)[0]);
         let mut z_a = z_of(s(0));

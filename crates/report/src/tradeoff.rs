@@ -314,9 +314,9 @@ pub struct Timing {
 /// Times `run(i, warm_up)` for each item `i` of `labels`: a warm-up round (each item once,
 /// untimed, `warm_up` true) and `repeats` (at least 1) timed rounds, every round over all
 /// items in its own random order from [`ORDER_SEED`]. The warm-up pays for an item's first
-/// use of code and data (measured on the scene study: its first setting 1.5 times slower
-/// than its twin). `progress(done, total, label)` is called before each run and once at the
-/// end (`done == total`, label `done`).
+/// use of code and data, which would otherwise make whichever item runs first look slower
+/// than an equal one run later. `progress(done, total, label)` is called before each run
+/// and once at the end (`done == total`, label `done`).
 fn timed_rounds<E>(
     labels: &[&str],
     repeats: usize,

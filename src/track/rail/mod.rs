@@ -133,8 +133,8 @@ impl Scan {
     fn of(profile: &Profile, rotation: UnitComplex<f64>, eval: impl ScanEval) -> Scan {
         let (lo, hi) = profile.domain();
         let n = ((hi - lo) / PLACEMENT_SCAN_STEP_MM).ceil() as usize;
-        // One plain loop (Scan::of 1.00 -> 0.75 M instructions on the EN 15302 rail): the
-        // samples increase, so the profile is evaluated by a scan (the same values as
+        // One plain loop: the samples increase, so the profile is evaluated by a scan
+        // (the same values as
         // `eval`), without the second derivative; `i as f64` is counted in floating point
         // (exact below 2^53), not converted from the index each time.
         let (width, count) = (hi - lo, n as f64);
@@ -374,7 +374,7 @@ impl PlacedRail {
     /// Along the increasing profile coordinates `us`: per `u` the side-frame `Y` of
     /// [`PlacedRail::point_of`] and [`PlacedRail::surface_at`], the same numbers from one
     /// walk along the profile, one evaluation a point instead of two looked up (the rail
-    /// table of a report on the EN 15302 E1 rail: 0.32 -> 0.17 M instructions).
+    /// table of a report evaluates every point of the profile).
     pub fn surface_along(&self, us: &[f64]) -> Vec<(f64, RailPoint)> {
         let mut scan = self.profile.scan();
         us.iter()
@@ -443,7 +443,8 @@ impl PlacedRail {
         let last = self.inverse.len() - 2;
         let t = (y - self.y_range.0) * self.inverse_scale;
         // `t >= 0` inside y_range, and the clamp keeps the last interval. Through i32 (the
-        // table is short): one conversion each way, where usize costs a dozen instructions.
+        // table is short): one conversion each way, where a usize conversion adds saturation
+        // and sign handling.
         let ti = (t as i32).min(last as i32);
         let f = t - f64::from(ti);
         let i = ti as usize;
@@ -539,8 +540,7 @@ impl PlacedRail {
             .map(|i| {
                 let y = if i == n { y_hi } else { y_lo + h * i as f64 };
                 // The slope at the root: Newton's own evaluation there where it ended on
-                // one (from the tangent of the entry before, most do), else evaluated
-                // (tabulate_inverse 0.43 -> 0.42 M instructions on the EN 15302 rail).
+                // one (from the tangent of the entry before, most do), else evaluated.
                 let (u, value, evaluated) = self.newton(y, guess, &mut eval);
                 let d1 = if evaluated { value[1] } else { eval(u)[1] };
                 let du_dy = 1.0 / (cos - sin * d1);

@@ -30,7 +30,7 @@ const KNOT_AT_END_T: f64 = 1e-6;
 /// Shortest part of a split piece (in units of `t`) that is tabulated; the rail is inverted
 /// on a shorter one. The interpolant's `Z''` takes the rounding `delta` of its end values
 /// (about 1e-13 mm: the translation into the side frame) as `delta / (len h)^2`: 5e-9 1/mm
-/// at a quarter piece, 1e-6 at 1/60 (measured on sampled UIC60 before this bound).
+/// at a quarter piece, 1e-6 at 1/60 (as sampled UIC60 gives without this bound).
 const MIN_SPLIT_T: f64 = 0.25;
 
 /// Quintic pieces of `Z(Y)`: monomial coefficients in `t = (Y - Y_i) / h` on `[0, 1]`; NaN
@@ -131,8 +131,7 @@ fn hermite_in_x(a: RailPoint, b: RailPoint, h: f64, len: f64) -> [f64; 6] {
 
 /// The monomial coefficients in `g` (units of the table step `h`) of the quintic Hermite
 /// interpolant of a whole piece, from `a` (at `g = 0`) to `b` (at `g = 1`): `x` is `g`
-/// (no division by 1 per coefficient: the table's share of a report's samples 2.41 ->
-/// 2.33 %).
+/// (no division by 1 per coefficient).
 fn quintic_piece(a: RailPoint, b: RailPoint, h: f64) -> [f64; 6] {
     hermite_in_x(a, b, h, 1.0)
 }
