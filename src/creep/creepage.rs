@@ -191,7 +191,7 @@ pub fn creepages(motion: &Motion, point: &ContactPoint) -> Result<Creepages, Cre
         ("rolling radius", point.rolling_radius_mm),
         ("contact angle", point.contact_angle_rad),
     ] {
-        super::finite(quantity, value)?;
+        super::error::finite(quantity, value)?;
     }
     if motion.speed_mm_s <= 0.0 {
         return Err(CreepError::NonPositiveSpeed {
@@ -205,7 +205,7 @@ pub fn creepages(motion: &Motion, point: &ContactPoint) -> Result<Creepages, Cre
             lead_mm: x_w,
         });
     }
-    super::check_contact_angle(point.contact_angle_rad)?;
+    super::error::check_contact_angle(point.contact_angle_rad)?;
 
     let rotation = motion.orientation();
     // The contact point in the track frame: r from the axle, x_w ahead of it.

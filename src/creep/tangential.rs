@@ -8,7 +8,8 @@
 
 use super::coefficients::{self, Coefficients};
 use super::creepage::Creepages;
-use super::{CreepError, Method, Settings, check_normal_force, check_semi_axes};
+use super::error::{check_normal_force, check_semi_axes};
+use super::{CreepError, Method, Settings};
 
 /// An elliptic contact patch and its normal force, checked by [`EllipticPatch::new`].
 ///

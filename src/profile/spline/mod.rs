@@ -21,17 +21,21 @@
 //! tip, i.e. away from the axle): `circ_r300.prr` gives -1/300 and `circ_r100.prw` -1/100.
 //!
 //! The parts: the spline and its evaluation (here), its fit (`fit.rs`), the filter that
-//! chooses its smoothing (`filter.rs`), and [`fornberg_weights`] (`fornberg.rs`).
+//! chooses its smoothing (`filter.rs`), the scan along it at increasing `x` (`walk.rs`), its
+//! errors (`error.rs`), and [`fornberg_weights`] (`fornberg.rs`).
 
+mod error;
 mod filter;
 mod fit;
 mod fornberg;
+mod walk;
 
+pub use error::SplineError;
 pub use filter::{DEFAULT_FILTER_WAVELENGTH_MM, default_lambda, lambda_for_wavelength};
 pub use fornberg::fornberg_weights;
+pub(crate) use walk::Walk;
 
 use super::bounds::DerivativeBounds;
-use std::fmt;
 
 /// Signed curvature (1/mm) of a graph with slope `d1` and second derivative `d2` (1/mm):
 /// `d2 / (1 + d1^2)^(3/2)`. Positive where the graph bends upwards.
@@ -44,73 +48,6 @@ use std::fmt;
 pub fn curvature(d1: f64, d2: f64) -> f64 {
     d2 / (1.0 + d1 * d1).powf(1.5)
 }
-
-/// Why a spline could not be fitted.
-#[derive(Debug, Clone, PartialEq)]
-pub enum SplineError {
-    /// Fewer than two points.
-    TooFewPoints {
-        /// Points given.
-        found: usize,
-    },
-    /// `x` and `y` differ in length.
-    LengthMismatch {
-        /// Length of `x`.
-        x: usize,
-        /// Length of `y`.
-        y: usize,
-    },
-    /// A coordinate is NaN or infinite.
-    NonFinite {
-        /// Index of the point.
-        index: usize,
-    },
-    /// `x[index]` is not larger than `x[index - 1]`.
-    NonIncreasing {
-        /// Index of the point.
-        index: usize,
-    },
-    /// `lambda` is negative or not finite.
-    InvalidLambda {
-        /// The value given.
-        lambda: f64,
-    },
-    /// The banded solve broke down (a pivot that should be positive was not), which only
-    /// extreme spacing ratios combined with extreme `lambda` can cause.
-    NumericalBreakdown {
-        /// Index of the interior knot where it happened.
-        index: usize,
-    },
-}
-
-impl fmt::Display for SplineError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            SplineError::TooFewPoints { found } => {
-                write!(f, "a spline needs at least 2 points, got {found}")
-            }
-            SplineError::LengthMismatch { x, y } => {
-                write!(f, "x has {x} values but y has {y}")
-            }
-            SplineError::NonFinite { index } => {
-                write!(f, "point {index} is NaN or infinite")
-            }
-            SplineError::NonIncreasing { index } => write!(
-                f,
-                "x must increase strictly, but x[{index}] <= x[{}]",
-                index.saturating_sub(1)
-            ),
-            SplineError::InvalidLambda { lambda } => {
-                write!(f, "smoothing parameter {lambda} must be finite and >= 0")
-            }
-            SplineError::NumericalBreakdown { index } => {
-                write!(f, "the spline system broke down at knot {index}")
-            }
-        }
-    }
-}
-
-impl std::error::Error for SplineError {}
 
 /// A cubic smoothing spline `f(x)` (Reinsch 1967; de Boor, *A Practical Guide to Splines*,
 /// ch. XIV; Green & Silverman 1994, sect. 2.3): among all functions with square-integrable
@@ -204,12 +141,7 @@ impl SmoothingSpline {
 
     /// A scan at increasing `x` from the first interval ([`Walk`]).
     pub(crate) fn walk_from_start(&self) -> Walk<'_> {
-        Walk {
-            knots: &self.knots,
-            coeffs: &self.coeffs,
-            interval: 0,
-            spline: self,
-        }
+        Walk::new(self)
     }
 
     /// Bounds of `f'` and `f''` over `[lo, hi]` (inside the domain): per cubic piece,
@@ -303,53 +235,6 @@ impl SmoothingSpline {
     }
 }
 
-/// A scan along a spline at increasing `x` ([`SmoothingSpline::walk_from_start`]): the
-/// interval of the previous `x` carried along and stepped forward to the last `i` with
-/// `knots[i] <= x`, instead of the bucket lookup of every [`SmoothingSpline::eval`] (half
-/// its work); the same interval, so the same bits as `eval`; an `x` below the previous
-/// interval, or NaN, takes the lookup. The spline's knots and coefficients are held as
-/// slices of its own, which a loop keeps in registers (through the spline, every
-/// evaluation reloads them after the loop's stores).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Walk<'a> {
-    knots: &'a [f64],
-    coeffs: &'a [[f64; 4]],
-    interval: usize,
-    spline: &'a SmoothingSpline,
-}
-
-impl Walk<'_> {
-    /// The value and slope of [`SmoothingSpline::eval`] at `x` (inside the domain, or NaN):
-    /// the same interval, the same operations, without the second derivative.
-    #[inline(always)]
-    pub(crate) fn eval_slope(&mut self, x: f64) -> [f64; 2] {
-        let i = self.step(x);
-        let [a, b, c, d] = self.coeffs[i];
-        let t = x - self.knots[i];
-        [
-            a + t * (b + t * (c + t * d)),
-            b + t * (2.0 * c + 3.0 * t * d),
-        ]
-    }
-
-    /// [`SmoothingSpline::eval`] at `x` (inside the domain, or NaN): the same interval, the
-    /// same cubic.
-    #[inline(always)]
-    pub(crate) fn eval(&mut self, x: f64) -> [f64; 3] {
-        let i = self.step(x);
-        cubic(self.coeffs[i], x - self.knots[i])
-    }
-
-    /// The interval of `x`, the walk moved to it (the lookup on a step back or NaN).
-    #[inline(always)]
-    fn step(&mut self, x: f64) -> usize {
-        let i = walk_forward(self.knots, self.interval, x)
-            .unwrap_or_else(|| self.spline.interval_cold(x));
-        self.interval = i;
-        i
-    }
-}
-
 /// `[f, f', f'']` of the cubic `a + b t + c t^2 + d t^3` at `t`: the one formula of every
 /// evaluation of a spline piece.
 #[inline(always)]
@@ -359,23 +244,6 @@ fn cubic([a, b, c, d]: [f64; 4], t: f64) -> [f64; 3] {
         b + t * (2.0 * c + 3.0 * t * d),
         2.0 * c + 6.0 * t * d,
     ]
-}
-
-/// The interval of `x` walking forward from the interval `from` (clamped to the last): the
-/// last `i` with `knots[i] <= x`; `None` where `x` is below `knots[from]` (a step back) or
-/// NaN.
-#[inline(always)]
-fn walk_forward(knots: &[f64], from: usize, x: f64) -> Option<usize> {
-    let last = knots.len() - 2;
-    let mut i = from.min(last);
-    if knots[i] <= x {
-        while i < last && knots[i + 1] <= x {
-            i += 1;
-        }
-        Some(i)
-    } else {
-        None
-    }
 }
 
 /// Steps from a bucket's interval after which [`SmoothingSpline::eval`] searches the
