@@ -334,7 +334,7 @@ pub(crate) fn caption(fig: Figure, scene: &Scene, results: &Results) -> String {
 }
 
 /// `text` with its first letter in upper case.
-fn capitalised(text: &str) -> String {
+pub(crate) fn capitalised(text: &str) -> String {
     let mut chars = text.chars();
     chars
         .next()

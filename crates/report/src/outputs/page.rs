@@ -1,6 +1,7 @@
 //! The content of `index.html`: what ran and what to watch (summary, notes), the scene's
 //! parameters, the provenance of its profiles, the pair's key results.
 
+use super::capitalised;
 use super::{figures, tables};
 use crate::{FigureEntry, ReportPage, TableEntry};
 use wheelrail::pipeline::Results;
@@ -81,7 +82,9 @@ fn summary_and_notes(scene: &Scene, results: &Results) -> (Vec<String>, Vec<Stri
             ));
         }
         for (y, label) in figures::flange_onsets(r) {
-            summary.push(format!("{label} from y_ws = {y} mm."));
+            // The onset is interpolated between sweep positions or is a jump's bracket: to
+            // a hundredth of a millimetre, as the key results give shifts elsewhere.
+            summary.push(format!("{} from y_ws = {y:.2} mm.", capitalised(label)));
         }
         if artefacts >= MANY_ARTEFACTS {
             notes.push(smoothing_hint(artefacts, scene.smoothing_wavelength_mm()));
