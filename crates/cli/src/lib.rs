@@ -351,63 +351,64 @@ fn report_in(
     })
 }
 
-/// The tolerances of golden comparisons. The solvers converge to 1e-9 or better, so
-/// anything beyond these bounds is a real change of the results: lengths 1e-4 mm (a tenth
-/// of a micrometre: where the contact is nearly conformal, as at the S1002 flange root
-/// against the R13 gauge corner near y_ws = 5.5 mm, the gap's curvature is 1e-5 1/mm and a
-/// residual of 1e-11 mm fixes the contact point only to about 1e-5 mm; CSVs carry 10
-/// significant digits, 1e-7 mm on a track-frame position); roll 1e-9 rad (well conditioned
-/// everywhere); contact angles and slopes 1e-5 (at such a contact the angle follows the
-/// point on a curved surface: 1e-5 mm on R13 is 8e-7 rad); curvatures at contact points 1e-6
-/// 1/mm (they follow the point along a polynomial section: 6.5e-8 measured at 5.5 mm),
-/// other curvatures 1e-9; pressures
-/// and Wickens' ratios (divided by small shifts) 1e-6 relative; iteration counts exact.
-/// Equivalent conicities 1e-5: a contact-point jump may move within its 1e-4 mm interval,
-/// which changes `S = ∫ Δr` by the jump's size times that (5e-5 mm² for a 0.5 mm jump,
-/// against `S` of about 1.6 mm² at 3 mm on the paper scene: about 1e-5 in tan γe). The
-/// parameters' `value` column 1e-4: it holds lengths (the flange onset, interpolated in
-/// the contact angle; Δr at ±3 mm) at the length tolerance, and conicities.
+/// The tolerances of golden comparisons: what the results may differ by on another platform
+/// (another C library's `sin`, `cos`, `exp` and `sqrt` differ by an ulp; the code is the
+/// same). A rounding-level perturbation of that kind, the paper scene's mirrored half solved
+/// position by position instead of mirrored (`tests/golden_tolerances.rs`, which checks that
+/// this policy accepts it), moves lengths by at most 1.4e-11 mm, angles 5e-14 rad,
+/// curvatures 6e-16 1/mm, pressures and loads 1e-12 relative and iteration counts by one,
+/// outside the conformal region below. The tolerances are about a hundred times that, and
+/// never below one unit in the tenth significant digit the CSV files keep (relative 2e-9):
+///
+/// - lengths 1e-9 mm, angles and slopes 1e-12, curvatures 1e-13 1/mm, Wickens' ratios and
+///   equivalent conicities 1e-9, iteration counts 2;
+/// - the jumps' ends (`rigid_jumps.csv`): bisection stops at `rigid::JUMP_REFINE_MM`
+///   (1e-4 mm), and a comparison of two nearly equal minima decided the other way on another
+///   platform moves an end by up to that width in the shift and, on the flange root where
+///   the contact runs 5-16 mm per mm of shift, 2e-3 mm on the wheel; a hollow's depth
+///   between two such minima 2e-5 mm (6.4e-6 mm under the perturbation above).
+///
+/// The conformal region of the paper scene, 5 mm <= |y_ws| <= 6.5 mm (the S1002 flange root
+/// on UIC60's gauge corner, the gap's curvature down to 1e-5 1/mm), amplifies the same
+/// perturbation a hundredfold (1.4e-10 mm in the rigid contact point, 1e-9 mm in the
+/// quasi-elastic one, 1e-10 relative in pressures): there the tolerances are a hundred times
+/// wider.
 pub fn golden_policy() -> TolerancePolicy {
-    let abs = |abs: f64| Tolerance { abs, rel: 0.0 };
-    let rel = |rel: f64| Tolerance { abs: 0.0, rel };
-    TolerancePolicy::new(Tolerance {
-        abs: 1e-12,
-        rel: 1e-9,
-    })
-    .suffix("_mm", abs(1e-4))
-    .suffix("_rad", abs(1e-9))
-    .suffix("_gamma_rad", abs(1e-5))
-    .suffix("tan_gamma", abs(1e-5))
-    .suffix("_per_mm", abs(1e-9))
-    .suffix("_curvature_per_mm", abs(1e-6))
-    .suffix("_MPa", rel(1e-6))
-    .suffix("_N", rel(1e-9))
-    .column(
-        "lambda",
-        Tolerance {
-            abs: 1e-9,
-            rel: 1e-6,
-        },
-    )
-    .column(
-        "epsilon",
-        Tolerance {
-            abs: 1e-9,
-            rel: 1e-6,
-        },
-    )
-    .column(
-        "sigma",
-        Tolerance {
-            abs: 1e-9,
-            rel: 1e-6,
-        },
-    )
-    .column("iterations", abs(0.0))
-    .column("tan_gamma_e_klingel", abs(1e-5))
-    .column("tan_gamma_e_regression", abs(1e-5))
-    .column("value", abs(1e-4))
-    .key_column("y_ws_mm")
+    let tolerance = |abs: f64, rel: f64| Tolerance { abs, rel };
+    // One unit in the tenth significant digit of the CSV files.
+    let digits = 2e-9;
+    // Lengths, angles and slopes, curvatures, Wickens' ratios and weight shares.
+    let rules = |mm: f64, rad: f64, per_mm: f64, ratio: f64| {
+        TolerancePolicy::new(tolerance(1e-12, digits))
+            .suffix("_mm", tolerance(mm, digits))
+            .suffix("_rad", tolerance(rad, digits))
+            .suffix("tan_gamma", tolerance(rad, digits))
+            .suffix("_per_mm", tolerance(per_mm, digits))
+            .suffix("_MPa", tolerance(0.0, digits))
+            .suffix("_N", tolerance(0.0, digits))
+            .suffix("weight_share", tolerance(ratio, digits))
+            .column("lambda", tolerance(ratio, digits))
+            .column("epsilon", tolerance(ratio, digits))
+            .column("sigma", tolerance(ratio, digits))
+            .column("iterations", tolerance(2.0, 0.0))
+            .column("tan_gamma_e_klingel", tolerance(1e-9, digits))
+            .column("tan_gamma_e_regression", tolerance(1e-9, digits))
+            .column("value", tolerance(1e-9, digits))
+            .column(
+                "y_from_mm",
+                tolerance(wheelrail::rigid::JUMP_REFINE_MM, 0.0),
+            )
+            .column("y_to_mm", tolerance(wheelrail::rigid::JUMP_REFINE_MM, 0.0))
+            .column("s_from_mm", tolerance(2e-3, 0.0))
+            .column("s_to_mm", tolerance(2e-3, 0.0))
+            .column("hollow_mm", tolerance(2e-5, 0.0))
+            .key_column("y_ws_mm")
+    };
+    let conformal = || rules(1e-7, 1e-10, 1e-11, 1e-7);
+    let why = "the conformal flange root";
+    rules(1e-9, 1e-12, 1e-13, 1e-9)
+        .region(-6.5, -5.0, why, conformal())
+        .region(5.0, 6.5, why, conformal())
 }
 
 /// `wheelrail tradeoff --replot`: the charts drawn again from the folder's `tradeoff.csv`

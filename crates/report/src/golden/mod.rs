@@ -190,9 +190,13 @@ pub fn compare(expected: &Table, actual: &Table, policy: &TolerancePolicy) -> Co
             continue;
         };
         let diff = match (&e.data, &a.data) {
-            (ColumnData::Numeric(ev), ColumnData::Numeric(av)) => {
-                compare_numeric(ev, av, policy.tolerance_for(&e.name), keys)
-            }
+            (ColumnData::Numeric(ev), ColumnData::Numeric(av)) => compare_numeric(
+                ev,
+                av,
+                policy.tolerance_for(&e.name),
+                |row| policy.tolerance_at(&e.name, keys.and_then(|k| k.get(row).copied())),
+                keys,
+            ),
             (ColumnData::Text(ev), ColumnData::Text(av)) => compare_text(ev, av),
             // A column without rows reads back as numeric whatever it held.
             (ed, ad) if ed.is_empty() || ad.is_empty() => None,
@@ -208,16 +212,19 @@ pub fn compare(expected: &Table, actual: &Table, policy: &TolerancePolicy) -> Co
     out
 }
 
+/// `tolerance` is the column's rule outside any region (reported), `at` the rule of a row.
 fn compare_numeric(
     expected: &[f64],
     actual: &[f64],
     tolerance: Tolerance,
+    at: impl Fn(usize) -> Tolerance,
     keys: Option<&[f64]>,
 ) -> Option<ColumnDiff> {
     let mut failing = 0;
     let mut worst: Option<NumericFailure> = None;
     let mut first = Vec::new();
     for (row, (&e, &a)) in expected.iter().zip(actual).enumerate() {
+        let tolerance = at(row);
         if tolerance.accepts(e, a) {
             continue;
         }

@@ -97,6 +97,17 @@ pub struct TolerancePolicy {
     columns: Vec<(String, Tolerance)>,
     suffixes: Vec<(String, Tolerance)>,
     pub(super) key_column: Option<String>,
+    /// Rows whose key lies in `[from, to]`, with the rules that hold there instead.
+    regions: Vec<Region>,
+}
+
+/// Rows of a key range with rules of their own (see [`TolerancePolicy::region`]).
+#[derive(Debug, Clone, PartialEq)]
+struct Region {
+    from: f64,
+    to: f64,
+    why: String,
+    policy: TolerancePolicy,
 }
 
 impl TolerancePolicy {
@@ -107,6 +118,7 @@ impl TolerancePolicy {
             columns: Vec::new(),
             suffixes: Vec::new(),
             key_column: None,
+            regions: Vec::new(),
         }
     }
 
@@ -132,7 +144,38 @@ impl TolerancePolicy {
         self
     }
 
-    /// The tolerance for column `name`.
+    /// Applies `policy` instead of this one to the rows whose key column (see
+    /// [`TolerancePolicy::key_column`]) lies in `[from, to]`: a region where the results are
+    /// known to be less well determined, named by `why` in [`TolerancePolicy::markdown`].
+    /// Tables without the key column are compared with this policy's own rules. A region
+    /// on both sides of zero is two calls with the same `why`, listed once.
+    pub fn region(
+        mut self,
+        from: f64,
+        to: f64,
+        why: impl Into<String>,
+        policy: TolerancePolicy,
+    ) -> Self {
+        self.regions.push(Region {
+            from,
+            to,
+            why: why.into(),
+            policy,
+        });
+        self
+    }
+
+    /// The tolerance for column `name` in a row whose key is `key` (`None`: a table without
+    /// the key column).
+    pub fn tolerance_at(&self, name: &str, key: Option<f64>) -> Tolerance {
+        key.and_then(|k| self.regions.iter().find(|r| (r.from..=r.to).contains(&k)))
+            .map_or_else(
+                || self.tolerance_for(name),
+                |r| r.policy.tolerance_for(name),
+            )
+    }
+
+    /// The tolerance for column `name` (outside any region).
     pub fn tolerance_for(&self, name: &str) -> Tolerance {
         if let Some((_, tol)) = self.columns.iter().find(|(n, _)| n == name) {
             return *tol;
@@ -146,21 +189,41 @@ impl TolerancePolicy {
 }
 
 impl TolerancePolicy {
-    /// The policy as a Markdown table (rule, absolute, relative), exact columns first, then
-    /// suffixes from the longest (the most specific), then the default: what the README
-    /// quotes, so that a test can hold the two together.
+    /// The policy as Markdown tables (rule, absolute, relative), exact columns first, then
+    /// suffixes from the longest (the most specific), then the default; then each region's
+    /// rules under a line naming it: what the README quotes, so that a test can hold the two
+    /// together.
     pub fn markdown(&self) -> String {
-        let number = |x: f64| {
-            if x == 0.0 {
-                "0".to_string()
-            } else {
-                format!("{x:e}")
+        let mut out = self.rules_markdown(None);
+        let key = self.key_column.as_deref().unwrap_or("key");
+        let mut listed: Vec<&str> = Vec::new();
+        for r in &self.regions {
+            if listed.contains(&r.why.as_str()) {
+                continue;
             }
-        };
+            listed.push(&r.why);
+            let ranges: Vec<String> = self
+                .regions
+                .iter()
+                .filter(|o| o.why == r.why)
+                .map(|o| format!("{} <= {key} <= {}", o.from, o.to))
+                .collect();
+            out.push_str(&format!(
+                "\nWhere {} ({}), the rules that differ:\n\n",
+                ranges.join(" or "),
+                r.why
+            ));
+            out.push_str(&r.policy.rules_markdown(Some(self)));
+        }
+        out
+    }
+
+    /// The rules as (rule, tolerance) rows: exact columns, suffixes from the longest, the
+    /// default.
+    fn rows(&self) -> Vec<(String, Tolerance)> {
         let mut suffixes = self.suffixes.clone();
         suffixes.sort_by(|a, b| b.0.len().cmp(&a.0.len()).then(a.0.cmp(&b.0)));
-        let rows = self
-            .columns
+        self.columns
             .iter()
             .map(|(n, t)| (format!("column `{n}`"), *t))
             .chain(
@@ -171,9 +234,22 @@ impl TolerancePolicy {
             .chain(std::iter::once((
                 "any other column".to_string(),
                 self.default,
-            )));
+            )))
+            .collect()
+    }
+
+    /// The rules as a Markdown table, leaving out those `outside` has the same.
+    fn rules_markdown(&self, outside: Option<&TolerancePolicy>) -> String {
+        let number = |x: f64| {
+            if x.fract() == 0.0 && x.abs() < 1e6 {
+                format!("{x}")
+            } else {
+                format!("{x:e}")
+            }
+        };
+        let same = outside.map(TolerancePolicy::rows).unwrap_or_default();
         let mut out = String::from("| columns | absolute | relative |\n|---|---|---|\n");
-        for (rule, t) in rows {
+        for (rule, t) in self.rows().into_iter().filter(|row| !same.contains(row)) {
             out.push_str(&format!(
                 "| {rule} | {} | {} |\n",
                 number(t.abs),
