@@ -132,7 +132,7 @@ fn golden_check_passes_and_fails_beyond_tolerance() {
         String::from_utf8_lossy(&o.stdout)
     );
 
-    // Perturb one roll angle by 2e-9 rad (tolerance 1e-9): the check fails and names it.
+    // Perturb one roll angle by twice its tolerance: the check fails and names it.
     let dir = scratch("golden_perturbed");
     for e in std::fs::read_dir(root().join("golden/paper"))
         .unwrap()
@@ -150,7 +150,12 @@ fn golden_check_passes_and_fails_beyond_tolerance() {
     let row = header + 250;
     let mut cells: Vec<String> = lines[row].split(',').map(String::from).collect();
     let roll: f64 = cells[roll_col].parse().unwrap();
-    cells[roll_col] = format!("{:.12e}", roll + 2e-9);
+    let y_ws: f64 = cells[0].parse().unwrap();
+    let allowed = wheelrail_cli::golden_policy()
+        .tolerance_at("roll_rad", Some(y_ws))
+        .allowance(roll);
+    // Twice the allowance fails.
+    cells[roll_col] = format!("{:.12e}", roll + 2.0 * allowed);
     lines[row] = cells.join(",");
     std::fs::write(dir.join("rigid.csv"), lines.join("\n") + "\n").unwrap();
     let o = bin()
@@ -165,8 +170,8 @@ fn golden_check_passes_and_fails_beyond_tolerance() {
         "{out}"
     );
 
-    // Within tolerance (5e-10 rad) it passes.
-    cells[roll_col] = format!("{:.12e}", roll + 5e-10);
+    // Within tolerance (half the allowance) it passes.
+    cells[roll_col] = format!("{:.12e}", roll + 0.5 * allowed);
     lines[row] = cells.join(",");
     std::fs::write(dir.join("rigid.csv"), lines.join("\n") + "\n").unwrap();
     let o = bin()
