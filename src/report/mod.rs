@@ -42,12 +42,10 @@
 
 #[cfg(feature = "cli")]
 pub mod chart;
-mod csv_out;
 #[cfg(feature = "cli")]
 pub mod golden;
 #[cfg(feature = "cli")]
 pub mod html;
-mod number;
 pub mod table;
 
 #[cfg(feature = "cli")]
