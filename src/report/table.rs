@@ -376,20 +376,22 @@ impl Table {
         // Writing into a Vec cannot fail, and every record has the header's length.
         let expect = "CSV writer into memory";
         writer.write_record(self.column_names()).expect(expect);
+        // One record and one number's text, reused row by row.
+        let mut record = csv::ByteRecord::with_capacity(0, self.columns.len());
         let mut number = String::new();
         for row in 0..self.n_rows() {
+            record.clear();
             for c in &self.columns {
                 match &c.data {
                     ColumnData::Numeric(v) => {
                         number.clear();
                         push_number(&mut number, v[row], format);
-                        writer.write_field(&number).expect(expect);
+                        record.push_field(number.as_bytes());
                     }
-                    ColumnData::Text(v) => writer.write_field(v[row].as_bytes()).expect(expect),
+                    ColumnData::Text(v) => record.push_field(v[row].as_bytes()),
                 }
             }
-            // No fields given: ends the record of the fields written above.
-            writer.write_record(None::<&[u8]>).expect(expect);
+            writer.write_byte_record(&record).expect(expect);
         }
         writer.into_inner().expect(expect)
     }
