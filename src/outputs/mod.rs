@@ -63,13 +63,29 @@ fn table_error(e: report::TableError) -> Error {
 /// Only internal inconsistencies (a bug), as [`Error::Table`].
 pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error> {
     let mut out = Vec::new();
-    let mut push = |file: &str, description: &str, table: Table| {
-        out.push(NamedTable {
-            file: file.to_string(),
-            description: description.to_string(),
-            table,
-        });
-    };
+    profile_tables(scene, results, &mut out)?;
+    contact_tables(scene, results, &mut out)?;
+    assessment_tables(results, &mut out)?;
+    Ok(out)
+}
+
+/// Appends `table` to `out` as the file `file`.
+fn push_table(out: &mut Vec<NamedTable>, file: &str, description: &str, table: Table) {
+    out.push(NamedTable {
+        file: file.to_string(),
+        description: description.to_string(),
+        table,
+    });
+}
+
+/// The profiles' tables: the wheels, the rails as placed, their dimensions and wear.
+fn profile_tables(
+    scene: &Scene,
+    results: &Results,
+    out: &mut Vec<NamedTable>,
+) -> Result<(), Error> {
+    let mut push =
+        |file: &str, description: &str, table: Table| push_table(out, file, description, table);
     let p = &results.placement;
     push(
         "wheel_profile.csv",
@@ -100,6 +116,17 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
         "flange dimensions Sh, Sd, qR of the wheels against their limits; rail wear against the nominal rail",
         tables::profile_dimensions(p, &results.maintenance).map_err(table_error)?,
     );
+    Ok(())
+}
+
+/// The contact searches' tables: rigid, quasi-elastic, eps sensitivity, Hertz.
+fn contact_tables(
+    scene: &Scene,
+    results: &Results,
+    out: &mut Vec<NamedTable>,
+) -> Result<(), Error> {
+    let mut push =
+        |file: &str, description: &str, table: Table| push_table(out, file, description, table);
     if let Some(r) = &results.rigid {
         push(
             "rigid.csv",
@@ -133,6 +160,14 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
             tables::hertz(h, &scene.hertz).map_err(table_error)?,
         );
     }
+    Ok(())
+}
+
+/// The tables that assess the contact, in this order: equivalent conicity and the pair's
+/// parameters, creep forces, the contact table, the accuracy of the paper's Hertz numerics.
+fn assessment_tables(results: &Results, out: &mut Vec<NamedTable>) -> Result<(), Error> {
+    let mut push =
+        |file: &str, description: &str, table: Table| push_table(out, file, description, table);
     if let Some(c) = &results.conicity {
         push(
             "equivalent_conicity.csv",
@@ -172,7 +207,7 @@ pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error
             ratio,
         );
     }
-    Ok(out)
+    Ok(())
 }
 
 #[cfg(feature = "cli")]
