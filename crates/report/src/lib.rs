@@ -42,11 +42,9 @@
 //! ```
 
 pub mod chart;
-mod csv_out;
 mod error;
 pub mod golden;
 pub mod html;
-mod number;
 pub mod outputs;
 pub mod table;
 pub mod tradeoff;

@@ -24,8 +24,6 @@
 //!   changed line in a diff. Not-a-number is `NaN`, infinities are `inf` and `-inf`.
 //! * Text is quoted only when needed (commas, quotes, line breaks), as RFC 4180 says.
 
-use super::csv_out::{needs_quotes, push_csv_field, push_csv_record, record_end};
-use super::number;
 use std::borrow::Cow;
 use std::fmt;
 
@@ -355,18 +353,11 @@ impl Table {
         String::from_utf8(self.to_csv_bytes(format)).expect("CSV of UTF-8 strings is UTF-8")
     }
 
-    /// The bytes of [`Table::to_csv_with`], for a file: UTF-8 by construction (the names,
-    /// comments and text cells are strings, the rest ASCII), so not checked again (the
-    /// tables of the EN 15302 E1 comparison scene are 213 kB).
+    /// The bytes of [`Table::to_csv_with`]: the comment lines, then the header and the rows
+    /// as the csv crate writes them (quotes only where a field needs them, `\n` after each
+    /// record).
     pub(crate) fn to_csv_bytes(&self, format: NumberFormat) -> Vec<u8> {
-        // One buffer for the whole text, comments included (no copy into a second one).
-        let comments: usize = self.comments.iter().map(|c| c.len() + 3).sum();
-        // A number, its comma and the row's end (`""` and `\n`) fit `row_room`; the rows are
-        // written with that much room after them (see below).
-        let row_room = (number::TEXT + 1) * self.columns.len() + 3;
-        let mut bytes = Vec::with_capacity(
-            comments + 16 * self.columns.len() * (self.n_rows() + 1) + row_room + ROOM_AHEAD,
-        );
+        let mut bytes = Vec::new();
         for c in &self.comments {
             if c.is_empty() {
                 bytes.extend_from_slice(b"#\n");
@@ -379,30 +370,30 @@ impl Table {
         if self.columns.is_empty() {
             return bytes;
         }
-        // The csv crate's quoting (`QuoteStyle::Necessary`, `\n` records: see
-        // `push_csv_field`), written directly: numbers never need quotes.
-        push_csv_record(&mut bytes, self.column_names().map(str::as_bytes));
-        // The rows are written by index into bytes already there (zeros, made ahead a row's
-        // worst case at a time, see `make_room`) and cut to length at the end: no capacity
-        // check and no length update for every byte or number. A number's text goes straight
-        // into place (see `number::put_ten`), and a text field without quotes is copied in;
-        // a quoted field and a number off the ten-digit path are put together in `scratch`
-        // and copied in. The tables of the EN 15302 E1 comparison scene
-        // (`../shared/peer/awrcc/compare.sh`, 12,349 numbers) took 3.14 M instructions
-        // appended to a `Vec` number by number, 2.98 M so.
-        let cells: Vec<Cells<'_>> = self
-            .columns
-            .iter()
-            .map(|c| match &c.data {
-                ColumnData::Numeric(v) => Cells::Numbers(v),
-                ColumnData::Text(v) => Cells::Text(v),
-            })
-            .collect();
-        let at = write_rows(&mut bytes, &cells, self.n_rows(), format, row_room);
-        bytes.truncate(at);
-        // The estimate above is generous; the allocator gives the rest back in place.
-        bytes.shrink_to_fit();
-        bytes
+        let mut writer = csv::WriterBuilder::new()
+            .terminator(csv::Terminator::Any(b'\n'))
+            .from_writer(bytes);
+        // Writing into a Vec cannot fail, and every record has the header's length.
+        let expect = "CSV writer into memory";
+        writer.write_record(self.column_names()).expect(expect);
+        // One record and one number's text, reused row by row.
+        let mut record = csv::ByteRecord::with_capacity(0, self.columns.len());
+        let mut number = String::new();
+        for row in 0..self.n_rows() {
+            record.clear();
+            for c in &self.columns {
+                match &c.data {
+                    ColumnData::Numeric(v) => {
+                        number.clear();
+                        push_number(&mut number, v[row], format);
+                        record.push_field(number.as_bytes());
+                    }
+                    ColumnData::Text(v) => record.push_field(v[row].as_bytes()),
+                }
+            }
+            writer.write_byte_record(&record).expect(expect);
+        }
+        writer.into_inner().expect(expect)
     }
 
     /// Reads a table written by [`Table::to_csv`] (or any comma-separated file with a header).
@@ -473,105 +464,29 @@ impl Table {
 /// assert_eq!(format_number(1.5e-7, NumberFormat::Shortest), "1.5e-7");
 /// assert_eq!(format_number(f64::NAN, NumberFormat::Shortest), "NaN");
 /// assert_eq!(format_number(760.53, NumberFormat::Significant(3)), "7.61e2");
+/// assert_eq!(format_number(-0.0, NumberFormat::Significant(3)), "-0.00e0");
 /// ```
 pub fn format_number(x: f64, format: NumberFormat) -> String {
-    let mut out = Vec::new();
+    let mut out = String::new();
     push_number(&mut out, x, format);
-    String::from_utf8(out).expect("numbers are ASCII")
+    out
 }
 
-/// Writes the rows of `cells` (`n_rows` each) from the end of `bytes` as
-/// [`Table::to_csv_with`] says, with `row_room` bytes of room made after every row's start
-/// and more as text needs it; returns where the text ends (`bytes` is zeros after it).
-#[inline(always)]
-fn write_rows(
-    bytes: &mut Vec<u8>,
-    cells: &[Cells<'_>],
-    n_rows: usize,
-    format: NumberFormat,
-    row_room: usize,
-) -> usize {
-    let ten = format == NumberFormat::Significant(10);
-    let mut scratch = Vec::new();
-    let mut at = bytes.len();
-    for row in 0..n_rows {
-        make_room(bytes, at + row_room);
-        let start = at;
-        for (i, c) in cells.iter().enumerate() {
-            if i > 0 {
-                bytes[at] = b',';
-                at += 1;
-            }
-            match c {
-                Cells::Numbers(v) => {
-                    let x = v[row];
-                    if ten {
-                        let window = bytes[at..].first_chunk_mut().expect("row_room made");
-                        if let Some(len) = number::put_ten(window, x) {
-                            at += len;
-                            continue;
-                        }
-                    }
-                    push_number(&mut scratch, x, format);
-                }
-                Cells::Text(v) => {
-                    let field = v[row].as_bytes();
-                    if !needs_quotes(field) {
-                        make_room(bytes, at + field.len() + row_room);
-                        bytes[at..at + field.len()].copy_from_slice(field);
-                        at += field.len();
-                        continue;
-                    }
-                    push_csv_field(&mut scratch, field);
-                }
-            }
-            make_room(bytes, at + scratch.len() + row_room);
-            bytes[at..at + scratch.len()].copy_from_slice(&scratch);
-            at += scratch.len();
-            scratch.clear();
-        }
-        let end = record_end(at == start);
-        bytes[at..at + end.len()].copy_from_slice(end);
-        at += end.len();
-    }
-    at
-}
-
-/// A column's cells as [`Table::to_csv_with`] reads them.
-enum Cells<'a> {
-    Numbers(&'a [f64]),
-    Text(&'a [Cow<'static, str>]),
-}
-
-/// How far [`make_room`] makes bytes beyond what is asked, so that it extends the buffer
-/// once for several rows (a `memset` call each time) and touches at most some of a page
-/// that the text will not reach.
-const ROOM_AHEAD: usize = 1024;
-
-/// Makes `bytes` at least `len` long (zeros past its end), and some [`ROOM_AHEAD`] more
-/// within the capacity it has.
-#[inline(always)]
-fn make_room(bytes: &mut Vec<u8>, len: usize) {
-    if bytes.len() < len {
-        let to = len.max((bytes.len() + ROOM_AHEAD).min(bytes.capacity()));
-        bytes.resize(to, 0);
-    }
-}
-
-/// Appends [`format_number`]'s text of `x` to `out` (the reports' ten digits are written in
-/// place by [`Table::to_csv_with`] before this is called).
-#[inline(never)]
-fn push_number(out: &mut Vec<u8>, x: f64, format: NumberFormat) {
-    use std::io::Write;
+/// Appends [`format_number`]'s text of `x` to `out`: the standard library's formatting
+/// (`{}` and `{:e}` are the shortest text that reads back to the same `f64`, `{:.N$e}` is
+/// correctly rounded), with the spellings of the module docs for not-a-number and the
+/// infinities.
+fn push_number(out: &mut String, x: f64, format: NumberFormat) {
+    use std::fmt::Write;
     if x.is_nan() {
-        out.extend_from_slice(b"NaN");
+        out.push_str("NaN");
         return;
     }
     if x.is_infinite() {
-        out.extend_from_slice(if x > 0.0 { b"inf" } else { b"-inf" });
+        out.push_str(if x > 0.0 { "inf" } else { "-inf" });
         return;
     }
-    // Writing to a Vec cannot fail.
+    // Writing to a String cannot fail.
     let _ = match format {
         NumberFormat::Shortest => {
             let a = x.abs();
@@ -582,13 +497,8 @@ fn push_number(out: &mut Vec<u8>, x: f64, format: NumberFormat) {
             }
         }
         NumberFormat::Significant(n) => {
-            let digits = n.clamp(1, 17);
-            if number::push_significant(out, x, u32::from(digits)) {
-                Ok(())
-            } else {
-                let prec = usize::from(digits) - 1;
-                write!(out, "{x:.prec$e}")
-            }
+            let prec = usize::from(n.clamp(1, 17)) - 1;
+            write!(out, "{x:.prec$e}")
         }
     };
 }
@@ -625,6 +535,42 @@ mod tests {
         let s = format_number(x, NumberFormat::Significant(17));
         assert_eq!(s.parse::<f64>().unwrap().to_bits(), x.to_bits());
         assert_eq!(format_number(x, NumberFormat::Significant(0)), "3e-1");
+    }
+
+    #[test]
+    fn special_values_keep_their_spelling() {
+        // The reports' format (10 significant digits) and the default: NaN, the infinities
+        // and a signed zero as the module docs spell them, so that they read back.
+        for format in [NumberFormat::Significant(10), NumberFormat::Shortest] {
+            assert_eq!(format_number(f64::NAN, format), "NaN");
+            assert_eq!(format_number(f64::INFINITY, format), "inf");
+            assert_eq!(format_number(f64::NEG_INFINITY, format), "-inf");
+        }
+        let ten = NumberFormat::Significant(10);
+        assert_eq!(format_number(0.0, ten), "0.000000000e0");
+        assert_eq!(format_number(-0.0, ten), "-0.000000000e0");
+        assert_eq!(format_number(-1.5e-7, ten), "-1.500000000e-7");
+        assert_eq!(format_number(-0.0, NumberFormat::Shortest), "-0");
+        for text in ["NaN", "inf", "-inf", "-0.000000000e0"] {
+            assert!(text.parse::<f64>().is_ok(), "{text}");
+        }
+    }
+
+    #[test]
+    fn quoting_is_the_csv_crates() {
+        // Fields that need quotes (a comma, a quote, a line break) and a row of one empty
+        // field (`""`, not a blank line) read back as they were.
+        let t = Table::builder()
+            .comment("c")
+            .text("a", ["b,c", "say \"hi\"", "two\nlines", ""])
+            .build()
+            .unwrap();
+        let csv = t.to_csv();
+        assert_eq!(
+            csv,
+            "# c\na\n\"b,c\"\n\"say \"\"hi\"\"\"\n\"two\nlines\"\n\"\"\n"
+        );
+        assert_eq!(Table::parse_csv(&csv).unwrap(), t);
     }
 
     #[test]

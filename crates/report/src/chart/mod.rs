@@ -54,11 +54,9 @@ use plotters::prelude::*;
 
 mod draw;
 mod geometry;
-mod svg;
 mod text;
 mod ticks;
 
-use svg::SvgWriter;
 use text::TextMode;
 
 /// The Okabe–Ito colour-blind-safe palette, reordered so that the first colours contrast most on
@@ -515,7 +513,8 @@ pub fn render_svg(figure: &Figure) -> Result<String, ChartError> {
     check_figure(figure)?;
     let mut svg = String::new();
     {
-        let root = SvgWriter::new(&mut svg, (figure.width, figure.height)).into_drawing_area();
+        let root =
+            SVGBackend::with_string(&mut svg, (figure.width, figure.height)).into_drawing_area();
         draw::draw_figure(&root, figure, DrawOptions::svg())?;
         root.present().map_err(drawing_error)?;
     }
@@ -611,7 +610,7 @@ pub struct PanelLayout {
 pub fn layout(figure: &Figure) -> Result<Vec<PanelLayout>, ChartError> {
     check_figure(figure)?;
     let mut svg = String::new();
-    let root = SvgWriter::new(&mut svg, (figure.width, figure.height)).into_drawing_area();
+    let root = SVGBackend::with_string(&mut svg, (figure.width, figure.height)).into_drawing_area();
     draw::draw_figure(&root, figure, DrawOptions::svg())
 }
 

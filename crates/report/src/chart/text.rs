@@ -63,10 +63,8 @@ impl TextSpec {
     }
 
     /// Calls `f` with the font of this size, made once per size: making one looks the family
-    /// up in plotters' font table and copies the font's parsed tables, ~2.4 k instructions,
-    /// which the EN 15302 E1 comparison scene's figure (`../shared/peer/awrcc/compare.sh`)
-    /// paid 36 times (its SVG 1.788 -> 1.754 M instructions so). `f` must not make fonts
-    /// itself.
+    /// up in plotters' font table and copies the font's parsed tables. `f` must not make
+    /// fonts itself.
     fn with_font<T>(&self, f: impl FnOnce(&FontDesc<'static>) -> T) -> T {
         let key = self.px.to_bits();
         FONTS.with(|fonts| {
@@ -151,9 +149,7 @@ pub(super) fn draw_text<DB: DrawingBackend>(
         (place.at.0 - along, place.at.1 - across)
     };
     // The style made in one piece: each of plotters' builder steps (`color`, `pos`,
-    // `transform`) clones the font, and a clone copies the font's parsed tables. The 18
-    // texts of the EN 15302 E1 comparison scene's figure (`../shared/peer/awrcc/compare.sh`)
-    // took 0.55 M instructions with the builder, 0.35 M so.
+    // `transform`) clones the font, and a clone copies the font's parsed tables.
     let font = if place.upwards {
         spec.with_font(|font| font.transform(FontTransform::Rotate270))
     } else {

@@ -58,27 +58,29 @@ fn table_error(e: crate::TableError) -> Error {
 /// Only internal inconsistencies (a bug), as [`Error::Table`].
 pub fn tables(scene: &Scene, results: &Results) -> Result<Vec<NamedTable>, Error> {
     let mut out = Vec::new();
-    each_table(scene, results, |t| out.push(t))?;
+    profile_tables(scene, results, &mut out)?;
+    contact_tables(scene, results, &mut out)?;
+    assessment_tables(results, &mut out)?;
     Ok(out)
 }
 
-/// [`tables`] one at a time: `f` is given each table as soon as it is made, so that a
-/// caller that writes it out (its CSV, see [`render`]) holds one table at a time, not all.
-///
-/// # Errors
-/// As [`tables`].
-fn each_table(
+/// Appends `table` to `out` as the file `file`.
+fn push_table(out: &mut Vec<NamedTable>, file: &str, description: &str, table: Table) {
+    out.push(NamedTable {
+        file: file.to_string(),
+        description: description.to_string(),
+        table,
+    });
+}
+
+/// The profiles' tables: the wheels, the rails as placed, their dimensions and wear.
+fn profile_tables(
     scene: &Scene,
     results: &Results,
-    mut f: impl FnMut(NamedTable),
+    out: &mut Vec<NamedTable>,
 ) -> Result<(), Error> {
-    let mut push = |file: &str, description: &str, table: Table| {
-        f(NamedTable {
-            file: file.to_string(),
-            description: description.to_string(),
-            table,
-        });
-    };
+    let mut push =
+        |file: &str, description: &str, table: Table| push_table(out, file, description, table);
     let p = &results.placement;
     push(
         "wheel_profile.csv",
@@ -109,6 +111,17 @@ fn each_table(
         "flange dimensions Sh, Sd, qR of the wheels against their limits; rail wear against the nominal rail",
         tables::profile_dimensions(p, &results.maintenance).map_err(table_error)?,
     );
+    Ok(())
+}
+
+/// The contact searches' tables: rigid, quasi-elastic, eps sensitivity, Hertz.
+fn contact_tables(
+    scene: &Scene,
+    results: &Results,
+    out: &mut Vec<NamedTable>,
+) -> Result<(), Error> {
+    let mut push =
+        |file: &str, description: &str, table: Table| push_table(out, file, description, table);
     if let Some(r) = &results.rigid {
         push(
             "rigid.csv",
@@ -142,6 +155,14 @@ fn each_table(
             tables::hertz(h, scene.hertz()).map_err(table_error)?,
         );
     }
+    Ok(())
+}
+
+/// The tables that assess the contact, in this order: equivalent conicity and the pair's
+/// parameters, creep forces, the contact table, the accuracy of the paper's Hertz numerics.
+fn assessment_tables(results: &Results, out: &mut Vec<NamedTable>) -> Result<(), Error> {
+    let mut push =
+        |file: &str, description: &str, table: Table| push_table(out, file, description, table);
     if let Some(c) = &results.conicity {
         push(
             "equivalent_conicity.csv",
@@ -340,10 +361,10 @@ pub(crate) fn capitalised(text: &str) -> String {
         .next()
         .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }
-
-/// Every output file of a scene: tables, figures in the scene's formats, and `index.html`.
-/// `extra` figures (already written by another command, such as `wheelrail tradeoff`) are
-/// listed in the page after the scene's own.
+/// Every output file of a scene: its tables, then its figures in the scene's formats (made
+/// in parallel on rayon's pool, one figure a task), then `index.html`. `extra` figures
+/// (already written by another command, such as `wheelrail tradeoff`) are listed in the page
+/// after the scene's own.
 ///
 /// # Errors
 /// [`Error::Chart`] when a figure cannot be rendered.
@@ -352,132 +373,80 @@ pub fn render(
     results: &Results,
     extra: &[FigureEntry],
 ) -> Result<Vec<OutputFile>, Error> {
-    let (mut files, mut figures) = (Vec::new(), Vec::new());
-    let page = render_into(
-        scene,
-        results,
-        extra,
-        |f| {
-            files.push(f);
-            Ok(())
-        },
-        |f| {
-            figures.push(f);
-            Ok(())
-        },
-    )?;
-    // The tables, then the figures, then the page.
-    files.append(&mut figures);
-    files.push(page);
-    Ok(files)
-}
-
-/// [`render`] file by file: `put` is given each file as soon as it is made (`index.html`
-/// last), so that a caller that writes it out holds one file's bytes at a time, not all (the
-/// report of the EN 15302 E1 comparison scene: 341 -> 330 page faults, as `perf stat` counts
-/// them). On two threads of a pool the tables and the figures are made at once and take
-/// turns to hand their files over, so that their order is not [`render`]'s.
-///
-/// # Errors
-/// [`Error::Chart`] when a figure cannot be rendered; the first error of `put` (the tables
-/// after one of theirs are not written out, the figures stop at one of their own).
-pub fn render_each(
-    scene: &Scene,
-    results: &Results,
-    extra: &[FigureEntry],
-    put: impl FnMut(OutputFile) -> Result<(), Error> + Send,
-) -> Result<(), Error> {
-    let put = std::sync::Mutex::new(put);
-    // A panic of the other thread reaches the caller through the join.
-    let put = |f: OutputFile| {
-        put.lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)(f)
-    };
-    let page = render_into(scene, results, extra, put, put)?;
-    put(page)
-}
-
-/// The tables, each handed to `put_table` as soon as it is made, and the figures, each to
-/// `put_figure`; returns the report page, made last.
-fn render_into(
-    scene: &Scene,
-    results: &Results,
-    extra: &[FigureEntry],
-    mut put_table: impl FnMut(OutputFile) -> Result<(), Error> + Send,
-    put_figure: impl FnMut(OutputFile) -> Result<(), Error> + Send,
-) -> Result<OutputFile, Error> {
-    // The tables and the figures are independent: on two threads of a pool they are
-    // rendered at once (4.7 M and 3.5 M instructions on the EN 15302 scene of
-    // `benches/data`).
-    //
-    // Each table is handed over as soon as it is made and then dropped: the columns of one
-    // table at a time are held, not those of all beside all their CSV text (on the EN 15302
-    // scene some 170 kB, 40 pages the process no longer faults in).
-    let (tables, figures) = rayon::join(
-        || -> Result<_, Error> {
-            let mut listed = Vec::new();
-            let mut handed = Ok(());
-            each_table(scene, results, |t| {
-                if handed.is_ok() {
-                    handed = put_table(OutputFile {
-                        name: t.file.clone(),
-                        bytes: t.table.to_csv_bytes(CSV_FORMAT),
-                    });
-                }
-                listed.push((t.file, t.description));
-            })?;
-            handed.map(|()| listed)
-        },
-        || figure_files(scene, results, put_figure),
-    );
-    let tables = tables?;
-    let mut entries = figures?;
-    entries.extend_from_slice(extra);
-    let page = page::report_page(scene, results, &tables, entries);
-    Ok(OutputFile {
+    use rayon::prelude::*;
+    let tables = tables(scene, results)?;
+    let figures: Vec<Vec<OutputFile>> = scene
+        .figures()
+        .par_iter()
+        .map(|&fig| chart_files(fig.name(), &figure(fig, results)?, scene.formats()))
+        .collect::<Result<_, _>>()?;
+    let entries: Vec<FigureEntry> = scene
+        .figures()
+        .iter()
+        .map(|&fig| figure_entry(fig.name(), caption(fig, scene, results), scene.formats()))
+        .chain(extra.iter().cloned())
+        .collect();
+    let listed: Vec<(String, String)> = tables
+        .iter()
+        .map(|t| (t.file.clone(), t.description.clone()))
+        .collect();
+    let page = page::report_page(scene, results, &listed, entries);
+    let mut files: Vec<OutputFile> = tables
+        .into_iter()
+        .map(|t| OutputFile {
+            bytes: t.table.to_csv_bytes(CSV_FORMAT),
+            name: t.file,
+        })
+        .collect();
+    files.extend(figures.into_iter().flatten());
+    files.push(OutputFile {
         name: "index.html".into(),
         bytes: crate::render_html(&page).into_bytes(),
-    })
+    });
+    Ok(files)
 }
-
-/// The scene's figures in each of its formats, each file handed to `put`; their entries on
-/// the report page.
-fn figure_files(
-    scene: &Scene,
-    results: &Results,
-    mut put: impl FnMut(OutputFile) -> Result<(), Error>,
-) -> Result<Vec<FigureEntry>, Error> {
-    let mut entries = Vec::new();
-    for &fig in scene.figures() {
-        let chart = figure(fig, results)?;
-        let mut entry = FigureEntry {
-            name: fig.name().to_string(),
-            caption: caption(fig, scene, results),
-            svg: String::new(),
-            png: String::new(),
-        };
-        for format in scene.formats() {
-            let (name, bytes) = match format {
-                ImageFormat::Svg => (
-                    format!("{}.svg", fig.name()),
-                    crate::render_svg(&chart)
-                        .map_err(|e| Error::Chart(fig.name().into(), e))?
-                        .into_bytes(),
-                ),
-                ImageFormat::Png => (
-                    format!("{}.png", fig.name()),
-                    crate::render_png(&chart).map_err(|e| Error::Chart(fig.name().into(), e))?,
-                ),
-            };
-            match format {
-                ImageFormat::Svg => entry.svg = name.clone(),
-                ImageFormat::Png => entry.png = name.clone(),
-            }
-            put(OutputFile { name, bytes })?;
+/// The files of the chart `name` in each of `formats` (`NAME.svg`, `NAME.png`).
+///
+/// # Errors
+/// [`Error::Chart`] naming the chart when it cannot be rendered.
+pub(crate) fn chart_files(
+    name: &str,
+    chart: &crate::Figure,
+    formats: &[ImageFormat],
+) -> Result<Vec<OutputFile>, Error> {
+    let fail = |e| Error::Chart(name.into(), e);
+    formats
+        .iter()
+        .map(|format| {
+            Ok(match format {
+                ImageFormat::Svg => OutputFile {
+                    name: format!("{name}.svg"),
+                    bytes: crate::render_svg(chart).map_err(fail)?.into_bytes(),
+                },
+                ImageFormat::Png => OutputFile {
+                    name: format!("{name}.png"),
+                    bytes: crate::render_png(chart).map_err(fail)?,
+                },
+            })
+        })
+        .collect()
+}
+/// The report page's entry of the chart `name`, with the files [`chart_files`] makes of it
+/// in `formats` (an empty name for a format not made).
+pub(crate) fn figure_entry(name: &str, caption: String, formats: &[ImageFormat]) -> FigureEntry {
+    let file = |format: ImageFormat, extension: &str| {
+        if formats.contains(&format) {
+            format!("{name}.{extension}")
+        } else {
+            String::new()
         }
-        entries.push(entry);
+    };
+    FigureEntry {
+        name: name.to_string(),
+        caption,
+        svg: file(ImageFormat::Svg, "svg"),
+        png: file(ImageFormat::Png, "png"),
     }
-    Ok(entries)
 }
 
 /// A study of `wheelrail tradeoff`: run time against error of the scene's numerical settings
@@ -537,25 +506,11 @@ impl Study {
         formats: &[ImageFormat],
     ) -> Result<Vec<OutputFile>, Error> {
         let name = self.name();
-        let chart = self.chart(points);
         let mut files = vec![OutputFile {
             name: format!("{name}.csv"),
             bytes: csv.into_bytes(),
         }];
-        for f in formats {
-            files.push(match f {
-                ImageFormat::Svg => OutputFile {
-                    name: format!("{name}.svg"),
-                    bytes: crate::render_svg(&chart)
-                        .map_err(|e| Error::Chart(name.into(), e))?
-                        .into_bytes(),
-                },
-                ImageFormat::Png => OutputFile {
-                    name: format!("{name}.png"),
-                    bytes: crate::render_png(&chart).map_err(|e| Error::Chart(name.into(), e))?,
-                },
-            });
-        }
+        files.extend(chart_files(name, &self.chart(points), formats)?);
         Ok(files)
     }
 

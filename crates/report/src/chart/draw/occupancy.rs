@@ -240,7 +240,7 @@ impl Occupancy {
         // A box is looked at only where it would be nearer than the best so far, and a row
         // only where its nearest place would be (a distance is at least 4 times the row's
         // distance to the nearer corner row): the same place as testing every box in scan
-        // order (12,741 boxes for the EN 15302 Δr chart, 2 M instructions), for a fraction.
+        // order, for a fraction of the boxes.
         let beats =
             |best: Option<(i64, (i32, i32))>, distance: i64| best.is_none_or(|(d, _)| distance < d);
         for y in (y0..=y1).step_by(step).chain(std::iter::once(y1)) {
@@ -269,8 +269,7 @@ impl Occupancy {
 /// The summed-area table of `occupied` (row-major, `cols` wide): row by row, each entry
 /// the one above plus the row's running count, the rows walked as slices (no index
 /// checked). The same integers as adding and subtracting the three neighbours at every
-/// cell, for 143 k instead of 441 k instructions on the grid of the EN 15302 E1 comparison
-/// scene's figure (`../shared/peer/awrcc/compare.sh`).
+/// cell.
 fn summed_area(occupied: &[bool], cols: usize) -> Vec<u32> {
     let width = cols + 1;
     let rows = occupied.len().checked_div(cols).unwrap_or(0);

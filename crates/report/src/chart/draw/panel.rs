@@ -259,8 +259,7 @@ struct Placed {
     /// The labels, placed first, in the final plot.
     labels: Vec<Label>,
     /// What each series draws in the final plot: thinned once, for the labels' grid and for
-    /// drawing (thinning twice cost the EN 15302 E1 comparison scene's figure 0.1 M
-    /// instructions: 1.754 -> 1.654 M).
+    /// drawing.
     drawn: Vec<Drawn>,
 }
 
