@@ -120,7 +120,7 @@ pub fn csv_header(fleet: &Fleet, template_path: &str) -> String {
     let inputs = fleet.inputs();
     if inputs.has_wheels() {
         lines.push(format!(
-            "sh_mm, sd_mm, qr_mm (per wheel for pairs: left_, right_): {} ",
+            "sh_mm, sd_mm, qr_mm (per wheel for pairs: left_, right_): {}",
             super::super::tables::FLANGE_DIMENSIONS_TEXT
         ));
         let radii = t.nominal_radius_mm();
