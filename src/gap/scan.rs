@@ -24,10 +24,10 @@ use crate::track::HeightTable;
 use wide::f64x4;
 
 /// Half the width in `delta` of the box of poses a [`PoseBox`] holds (mm): ten positions of
-/// a sweep at 0.1 mm steps on either side of the pose it was made at. Measured on the paper
-/// sweep (instructions of `rigid_default`, with [`POSE_BOX_SIN`] at 1e-3 times this): 0.5
-/// mm 18.9M, 1 mm 18.5M, 2 mm 18.7M (a wider box makes fewer boxes but looser bounds, so
-/// more blocks are bounded at their pose).
+/// a sweep at 0.1 mm steps on either side of the pose it was made at. A wider box is made
+/// less often but bounds more loosely, so that more blocks are bounded at their pose
+/// instead; a narrower one is made again more often. 1 mm does the least work of the
+/// paper sweep between 0.5 and 2 mm (with [`POSE_BOX_SIN`] at 1e-3 times this).
 pub(crate) const POSE_BOX_DELTA_MM: f64 = 1.0;
 /// Half the width in `sin(phi)` of the box of poses a [`PoseBox`] holds: a roll change of
 /// 1e-3 rad moves a wheel point by at most 1e-3 times its distance from the reference point
@@ -202,10 +202,9 @@ fn extent_span([yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4], pose: &SidePose) -> [f64;
 
 /// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
 /// wheel point against the highest rail point under it) is too high to matter is skipped.
-/// Wider blocks have looser bounds (more samples evaluated in vain: 47% of the evaluated
-/// blocks of 16 on the paper sweep, 40% of blocks of 8) but fewer bounds, box entries and
-/// certificate blocks; measured instructions per call of `rigid_default`: 4 samples 24.1M,
-/// 8 20.0M, 16 19.4M, 32 22.0M.
+/// Wider blocks have looser bounds (more samples evaluated in vain) but fewer bounds, box
+/// entries and certificate blocks; 16 does the least work of the paper sweep among 4, 8, 16
+/// and 32.
 pub(super) const SCAN_BLOCK: usize = 16;
 
 /// The coarse samples of block `b` inside `first..last`.
@@ -303,8 +302,7 @@ impl SampledMinima {
     /// The samples `i0..` with the gaps `gaps` (an evaluated block), as [`Self::step`] on
     /// each in turn: the same compares and the same minima kept in the same order, four
     /// samples tested at a time in SIMD lanes (minima are rare: a lane mask that is all
-    /// zero passes four samples at once). On the EN 15302 E1 scene the scans' loop over
-    /// their samples took about 9.5 instructions a sample one by one.
+    /// zero passes four samples at once), instead of a compare and a branch per sample.
     #[inline]
     fn block(&mut self, gaps: &[f64], i0: usize) {
         let n = gaps.len();
@@ -475,8 +473,7 @@ impl SideGap<'_> {
     /// `sin Yw` are zeros, which leave a sum unchanged but for the sign of a zero `Y`
     /// (`delta + Yw = -0` needs both -0), and the height of a signed zero is the same
     /// height. Four multiplications and two additions fewer a group of four samples, and
-    /// a loop the compiler keeps in registers: on the EN 15302 E1 scene the sweep's scans
-    /// (with their blocks' gaps) 1.54 -> 1.33 M instructions.
+    /// a loop the compiler keeps in registers.
     #[inline(always)]
     fn block_gaps_posed<const LEVEL: bool>(
         &self,
@@ -705,8 +702,7 @@ impl SideGap<'_> {
 /// `coarse.partition_point(below)` (`below` holds for the samples up to some `Yw` and for
 /// none after), found by walking from the sample whose `Yw` would be `yw` were the samples
 /// evenly spaced in it (they are without yaw): the same index, in a few tests of `below`
-/// instead of the ten of a bisection of 541 samples (about 110 instructions saved per
-/// call, two calls per scan).
+/// instead of the ten of a bisection of 541 samples (two calls per scan).
 #[inline]
 pub(super) fn partition_near(
     coarse: &[[f64; 3]],
