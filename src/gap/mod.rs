@@ -356,6 +356,27 @@ impl<'a> SideGap<'a> {
         self.at_wheel_point(s, self.pair.wheel.at(s), pose)
     }
 
+    /// [`SideGap::at`] where the caller knows whether the side is [`yawed`](SideGap::yawed)
+    /// (`YAWED`), for loops that decide it once: without yaw the profile's point itself, no
+    /// outline and no test.
+    #[inline(always)]
+    pub(crate) fn at_as<const YAWED: bool>(&self, s: f64, pose: &SidePose) -> Option<GapPoint> {
+        debug_assert_eq!(YAWED, self.yawed());
+        if !self.in_domain(s) {
+            return None;
+        }
+        count!(ExactGap, 1);
+        let wheel = self.pair.wheel.at(s);
+        let wheel = if YAWED {
+            self.yaw.outline(wheel)?
+        } else {
+            wheel
+        };
+        let yz = pose.apply(wheel.y, wheel.z);
+        let rail = self.rail.at(yz[0])?;
+        Some(Self::gap_point(s, wheel, pose, yz, rail))
+    }
+
     /// [`SideGap::at`] with the wheel point at `s` given (`wheel = self.wheel().at(s)`,
     /// evaluated by the caller, e.g. in SIMD lanes); `s` must lie inside the wheel's domain.
     #[inline]
