@@ -21,6 +21,7 @@ mod hollow;
 mod low;
 mod minimum;
 mod outline;
+mod pose_box;
 mod scan;
 mod tabulated;
 #[cfg(test)]
@@ -34,7 +35,8 @@ use tabulated::Tables;
 pub use bound::CERTIFY_TOL_MM;
 pub use certify::Certificate;
 pub use contact::ContactPoint;
-pub(crate) use scan::{PoseBox, Scanned};
+pub(crate) use pose_box::PoseBox;
+pub(crate) use scan::Scanned;
 pub use yaw::{MAX_SLOPE_TAN, MIN_DY_DS, Yaw, YawModel};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
