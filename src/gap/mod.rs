@@ -9,10 +9,12 @@
 //!
 //! The layer both contact searches ([`crate::rigid`], [`crate::quasi_elastic`]) stand on:
 //! the pose and the gap at a wheel point (here), the coarse scans for basins (`scan.rs`) and
-//! low regions (`low.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
-//! profiles (`tabulated.rs`); and the [`ContactPoint`] both searches report (`contact.rs`).
-//! The rigid search's minimum is certified global at the solution (`certify.rs`, on the
-//! bounds of `bound.rs`): no point of the gap lies lower by more than a stated tolerance.
+//! low regions (`low.rs`) with their block bounds over boxes of poses (`pose_box.rs`),
+//! exact minima in a basin (`minimum.rs`), the paper's tabulated profiles (`tabulated.rs`),
+//! the wheel a yaw shows the rail (`yaw.rs`, `outline.rs`); and the [`ContactPoint`] both
+//! searches report (`contact.rs`). The rigid search's minimum is certified global at the
+//! solution (`certify.rs`, on the bounds of `bound.rs`): no point of the gap lies lower by
+//! more than a stated tolerance.
 
 mod bound;
 mod certify;
