@@ -35,7 +35,8 @@
 //! certified minimum against full scans every 0.002 mm.
 
 use super::bound::{CERTIFY_TOL_MM, Search, curvature_range, joint_terms, pose_trig, span};
-use super::scan::{PoseBox, SCAN_BLOCK, Scanned, block_samples};
+use super::pose_box::PoseBox;
+use super::scan::{SCAN_BLOCK, Scanned, block_samples};
 use super::{GapPoint, SideGap, SidePose};
 use crate::track::{HEIGHT_TABLE_STEP_MM, WheelCells};
 

@@ -115,7 +115,20 @@ impl SideGap<'_> {
         q.filter(|q| q.dg * outwards > 0.0)
     }
 
-    pub(super) fn newton_in(
+    /// The minimum of the gap in `[lo, hi]` from `s0`: safeguarded Newton steps, bisection
+    /// where a step leaves the bracket, the bracket ends where they are clearly lower.
+    pub(super) fn newton_in(&self, lo: f64, hi: f64, s0: f64, pose: &SidePose) -> Option<GapPoint> {
+        // Whether the wheel is yawed, decided once for the whole iteration: the unyawed
+        // evaluations are the profile's alone, with no test and no outline between.
+        if self.yawed() {
+            self.newton_as::<true>(lo, hi, s0, pose)
+        } else {
+            self.newton_as::<false>(lo, hi, s0, pose)
+        }
+    }
+
+    /// [`SideGap::newton_in`] on a side that is [`yawed`](SideGap::yawed) or not (`YAWED`).
+    fn newton_as<const YAWED: bool>(
         &self,
         mut lo: f64,
         mut hi: f64,
@@ -127,11 +140,11 @@ impl SideGap<'_> {
         // end at a smooth interior minimum.
         let mut p_lo: Option<Option<GapPoint>> = None;
         let mut p_hi: Option<Option<GapPoint>> = None;
-        let mut p = match self.at(s0, pose) {
+        let mut p = match self.at_as::<YAWED>(s0, pose) {
             Some(p) => p,
             None => {
-                let a = self.at(lo, pose);
-                let b = self.at(hi, pose);
+                let a = self.at_as::<YAWED>(lo, pose);
+                let b = self.at_as::<YAWED>(hi, pose);
                 (p_lo, p_hi) = (Some(a), Some(b));
                 a.or(b)?
             }
@@ -146,8 +159,10 @@ impl SideGap<'_> {
                 lo = p.s;
                 p_lo = Some(Some(p));
             }
-            // A Newton step along Yw, which the derivatives are taken along, in `s`.
-            let newton = p.s - p.dg / p.ddg / p.wheel.dy_ds;
+            // A Newton step along Yw, which the derivatives are taken along, in `s` (`dy_ds`
+            // is 1 without yaw: no division by it).
+            let step = p.dg / p.ddg;
+            let newton = p.s - if YAWED { step / p.wheel.dy_ds } else { step };
             let is_newton = p.ddg > 0.0 && newton > lo && newton < hi;
             if !is_newton
                 && let Some(end) = self.falling_out_at_end(&p, lo, hi, &mut p_lo, &mut p_hi, pose)
@@ -159,11 +174,11 @@ impl SideGap<'_> {
                 smooth = is_newton && (next - p.s).abs() < LOCAL_TOL_MM;
                 break;
             }
-            p = match self.at(next, pose) {
+            p = match self.at_as::<YAWED>(next, pose) {
                 Some(q) => q,
                 None => {
                     // Left the rail: the minimum lies on the defined side.
-                    let lo_defined = *p_lo.get_or_insert_with(|| self.at(lo, pose));
+                    let lo_defined = *p_lo.get_or_insert_with(|| self.at_as::<YAWED>(lo, pose));
                     if lo_defined.is_none() {
                         lo = next;
                     } else {
@@ -182,8 +197,8 @@ impl SideGap<'_> {
         // at the end of the rail), but only when clearly lower: gaps near -r0 = -460 mm
         // resolve to about 1e-13 mm, and an end point "lower" by rounding would replace the
         // Newton solution by a point 1e-9 mm away from it.
-        let p_lo = p_lo.unwrap_or_else(|| self.at(lo, pose));
-        let p_hi = p_hi.unwrap_or_else(|| self.at(hi, pose));
+        let p_lo = p_lo.unwrap_or_else(|| self.at_as::<YAWED>(lo, pose));
+        let p_hi = p_hi.unwrap_or_else(|| self.at_as::<YAWED>(hi, pose));
         let mut best = p;
         for q in [p_lo, p_hi].into_iter().flatten() {
             if q.g < best.g - END_PREFERENCE_MM {

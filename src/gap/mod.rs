@@ -9,10 +9,12 @@
 //!
 //! The layer both contact searches ([`crate::rigid`], [`crate::quasi_elastic`]) stand on:
 //! the pose and the gap at a wheel point (here), the coarse scans for basins (`scan.rs`) and
-//! low regions (`low.rs`), exact minima in a basin (`minimum.rs`), the paper's tabulated
-//! profiles (`tabulated.rs`); and the [`ContactPoint`] both searches report (`contact.rs`).
-//! The rigid search's minimum is certified global at the solution (`certify.rs`, on the
-//! bounds of `bound.rs`): no point of the gap lies lower by more than a stated tolerance.
+//! low regions (`low.rs`) with their block bounds over boxes of poses (`pose_box.rs`),
+//! exact minima in a basin (`minimum.rs`), the paper's tabulated profiles (`tabulated.rs`),
+//! the wheel a yaw shows the rail (`yaw.rs`, `outline.rs`); and the [`ContactPoint`] both
+//! searches report (`contact.rs`). The rigid search's minimum is certified global at the
+//! solution (`certify.rs`, on the bounds of `bound.rs`): no point of the gap lies lower by
+//! more than a stated tolerance.
 
 mod bound;
 mod certify;
@@ -21,6 +23,7 @@ mod hollow;
 mod low;
 mod minimum;
 mod outline;
+mod pose_box;
 mod scan;
 mod tabulated;
 #[cfg(test)]
@@ -34,7 +37,8 @@ use tabulated::Tables;
 pub use bound::CERTIFY_TOL_MM;
 pub use certify::Certificate;
 pub use contact::ContactPoint;
-pub(crate) use scan::{PoseBox, Scanned};
+pub(crate) use pose_box::PoseBox;
+pub(crate) use scan::Scanned;
 pub use yaw::{MAX_SLOPE_TAN, MIN_DY_DS, Yaw, YawModel};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
@@ -225,8 +229,8 @@ fn sample_blocks(coarse: &[[f64; 3]], out: &mut Vec<[f64; 4]>) {
 /// equal under `total_cmp` have the same bits, so there is one such order). A profile's
 /// breaks come in order (the rail's may come decreasing in the side frame): those are
 /// checked, turned where they decrease and `extra` inserted, instead of a merge sort of the
-/// whole; any other order is sorted. On the EN 15302 E1 pair (two 1001-point splines) the
-/// two sorts of a side took 84 k instructions.
+/// whole (a sampled profile's spline has a break at each of its knots); any other order is
+/// sorted.
 fn sorted_with(mut values: Vec<f64>, extra: [f64; 2]) -> Vec<f64> {
     // A plain `<` between neighbours first (breaks differ): numbers in increasing order
     // are in `total_cmp`'s order too; the slower `total_cmp` decides only where that fails.
@@ -354,6 +358,27 @@ impl<'a> SideGap<'a> {
             return None;
         }
         self.at_wheel_point(s, self.pair.wheel.at(s), pose)
+    }
+
+    /// [`SideGap::at`] where the caller knows whether the side is [`yawed`](SideGap::yawed)
+    /// (`YAWED`), for loops that decide it once: without yaw the profile's point itself, no
+    /// outline and no test.
+    #[inline(always)]
+    pub(crate) fn at_as<const YAWED: bool>(&self, s: f64, pose: &SidePose) -> Option<GapPoint> {
+        debug_assert_eq!(YAWED, self.yawed());
+        if !self.in_domain(s) {
+            return None;
+        }
+        count!(ExactGap, 1);
+        let wheel = self.pair.wheel.at(s);
+        let wheel = if YAWED {
+            self.yaw.outline(wheel)?
+        } else {
+            wheel
+        };
+        let yz = pose.apply(wheel.y, wheel.z);
+        let rail = self.rail.at(yz[0])?;
+        Some(Self::gap_point(s, wheel, pose, yz, rail))
     }
 
     /// [`SideGap::at`] with the wheel point at `s` given (`wheel = self.wheel().at(s)`,

@@ -58,6 +58,22 @@ impl SideGap<'_> {
         }
     }
 
+    /// [`SideGap::pose`] of both sides (left, right) for a wheelset shift and roll, the
+    /// roll's sine and cosine taken once for both: the right side's `sin(-roll)` is
+    /// `-sin(roll)` and its `cos(-roll)` is `cos(roll)`, to the bit (the C library's sine and
+    /// cosine reduce `|x|` and restore the sign; the compiler folds the same identities), so
+    /// that both poses are the ones [`SideGap::pose`] gives, at half its cost.
+    #[inline]
+    pub(crate) fn poses(sides: &[SideGap; 2], y_ws: f64, roll: f64) -> [super::SidePose; 2] {
+        let (sin, cos) = roll.sin_cos();
+        sides.each_ref().map(|side| super::SidePose {
+            delta: side.sign * y_ws,
+            cos,
+            sin: side.sign * sin,
+            yaw: side.yaw.psi(),
+        })
+    }
+
     /// Whether the side is yawed at all (its contacts lie ahead of or behind the axle, in
     /// the exact and in the small-angle form).
     #[inline]
@@ -78,8 +94,16 @@ impl SideGap<'_> {
         if self.yaw.keeps_profile() {
             Some(p)
         } else {
-            self.yaw.outline(p)
+            self.yawed_outline(p)
         }
+    }
+
+    /// [`Yaw::outline`] out of line: every gap evaluation inlines [`SideGap::outline`], and
+    /// the unyawed ones, most of them, then carry a test instead of the outline's closed
+    /// forms (their code and registers as without yaw).
+    #[inline(never)]
+    fn yawed_outline(&self, p: WheelPoint) -> Option<WheelPoint> {
+        self.yaw.outline(p)
     }
 
     /// The wheel point the rail sees at profile coordinate `s`: the profile's (clamped to
@@ -291,9 +315,17 @@ impl SideGap<'_> {
     /// with no point where none of them takes part).
     #[inline]
     pub(super) fn cells_over(&self, cells: &WheelCells, i: usize, j: usize) -> WheelCell {
-        if !self.yawed() {
-            return cells.over(i, j);
+        if self.yawed() {
+            self.outline_cells_over(cells, i, j)
+        } else {
+            cells.over(i, j)
         }
+    }
+
+    /// [`SideGap::cells_over`] with yaw, out of line so that the unyawed bounds inline the
+    /// profile's alone.
+    #[inline(never)]
+    fn outline_cells_over(&self, cells: &WheelCells, i: usize, j: usize) -> WheelCell {
         let h = self.coarse[1][0] - self.coarse[0][0];
         // Only the cells that take part (between the domain's samples).
         let (first, last) = self.outline_samples;

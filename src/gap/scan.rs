@@ -19,108 +19,10 @@
 //! minimum at the same pose (`certify.rs`) reads together with the samples the scan
 //! evaluated ([`Scanned`]).
 
+use super::pose_box::PoseBox;
 use super::{Basin, COARSE_MARGIN_MM, SideGap, SidePose};
 use crate::track::HeightTable;
 use wide::f64x4;
-
-/// Half the width in `delta` of the box of poses a [`PoseBox`] holds (mm): ten positions of
-/// a sweep at 0.1 mm steps on either side of the pose it was made at. Measured on the paper
-/// sweep (instructions of `rigid_default`, with [`POSE_BOX_SIN`] at 1e-3 times this): 0.5
-/// mm 18.9M, 1 mm 18.5M, 2 mm 18.7M (a wider box makes fewer boxes but looser bounds, so
-/// more blocks are bounded at their pose).
-pub(crate) const POSE_BOX_DELTA_MM: f64 = 1.0;
-/// Half the width in `sin(phi)` of the box of poses a [`PoseBox`] holds: a roll change of
-/// 1e-3 rad moves a wheel point by at most 1e-3 times its distance from the reference point
-/// (half the profile's width, about 70 mm) vertically relative to it, and by 1e-3 x 500 mm
-/// laterally (the common motion of the whole wheel is taken out, see [`PoseBox`]).
-pub(crate) const POSE_BOX_SIN: f64 = 1e-3;
-/// Half the width in yaw of the box of poses a [`PoseBox`] holds where the yaw moves the
-/// wheel's outline (rad): four positions of a sweep at 0.1 mm steps whose yaw grows 2.4
-/// mrad per mm (the Manchester benchmark's). The outline of a flange moves 0.1 mm
-/// vertically per mrad at 20 mrad (less on the tread), which loosens the bounds of the
-/// blocks near the contact only, and those are evaluated anyway.
-pub(crate) const POSE_BOX_YAW_RAD: f64 = 1e-3;
-
-/// Lower bounds of every block's coarse gaps that hold for a whole box of poses:
-/// `|delta - delta0| <=` [`POSE_BOX_DELTA_MM`] and `|sin phi - sin phi0| <=`
-/// [`POSE_BOX_SIN`] about the pose `(delta0, phi0)` they were made at. A scan at a pose
-/// inside the box reads them instead of bounding each block at its pose, and bounds at its
-/// pose only the blocks these do not already skip.
-///
-/// The bound, by interval arithmetic over the box (`s = sin phi`, `c = cos phi`, both in
-/// their intervals over the box; a block's `Yw` and `Zw` in theirs): the coarse gap of a
-/// wheel point is `g = s Yw + c Zw - Zr(Y)` with `Y = delta + c Yw - s Zw`, so
-/// `g - (s Yc + c Zc) = s (Yw - Yc) + c (Zw - Zc) - Zr(Y)` is at least the lowest the
-/// first two terms reach over the box minus the highest table height over the lateral span
-/// `Y` can cover in the box. `(Yc, Zc)` is one wheel point, the same for all blocks: the
-/// motion `s Yc + c Zc` that the roll gives the whole wheel (0.75 mm per mrad at the
-/// tread's 750 mm lever arm) is added back at the scanned pose, so that only the motion of
-/// a block relative to that point (`|Yw - Yc|`, at most half the profile's width) loosens
-/// the bound. The unit test
-/// `pose_box_bounds_are_below_every_sample_of_their_block_in_the_box` checks the bound on
-/// the corners of boxes along the paper sweep.
-///
-/// With a yaw that moves the wheel's outline, the box also spans yaws within
-/// [`POSE_BOX_YAW_RAD`] of its own, so that a sweep whose yaw changes with the shift keeps
-/// its boxes from position to position: each block's extents are widened by how far its
-/// outline can move over those yaws ([`SideGap::outline_motion`], where the part of the wheel
-/// that takes part is the same at both ends of the range; otherwise the box holds its own
-/// yaw only), `(Yc, Zc)` is kept with the box, and the certificate's cushions, which read
-/// the outline's bounds at one yaw, are made again when the yaw changes.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct PoseBox {
-    /// `(delta0, sin phi0, psi0)`, `None` until made.
-    centre: Option<(f64, f64, f64)>,
-    /// How far from `psi0` the side's yaw may be (rad): 0 where the outline is the profile.
-    pub(super) yaw_half: f64,
-    /// `(Yc, Zc)`, the point whose motion with the roll the bounds take out.
-    pub(super) reference: [f64; 2],
-    /// The bits of the side's yaw the `cushions` were made at.
-    pub(super) cushion_yaw: u64,
-    /// Per block, how far its outline may move over the box's yaws (a buffer reused).
-    motions: Vec<(f64, f64)>,
-    /// Per block, the lower bound of `g - (s Yc + c Zc)` over the box.
-    pub(super) bounds: Vec<f64>,
-    /// Per block, the same for every point of its cells against the exact rail (the
-    /// certificate's, `certify.rs`).
-    pub(super) certified: Vec<f64>,
-    /// Per block, the lateral span its cells can cover in the box.
-    pub(super) spans: Vec<[f64; 2]>,
-    /// Per block, the certificate's cushion over the box (`certify.rs`), NaN until asked.
-    pub(super) cushions: Vec<f64>,
-    /// The ranges of `cos phi` and `sin phi` over the box.
-    pub(super) trig: [(f64, f64); 2],
-}
-
-impl PoseBox {
-    /// Whether `other` was made at the same pose as this box (compared to the bit), so that,
-    /// for the same side, the two are the same box: a box is a function of its side and the
-    /// pose it was made at, and the certificate's cushions of one serve the other.
-    pub(crate) fn made_at_same_pose(&self, other: &PoseBox) -> bool {
-        let bits = |c: Option<(f64, f64, f64)>| c.map(|(d, s, y)| [d, s, y].map(f64::to_bits));
-        self.centre.is_some() && bits(self.centre) == bits(other.centre)
-    }
-
-    /// Whether `pose` lies in the box (false before the first scan).
-    #[inline]
-    pub(super) fn holds(&self, pose: &SidePose) -> bool {
-        self.centre.is_some_and(|(delta, sin, yaw)| {
-            (pose.delta - delta).abs() <= POSE_BOX_DELTA_MM
-                && (pose.sin - sin).abs() <= POSE_BOX_SIN
-                && (pose.yaw - yaw).abs() <= self.yaw_half
-        })
-    }
-}
-
-/// The range of `a b` for `a` in `[a.0, a.1]` and `b` in `[b.0, b.1]`.
-#[inline]
-fn product(a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
-    let p = [a.0 * b.0, a.0 * b.1, a.1 * b.0, a.1 * b.1];
-    (
-        p.iter().fold(f64::INFINITY, |m, &v| m.min(v)),
-        p.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v)),
-    )
-}
 
 /// What a scan for basins saw at its pose, for the certificate of the global minimum there
 /// (`certify.rs`): which blocks it evaluated, their samples' coarse gaps, the lowest of them.
@@ -202,10 +104,9 @@ fn extent_span([yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4], pose: &SidePose) -> [f64;
 
 /// Coarse samples per block of the scans: a block whose lower bound of the gap (its lowest
 /// wheel point against the highest rail point under it) is too high to matter is skipped.
-/// Wider blocks have looser bounds (more samples evaluated in vain: 47% of the evaluated
-/// blocks of 16 on the paper sweep, 40% of blocks of 8) but fewer bounds, box entries and
-/// certificate blocks; measured instructions per call of `rigid_default`: 4 samples 24.1M,
-/// 8 20.0M, 16 19.4M, 32 22.0M.
+/// Wider blocks have looser bounds (more samples evaluated in vain) but fewer bounds, box
+/// entries and certificate blocks; 16 does the least work of the paper sweep among 4, 8, 16
+/// and 32.
 pub(super) const SCAN_BLOCK: usize = 16;
 
 /// The coarse samples of block `b` inside `first..last`.
@@ -303,8 +204,7 @@ impl SampledMinima {
     /// The samples `i0..` with the gaps `gaps` (an evaluated block), as [`Self::step`] on
     /// each in turn: the same compares and the same minima kept in the same order, four
     /// samples tested at a time in SIMD lanes (minima are rare: a lane mask that is all
-    /// zero passes four samples at once). On the EN 15302 E1 scene the scans' loop over
-    /// their samples took about 9.5 instructions a sample one by one.
+    /// zero passes four samples at once), instead of a compare and a branch per sample.
     #[inline]
     fn block(&mut self, gaps: &[f64], i0: usize) {
         let n = gaps.len();
@@ -475,8 +375,7 @@ impl SideGap<'_> {
     /// `sin Yw` are zeros, which leave a sum unchanged but for the sign of a zero `Y`
     /// (`delta + Yw = -0` needs both -0), and the height of a signed zero is the same
     /// height. Four multiplications and two additions fewer a group of four samples, and
-    /// a loop the compiler keeps in registers: on the EN 15302 E1 scene the sweep's scans
-    /// (with their blocks' gaps) 1.54 -> 1.33 M instructions.
+    /// a loop the compiler keeps in registers.
     #[inline(always)]
     fn block_gaps_posed<const LEVEL: bool>(
         &self,
@@ -587,97 +486,6 @@ impl SideGap<'_> {
             .map_or(f64::INFINITY, |rail| z_lo - rail)
     }
 
-    /// The wheel point `(Yc, Zc)` whose motion with the roll [`PoseBox`] takes out: the
-    /// middle coarse sample.
-    #[inline]
-    pub(super) fn box_reference(&self) -> [f64; 2] {
-        let [_, yw, zw] = self.coarse[self.coarse.len() / 2];
-        [yw, zw]
-    }
-
-    /// Makes `pose_box` the box about `pose`: every block's bound over it, for the scan (its
-    /// samples against the height table) and for the certificate (every point of its cells
-    /// against the exact rail, as in [`SideGap::certified_block_bound`]); the certificate's
-    /// cushions of the box are computed when first asked for.
-    pub(super) fn fill_pose_box(&self, pose: &SidePose, pose_box: &mut PoseBox) {
-        let [yc, zc] = self.box_reference();
-        // With a yaw, how far each block's outline can move over the box's yaws; where that
-        // is not bounded (the part of the wheel that takes part may change), the box holds
-        // its own yaw only.
-        let mut motions = std::mem::take(&mut pose_box.motions);
-        let mut yaw_half = self.box_yaw_half(POSE_BOX_YAW_RAD);
-        motions.clear();
-        if yaw_half > 0.0 {
-            motions.extend((0..self.blocks.len()).map(|b| self.outline_motion(b, yaw_half)));
-            if motions.iter().any(|m| !m.0.is_finite() || !m.1.is_finite()) {
-                yaw_half = 0.0;
-            }
-        }
-        let widened = |b: usize, [yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4]| {
-            if yaw_half > 0.0 {
-                let (my, mz) = motions[b];
-                [yw_lo - my, yw_hi + my, zw_lo - mz, zw_hi + mz]
-            } else {
-                [yw_lo, yw_hi, zw_lo, zw_hi]
-            }
-        };
-        let (d, sin) = (pose.delta, pose.sin);
-        let s = (sin - POSE_BOX_SIN, sin + POSE_BOX_SIN);
-        // cos phi = sqrt(1 - sin^2) (|phi| < 90 degrees) falls with |sin phi|.
-        let cos = |v: f64| (1.0 - v * v).sqrt();
-        let c_hi = if s.0 <= 0.0 && s.1 >= 0.0 {
-            1.0
-        } else {
-            cos(s.0).max(cos(s.1))
-        };
-        let c = (cos(s.0).min(cos(s.1)), c_hi);
-        let neg_s = (-s.1, -s.0);
-        // The lateral span over the box and the lowest height less the common motion of a
-        // block with wheel extents `[Yw_lo, Yw_hi, Zw_lo, Zw_hi]`.
-        let extent = |[yw_lo, yw_hi, zw_lo, zw_hi]: [f64; 4]| {
-            let cy = product(c, (yw_lo, yw_hi));
-            let sz = product(neg_s, (zw_lo, zw_hi));
-            let z_lo =
-                product(s, (yw_lo - yc, yw_hi - yc)).0 + product(c, (zw_lo - zc, zw_hi - zc)).0;
-            [
-                d - POSE_BOX_DELTA_MM + cy.0 + sz.0,
-                d + POSE_BOX_DELTA_MM + cy.1 + sz.1,
-                z_lo,
-            ]
-        };
-        let heights = self.rail.heights();
-        pose_box.centre = Some((d, sin, pose.yaw));
-        pose_box.yaw_half = yaw_half;
-        pose_box.reference = [yc, zc];
-        pose_box.cushion_yaw = pose.yaw.to_bits();
-        pose_box.trig = [c, s];
-        pose_box.bounds.clear();
-        pose_box
-            .bounds
-            .extend(self.blocks.iter().enumerate().map(|(b, &block)| {
-                let [y_lo, y_hi, z_lo] = extent(widened(b, block));
-                heights
-                    .max_over(y_lo, y_hi)
-                    .map_or(f64::INFINITY, |rail| z_lo - rail)
-            }));
-        // As in `certified_block_bound`: a step of the height table wider.
-        let w = crate::track::HEIGHT_TABLE_STEP_MM;
-        pose_box.certified.clear();
-        pose_box.spans.clear();
-        for (b, &block) in self.cert_blocks.iter().enumerate() {
-            let [y_lo, y_hi, z_lo] = extent(widened(b, block));
-            pose_box.spans.push([y_lo, y_hi]);
-            pose_box.certified.push(
-                self.rail
-                    .binned_max_height(y_lo - w, y_hi + w)
-                    .map_or(f64::INFINITY, |rail| z_lo - rail),
-            );
-        }
-        pose_box.cushions.clear();
-        pose_box.cushions.resize(self.cert_blocks.len(), f64::NAN);
-        pose_box.motions = motions;
-    }
-
     /// The index range of the coarse samples that can lie above the rail at `pose`:
     /// `Y = delta + Yw +- |sin phi| |Zw|`, with one sample more on each side.
     pub(super) fn over_rail(&self, pose: &SidePose) -> (usize, usize) {
@@ -705,8 +513,7 @@ impl SideGap<'_> {
 /// `coarse.partition_point(below)` (`below` holds for the samples up to some `Yw` and for
 /// none after), found by walking from the sample whose `Yw` would be `yw` were the samples
 /// evenly spaced in it (they are without yaw): the same index, in a few tests of `below`
-/// instead of the ten of a bisection of 541 samples (about 110 instructions saved per
-/// call, two calls per scan).
+/// instead of the ten of a bisection of 541 samples (two calls per scan).
 #[inline]
 pub(super) fn partition_near(
     coarse: &[[f64; 3]],

@@ -1,6 +1,7 @@
 //! The scans with block skipping against full scans, and the block bounds.
 
-use super::scan::{POSE_BOX_DELTA_MM, POSE_BOX_SIN, SCAN_BLOCK};
+use super::pose_box::{POSE_BOX_DELTA_MM, POSE_BOX_SIN};
+use super::scan::SCAN_BLOCK;
 use super::*;
 use crate::scene::Scene;
 
@@ -280,7 +281,7 @@ fn pose_of(delta: f64, sin: f64) -> SidePose {
 
 #[test]
 fn pose_box_bounds_are_below_every_sample_of_their_block_in_the_box() {
-    use super::scan::POSE_BOX_YAW_RAD;
+    use super::pose_box::POSE_BOX_YAW_RAD;
     let placement = placement();
     for yaw in YAWS {
         let side = left_at_yaw(&placement, yaw);

@@ -70,12 +70,10 @@ impl<'a> Refine<'a> for Local<'_, 'a> {
 
 /// Halves of a sweep shorter than this (positions) run one after the other on a calling
 /// thread outside a rayon pool: starting the pool (its threads spawned, the job handed over
-/// and the caller woken) costs about 0.15-0.2 ms, while a position costs 4-5 µs (34 k
-/// instructions for the level wheelset of the EN 15302 scene of `benches/data`, 55 k for
-/// the default solver on the paper scene): a parallel half of 100 positions, 0.4-0.5 ms,
-/// saves about twice what the pool's start costs. Inside a pool (a fleet, several scenes,
-/// the quasi-elastic pass already run) joining costs microseconds and the halves always run
-/// in parallel.
+/// and the caller woken) costs as much as solving a few dozen positions, so that only a
+/// half of about a hundred positions saves clearly more than it costs. Inside a pool (a
+/// fleet, several scenes, the quasi-elastic pass already run) joining costs little and the
+/// halves always run in parallel.
 const PARALLEL_MIN_HALF: usize = 100;
 
 /// The positions of `sweep`, continued outwards from the position nearest the centre,

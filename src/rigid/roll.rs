@@ -185,10 +185,7 @@ impl Iteration {
         settings: &RollSettings,
         scratch: &mut Scratch,
     ) -> Option<Evaluation> {
-        let poses = [
-            sides[0].pose(self.y_ws, self.theta),
-            sides[1].pose(self.y_ws, self.theta),
-        ];
+        let poses = SideGap::poses(sides, self.y_ws, self.theta);
         if (self.theta - self.scanned_theta).abs() > settings.rescan_roll_rad {
             // The wheel has turned so far that its points moved by more than the basins can
             // follow (r0 * rescan_roll_rad = 0.25 mm): scan again, and drop the bracket,
