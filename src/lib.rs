@@ -89,13 +89,9 @@ macro_rules! count {
     };
 }
 
-// The placement cache: public for the benchmark of a cached placement, not part of the API.
-#[doc(hidden)]
 pub mod cache;
 pub mod conicity;
 pub mod contact_table;
-// The work budget of a run: public for the adversarial scenes' test, not part of the API.
-#[doc(hidden)]
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
@@ -103,17 +99,11 @@ pub mod creep;
 mod delimited;
 mod error;
 pub mod fleet;
-// The gap of a wheel over its rail: public for the reference tests' brute-force searches
-// (`tests/rigid.rs`, `tests/stress.rs`, ...), not part of the API.
-#[doc(hidden)]
 pub mod gap;
 pub mod hertz;
 pub mod maintenance;
 pub mod message;
 pub mod pipeline;
-// The ranges of physical inputs: public for the Python binding's checks of `hertz_ellipse`
-// and the adversarial tests, not part of the API.
-#[doc(hidden)]
 pub mod plausible;
 pub mod prelude;
 pub mod profile;

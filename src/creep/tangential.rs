@@ -16,7 +16,6 @@ use super::{CreepError, Method, Settings, check_normal_force, check_semi_axes};
 ///
 /// mm, N.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the tangential models' tests and the creep benchmarks
 pub struct EllipticPatch {
     a_mm: f64,
     b_mm: f64,
@@ -123,7 +122,6 @@ impl Tangential {
 /// }
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
-#[doc(hidden)] // public for the tangential models' tests and the creep benchmarks
 pub fn solve(patch: &EllipticPatch, creepages: &Creepages, settings: &Settings) -> Tangential {
     let coefficients = coefficients::kalker(patch.a_mm / patch.b_mm, settings.poisson());
     match settings.method() {

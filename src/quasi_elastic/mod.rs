@@ -611,7 +611,6 @@ fn barrier_scan(gaps: &[f64], barrier: f64) -> Vec<usize> {
 /// One patch of `average`: the weight-averaged fields, the integral of the weight, and
 /// the smallest gap in the patch.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the reference tests of the quadrature
 pub struct Average<const N: usize> {
     /// Weighted means of the fields.
     pub mean: [f64; N],
@@ -647,7 +646,6 @@ impl<const N: usize> Average<N> {
 /// assert_eq!(a.len(), 1);
 /// assert!(a[0].mean[0].abs() < 1e-15);
 /// ```
-#[doc(hidden)] // public for the reference tests of the quadrature and the pipeline benchmark
 pub fn average<const N: usize>(
     nodes: &[f64],
     gaps: &[f64],
