@@ -23,7 +23,10 @@
 //! (EN 15313) against their limits, a rail's wear against its nominal profile.
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
-//! need, [`fleet`] assesses many profiles against one scene. [`prelude`] holds what a
+//! need, [`fleet`] assesses many profiles against one scene; beside them [`gap`] gives the
+//! gap of a wheel over its rail at one point (what both searches stand on), [`cache`]
+//! shares placed profiles between the scenes of a run, [`cost`] estimates a scene's work
+//! and [`plausible`] holds the accepted ranges of physical inputs. [`prelude`] holds what a
 //! typical use needs; [`Error`] converts from every error type of the crate. The crate has
 //! no features and knows no file format it writes: the crate `wheelrail-report` turns
 //! results into tables, CSV, charts and pages, and `wheelrail-cli` is the command line.
