@@ -25,7 +25,9 @@ fn paper_sweep() -> &'static RigidSweep {
 
 fn paper_delta_r() -> &'static DeltaR {
     static D: OnceLock<DeltaR> = OnceLock::new();
-    D.get_or_init(|| conicity::delta_r_of(paper_sweep()))
+    D.get_or_init(|| {
+        conicity::assess(paper_sweep(), &conicity::ConicitySettings::default()).delta_r
+    })
 }
 
 fn annex_e1() -> &'static DeltaR {

@@ -54,10 +54,9 @@ fn fleet_of_1000(bencher: divan::Bencher, threads: usize) {
     bencher.bench(|| {
         let mut ok = 0;
         pool.install(|| {
-            fleet::in_order(
+            fleet.assess_in_order(
                 &items,
                 |item| fleet.assess(item),
-                |panic| panic!("{panic}"),
                 |_, row| ok += usize::from(row.outcome.is_ok()),
             );
         });

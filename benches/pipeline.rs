@@ -8,13 +8,12 @@ use divan::black_box;
 use std::path::Path;
 use std::sync::{Arc, OnceLock};
 use wheelrail::cache::PlacementCache;
-use wheelrail::gap::YawModel;
 use wheelrail::profile::read::PointProfile;
 use wheelrail::profile::{Profile, ProfileKind};
 use wheelrail::quasi_elastic::{self, QuasiElasticSweep};
 use wheelrail::rigid::{self, RigidSweep, Solver};
 use wheelrail::scene::Scene;
-use wheelrail::sweep::{Sweep, YawRule};
+use wheelrail::sweep::{Sweep, YawModel, YawRule};
 use wheelrail::track::{PlacedRail, PlacedWheel, Placement, SidePair};
 use wheelrail::{hertz, pipeline};
 

@@ -40,7 +40,7 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 /// Entries of each kind a [`PlacementCache::new`] keeps.
-pub const DEFAULT_CAPACITY: usize = 16;
+pub(crate) const DEFAULT_CAPACITY: usize = 16;
 
 /// Fitted profiles and placed rails of one run, keyed by their inputs (see the [module
 /// docs](self)). Shared by reference between threads: lookups lock it briefly; two threads
@@ -167,7 +167,7 @@ fn get_or_make<K: PartialEq, V: Clone, E>(
 }
 
 impl PlacementCache {
-    /// An empty cache of [`DEFAULT_CAPACITY`] profiles and rails.
+    /// An empty cache that keeps at most 16 profiles and 16 rails.
     pub fn new() -> PlacementCache {
         PlacementCache::with_capacity(DEFAULT_CAPACITY)
     }

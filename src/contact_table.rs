@@ -141,7 +141,7 @@ pub struct ContactTable {
 ///
 /// ```
 /// use wheelrail::contact_table::{Grid, compute};
-/// use wheelrail::{gap::YawModel, pipeline, scene::Scene, sweep::Sweep};
+/// use wheelrail::{pipeline, scene::Scene, sweep::{Sweep, YawModel}};
 /// let scene = Scene::from_toml("", "doc", ".".as_ref()).unwrap();
 /// let placement = pipeline::place(&scene).unwrap();
 /// let grid = Grid::new(Sweep::range(-2.0, 2.0, 2.0).unwrap(), vec![-0.005, 0.0, 0.005], YawModel::Exact).unwrap();

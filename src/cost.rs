@@ -4,7 +4,7 @@
 //! The unit of work is one evaluation of the gap between a wheel point and its rail (tens of
 //! nanoseconds on a current core; `examples/evaluation_counts.rs` counts them per stage).
 //! The estimate is deliberately coarse and errs high: it assumes the weight's
-//! low region is as wide as a nearly flat gap (curvature [`FLAT_GAP_CURVATURE_PER_MM`])
+//! low region is as wide as a nearly flat gap (a gap curvature of 1e-3 1/mm)
 //! makes it, clipped to the profile, and counts every spline knot in it.
 
 use crate::pipeline::{self, Stage};
@@ -52,7 +52,7 @@ const RIGID_PAPER_FACTOR: f64 = 27.0;
 /// Gap curvature of a nearly flat contact (1/mm) that sizes the low region of the weight:
 /// the tread of a 460 mm wheel on a 300 mm rail crown gives 1.2e-3; worn, conformal
 /// contacts lower, which the clip to the profile's width covers.
-pub const FLAT_GAP_CURVATURE_PER_MM: f64 = 1e-3;
+pub(crate) const FLAT_GAP_CURVATURE_PER_MM: f64 = 1e-3;
 /// Nodes of a Gauss-Legendre panel (8 points, both halves of a piece).
 const GAUSS_NODES_PER_PANEL: f64 = 16.0;
 /// One conicity amplitude walks every piece of the Δr function, a few operations each: this

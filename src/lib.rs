@@ -23,7 +23,10 @@
 //! (EN 15313) against their limits, a rail's wear against its nominal profile.
 //!
 //! and [`scene`] describes a run, [`pipeline`] computes exactly the stages a scene's outputs
-//! need, [`fleet`] assesses many profiles against one scene. [`prelude`] holds what a
+//! need, [`fleet`] assesses many profiles against one scene; beside them [`gap`] gives the
+//! gap of a wheel over its rail at one point (what both searches stand on), [`cache`]
+//! shares placed profiles between the scenes of a run, [`cost`] estimates a scene's work
+//! and [`plausible`] holds the accepted ranges of physical inputs. [`prelude`] holds what a
 //! typical use needs; [`Error`] converts from every error type of the crate. The crate has
 //! no features and knows no file format it writes: the crate `wheelrail-report` turns
 //! results into tables, CSV, charts and pages, and `wheelrail-cli` is the command line.
@@ -89,13 +92,9 @@ macro_rules! count {
     };
 }
 
-// The placement cache: public for the benchmark of a cached placement, not part of the API.
-#[doc(hidden)]
 pub mod cache;
 pub mod conicity;
 pub mod contact_table;
-// The work budget of a run: public for the adversarial scenes' test, not part of the API.
-#[doc(hidden)]
 pub mod cost;
 #[cfg(feature = "count-evaluations")]
 pub mod counters;
@@ -103,17 +102,11 @@ pub mod creep;
 mod delimited;
 mod error;
 pub mod fleet;
-// The gap of a wheel over its rail: public for the reference tests' brute-force searches
-// (`tests/rigid.rs`, `tests/stress.rs`, ...), not part of the API.
-#[doc(hidden)]
 pub mod gap;
 pub mod hertz;
 pub mod maintenance;
 pub mod message;
 pub mod pipeline;
-// The ranges of physical inputs: public for the Python binding's checks of `hertz_ellipse`
-// and the adversarial tests, not part of the API.
-#[doc(hidden)]
 pub mod plausible;
 pub mod prelude;
 pub mod profile;

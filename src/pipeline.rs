@@ -26,15 +26,12 @@ use crate::track::{PlacedRail, PlacedWheel, Placement, PlacementError, Side, Sid
 use std::sync::Arc;
 use std::time::Instant;
 
-#[doc(hidden)]
-// public for the scene's figures: the report tests, the chart tests and the scene benchmark
 pub use crate::stage::Figure;
 pub use crate::stage::Stage;
 
 /// What a run computed, with wall-clock times, for `--timings` and for tests that check that
 /// no unneeded stage ran.
 #[derive(Debug, Clone, Default)]
-#[doc(hidden)] // public for the Python binding and the tests that check which stages ran
 pub struct RunRecord {
     /// The stages run, in order, with their duration in seconds.
     pub stages: Vec<(Stage, f64)>,
@@ -64,7 +61,6 @@ impl RunRecord {
 
 /// The quasi-elastic solution for each sensitivity value of eps.
 #[derive(Debug, Clone)]
-#[doc(hidden)] // public for the report's ε-sensitivity table and figure
 pub struct EpsilonSweeps {
     /// `(eps in mm, solution)`, in the scene's order.
     pub runs: Vec<(f64, QuasiElasticSweep)>,
@@ -102,8 +98,6 @@ pub struct Results {
 /// its figures, the creep stage for a scene with `[creep]` (`creep.csv`), the contact table
 /// for one with `[table]`. The profile stage always runs (placement is validated for every
 /// scene).
-// public for the creep-stage test, the scene benchmark and `examples/evaluation_counts.rs`
-#[doc(hidden)]
 pub fn needed_stages(scene: &Scene) -> Vec<Stage> {
     let mut wanted: Vec<Stage> = scene.figures.iter().map(|f| f.stage()).collect();
     if scene.asks_for_creep {
@@ -467,7 +461,6 @@ pub fn place(scene: &Scene) -> Result<Placement, SceneError> {
 ///
 /// # Errors
 /// As [`place`].
-#[doc(hidden)] // public for the pipeline benchmark
 pub fn place_cached(scene: &Scene, cache: &PlacementCache) -> Result<Placement, SceneError> {
     let (wheels, rails) = join_in_pool(
         || place_wheels_in(scene, Some(cache)),
@@ -525,7 +518,6 @@ fn load_profile(
 ///
 /// # Errors
 /// [`SceneError`] naming the profile key.
-#[doc(hidden)] // public for the fleet benchmark
 pub fn place_wheels(scene: &Scene) -> Result<[PlacedWheel; 2], SceneError> {
     place_wheels_in(scene, None)
 }
@@ -568,7 +560,6 @@ fn place_wheels_in(
 ///
 /// # Errors
 /// [`SceneError`] naming the profile key.
-#[doc(hidden)] // public for the fleet benchmark
 pub fn place_rails(scene: &Scene) -> Result<[Arc<PlacedRail>; 2], SceneError> {
     place_rails_in(scene, None)
 }

@@ -3,7 +3,7 @@
 //! and the one decision of which positions a stage computes and which it mirrors
 //! (`Mirror`), shared by the rigid search, the quasi-elastic pass and the Hertz sweep.
 
-pub use crate::gap::YawModel;
+pub use crate::gap::yaw::YawModel;
 use crate::message::Number;
 use crate::track::Placement;
 use std::fmt;

@@ -74,7 +74,6 @@ pub struct DeltaRCsvError {
 
 /// What is wrong with a Δr table's text.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for `wheelrail conicity` (the problem a `DeltaRCsvError` names)
 pub enum CsvProblem {
     /// The first row is no header with the columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`.
     NoHeader(String),

@@ -65,11 +65,10 @@ use well::Well;
 pub(crate) use pair::assess_by_method_on;
 pub use pair::{
     ConicitySettings, ConicitySettingsError, PairConicity, ParameterRow, Parameters, assess,
-    assess_on, delta_r_of,
+    assess_on,
 };
 
 /// The default amplitudes: 0.5 to 10 mm in steps of 0.1 mm (96 values), exact decimals.
-#[doc(hidden)] // public for the conicity benchmarks
 pub fn default_amplitudes_mm() -> Vec<f64> {
     (5..=100).map(|i| f64::from(i) / 10.0).collect()
 }
@@ -225,7 +224,6 @@ pub fn equivalent_conicity(
 /// The equivalent conicity at the default amplitudes ([`default_amplitudes_mm`]) that
 /// `delta_r` supports: those beyond [`EquivalentConicity::max_amplitude_mm`] of the Klingel
 /// method are left out rather than reported as NaN.
-#[doc(hidden)] // public for the conicity benchmarks
 pub fn equivalent_conicity_clipped(delta_r: &DeltaR, method: ConicityMethod) -> EquivalentConicity {
     let amplitudes = supported_default_amplitudes(delta_r);
     equivalent_conicity(delta_r, &amplitudes, method)

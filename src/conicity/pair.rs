@@ -206,7 +206,6 @@ pub struct Parameters {
 
 /// One row of the parameter table.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the report's and the fleet's parameter tables and the Python binding
 pub struct ParameterRow {
     /// Machine name (`parameters.csv`, fleet columns).
     pub name: &'static str,
@@ -357,7 +356,10 @@ impl Parameters {
 /// The equivalent conicity of a pair and its parameters (the `equivalent_conicity` stage).
 #[derive(Debug, Clone)]
 pub struct PairConicity {
-    /// The Δr function of the rigid sweep, with its jumps.
+    /// The Δr function of the rigid sweep (`r_left - r_right`, mm, over `y_ws` in mm): NaN
+    /// where a position did not converge or a wheel has no contact, each contact-point jump a
+    /// discontinuity in the middle of its refined interval (values from its ends); a
+    /// sampling artefact ([`JumpKind::Artefact`]) is no discontinuity.
     pub delta_r: DeltaR,
     /// The equivalent conicity by the Klingel method (EN 15302 Annex B).
     pub klingel: EquivalentConicity,
@@ -382,8 +384,7 @@ impl PairConicity {
 /// jump as a discontinuity in the middle of its refined interval (values from its ends).
 /// A sampling artefact ([`JumpKind::Artefact`]) is no discontinuity: Δr is linear between
 /// the sweep positions around it, as where the contact point moves continuously.
-#[doc(hidden)] // public for the conicity benchmarks
-pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
+fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
     let mut points: Vec<(f64, f64)> = sweep
         .positions()
         .iter()
@@ -413,8 +414,8 @@ pub fn delta_r_of(sweep: &RigidSweep) -> DeltaR {
 }
 
 /// The equivalent conicity and parameters of the pair swept by `sweep`: its Δr function
-/// (jumps as steps, `delta_r_of`), tan γe by both methods at the settings' amplitudes
-/// (mm), and the [`Parameters`] (tan γe at 2, 3 and 4 mm, nonlinearity, flange-contact
+/// (jumps as steps: [`PairConicity::delta_r`]), tan γe by both methods at the settings'
+/// amplitudes (mm), and the [`Parameters`] (tan γe at 2, 3 and 4 mm, nonlinearity, flange-contact
 /// shifts, jumps). Amplitudes the sweep cannot support give NaN with their status, not an
 /// error.
 ///

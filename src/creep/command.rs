@@ -1,7 +1,7 @@
 //! The tangential problem of one elliptic patch from plain numbers, checked against the
-//! plausible ranges of `wheelrail creep`: what the command line (`wheelrail-cli`'s `creep` module, with the
-//! `cli` feature) and the Python binding's `creep_forces` share, so that both accept the same
-//! values and refuse the others with the same words.
+//! plausible ranges of `wheelrail creep`: what the command line (`wheelrail creep` of the
+//! crate `wheelrail-cli`) and the Python binding's `creep_forces` share, so that both accept
+//! the same values and refuse the others with the same words.
 //!
 //! Units: semi-axes in mm, the normal force in N, the spin creepage in 1/mm, the shear
 //! modulus in GPa (converted once to MPa); forces of the wheel on the rail in the patch's

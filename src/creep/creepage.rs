@@ -177,7 +177,6 @@ pub struct Creepages {
 /// assert!((c.phi_per_mm - 2.0 * 0.05_f64.sin() / 921.0).abs() < 1e-15);
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
-#[doc(hidden)] // public for the creepage tests and the creep benchmarks
 pub fn creepages(motion: &Motion, point: &ContactPoint) -> Result<Creepages, CreepError> {
     for (quantity, value) in [
         ("speed", motion.speed_mm_s),

@@ -112,7 +112,6 @@ const BLEND_WINDOW: (f64, f64) = (0.1, 3.0);
 /// assert!((l1 / (64.0 / (3.0 * 82_000.0 * 5.2036)) - 1.0).abs() < 1e-4);
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
-#[doc(hidden)] // public for the test of CONTACT's blend
 pub fn flexibilities(
     patch: &EllipticPatch,
     creepages: &Creepages,
@@ -445,7 +444,6 @@ const LANES: usize = 4;
 /// One row of the discretisation study: a grid's largest error over the study's cases
 /// against a converged FASTSIM.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for `wheelrail tradeoff`, the grid study's tests and benchmarks
 pub struct StudyRow {
     /// The grid.
     pub grid: Grid,
@@ -458,7 +456,6 @@ pub struct StudyRow {
 /// The cases of `study`: two patches (`a/b = 1.5` and `0.375`, 50 kN), each with creepages
 /// of 0.3, 1 and 3 times the creepage that saturates linear theory, in ξ alone, η alone, φ
 /// alone and all three at once (with signs mixed).
-#[doc(hidden)] // public for the grid study's tests
 pub fn study_cases() -> Vec<(EllipticPatch, Creepages)> {
     let settings = Settings::default();
     let mut cases = Vec::new();
@@ -499,7 +496,6 @@ pub fn study_cases() -> Vec<(EllipticPatch, Creepages)> {
 /// The grids of the discretisation study as `wheelrail tradeoff` measures them: square grids
 /// of 8 to 64 strips and elements around the default, and the default's strips or elements
 /// halved or doubled.
-#[doc(hidden)] // public for `wheelrail tradeoff` and the grid study's tests
 pub const STUDY_GRIDS: [Grid; 13] = [
     square(8),
     square(12),
@@ -527,7 +523,6 @@ pub const STUDY_GRIDS: [Grid; 13] = [
 
 /// The converged grid the discretisation study compares with: 1000 × 1000 cells, a thousand
 /// times the default's.
-#[doc(hidden)] // public for `wheelrail tradeoff` and the grid study's tests
 pub const STUDY_REFERENCE: Grid = square(1000);
 
 /// `n` strips of `n` elements.
@@ -551,7 +546,6 @@ const fn square(n: u32) -> Grid {
 /// let rows = study(&[g(5), g(20)], g(200));
 /// assert!(rows[1].force_error < rows[0].force_error);
 /// ```
-#[doc(hidden)] // public for `wheelrail tradeoff`, the grid study's tests and benchmarks
 pub fn study(grids: &[Grid], reference: Grid) -> Vec<StudyRow> {
     let cases = study_cases();
     let solve_on = |grid: Grid| -> Vec<Tangential> {

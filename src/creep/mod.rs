@@ -48,16 +48,12 @@
 //! * K.L. Johnson (1985), Contact Mechanics, Cambridge University Press, Ch. 8.
 
 pub mod coefficients;
-#[doc(hidden)] // public for the command line and the Python binding's `creep_forces`
 pub mod command;
 pub mod creepage;
 pub mod fastsim;
 pub mod linear;
 pub mod normal;
 pub mod polach;
-#[doc(hidden)]
-// public for the pipeline's creep stage (`creep.csv`), its tests, the chart tests and the
-// benchmarks
 pub mod sweep;
 pub mod tangential;
 

@@ -37,9 +37,9 @@ use super::CreepError;
 use crate::hertz::NotHertzianReason;
 use std::ops::ControlFlow;
 
-/// How the solve ended.
+/// How [`solve`] ended: the normal force that balances the vertical load (N), or why none
+/// was found.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the normal-force tests and benchmarks (what `solve` returns)
 pub enum Outcome {
     /// `|r| ≤ tol · FZ`.
     Converged {
@@ -81,7 +81,6 @@ pub enum Outcome {
 /// assert!((normal_force_n - 10_000.0 / (delta.cos() + 0.1 * delta.sin())).abs() < 1e-6);
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
-#[doc(hidden)] // public for the normal-force tests and the creep and Hertz benchmarks
 pub fn solve(
     vertical_load_n: f64,
     contact_angle_rad: f64,

@@ -85,7 +85,6 @@ pub struct Grid {
 
 /// The default FASTSIM grid, chosen by run time against error (`fastsim::study`, record in
 /// `docs/`): see [`fastsim`](super::fastsim).
-#[doc(hidden)] // public for the FASTSIM reference tests
 pub const DEFAULT_GRID: Grid = Grid {
     strips: 32,
     elements: 32,

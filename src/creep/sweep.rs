@@ -380,7 +380,6 @@ fn side_inputs(placement: &Placement, contacts: Contacts, i: usize, side: Side) 
 /// creepages `(ξ, η, φ)` scaled by `k` from 0 (free rolling) through 1 (the patch as the
 /// sweep found it) towards full sliding, on its ellipse at its normal force (held fixed).
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the chart tests and the pipeline benchmark (the report's chart of it)
 pub struct Curve {
     /// Position of the patch: the wheelset's shift, mm.
     pub y_ws: f64,
@@ -414,7 +413,6 @@ const PARTIAL_SLIP_USE: f64 = 0.95;
 /// longitudinal or lateral creepage, the one that uses the largest part of its friction
 /// (`√(Fx² + Fy²) / (μ FN)`, the sweep's own model) while in partial slip (below 0.95), or
 /// the one that uses the most where every patch slides; `None` when there is none.
-#[doc(hidden)] // public for the chart tests and the pipeline benchmark (the report's chart of it)
 pub fn curve(sweep: &CreepSweep) -> Option<Curve> {
     let settings = sweep.settings();
     let mu = settings.friction();

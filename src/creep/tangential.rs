@@ -17,7 +17,6 @@ use super::{CreepError, Method, Settings};
 ///
 /// mm, N.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the tangential models' tests and the creep benchmarks
 pub struct EllipticPatch {
     a_mm: f64,
     b_mm: f64,
@@ -124,7 +123,6 @@ impl Tangential {
 /// }
 /// # Ok::<(), wheelrail::creep::CreepError>(())
 /// ```
-#[doc(hidden)] // public for the tangential models' tests and the creep benchmarks
 pub fn solve(patch: &EllipticPatch, creepages: &Creepages, settings: &Settings) -> Tangential {
     let coefficients = coefficients::kalker(patch.a_mm / patch.b_mm, settings.poisson());
     match settings.method() {

@@ -176,7 +176,6 @@ pub enum FleetError {
 
 /// What is wrong with a pairs file.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for `wheelrail fleet` (the problem a pairs-file error names)
 pub enum PairsProblem {
     /// Not CSV (the parser's message).
     Csv(String),
@@ -340,7 +339,6 @@ pub(crate) fn parse_pairs(
 
 /// One part of a fleet split across machines: the `k`-th (from 1) of `n` parts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[doc(hidden)] // public for `wheelrail fleet --shard` (the CLI; the library without it makes none)
 pub struct Shard {
     /// Which part, 1 to `n`.
     pub k: usize,

@@ -10,17 +10,15 @@
 //! and runs the stages the summary needs with [`pipeline::run_on`], so its numbers agree to
 //! the last digit with `wheelrail report` on the template with those files.
 //!
-//! `in_order` runs items in parallel (rayon) and hands their rows to the caller in input
-//! order as they complete, whatever the number of threads. `synthetic` generates worn
-//! S1002 profiles for tests, benchmarks and the example fleet.
+//! [`Fleet::assess_in_order`] runs items in parallel (rayon) and hands their rows to the
+//! caller in input order as they complete, whatever the number of threads. [`synthetic`]
+//! generates worn S1002 profiles for tests, benchmarks and the example fleet.
 //!
 //! Nothing here touches the file system except the profile readers; a failure of one item
 //! (unreadable file, bad profile, no overlap with its rail) is that item's row, never an
 //! error of the fleet.
 
 mod inputs;
-#[doc(hidden)]
-// public for the fleet tests and benchmark and `examples/worn_wheels.rs` (synthetic worn wheels)
 pub mod synthetic;
 
 pub(crate) use inputs::parse_pairs;
@@ -39,7 +37,6 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The largest Hertz pressure of one pair over its sweep.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the fleet's table, its tests and the Python binding
 pub struct MaxPressure {
     /// The largest maximum pressure p0 over the sweep and both wheels (MPa).
     pub p0_mpa: f64,
@@ -120,7 +117,6 @@ pub(crate) fn summarise(
 /// One input file of a row: its role, path and the SHA-256 of its bytes (`None` when it
 /// could not be read).
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the fleet's table (a row's files and their hashes)
 pub struct InputFile {
     /// `wheel`, `rail`, `left_wheel`, ... (see [`Inputs::roles`]).
     pub role: &'static str,
@@ -342,7 +338,8 @@ impl Fleet {
     }
 
     /// The row of `item` when its assessment gave no row (a bug that panicked, caught by
-    /// `in_order`): its files by path, without hashes, and `message` as its outcome.
+    /// [`Fleet::assess_in_order`]): its files by path, without hashes, and `message` as its
+    /// outcome.
     pub fn failed_row(&self, item: &Item, error: RowError) -> Row {
         Row {
             id: item.id.clone(),
@@ -361,9 +358,11 @@ impl Fleet {
         }
     }
 
-    /// Assesses `items` in parallel (`in_order` with `assess`, here [`Fleet::assess`] or a
-    /// caller's variant of it) and hands each row to `sink` in input order; an item whose
-    /// assessment panics (a bug) gets [`Fleet::failed_row`] saying so, and the others run.
+    /// Assesses `items` in parallel (on the current rayon pool, each thread taking the next
+    /// item; `assess` is [`Fleet::assess`] or a caller's variant of it) and hands each row to
+    /// `sink` in input order, as soon as it and all before it are done, whatever the number
+    /// of threads; an item whose assessment panics (a bug) gets [`Fleet::failed_row`] saying
+    /// so, and the others run.
     pub fn assess_in_order(
         &self,
         items: &[Item],
@@ -422,8 +421,7 @@ fn placed_sha256(results: &Results, role: &str) -> Option<String> {
 /// all before it are done. `sink` runs on a thread of its own, so a slow sink (a file, a
 /// progress bar) never holds up the workers; results wait in memory only while an earlier
 /// item is still running. A panic in `f` becomes `on_panic(message)` for that item.
-#[doc(hidden)] // public for the fleet benchmark
-pub fn in_order<T, R>(
+pub(crate) fn in_order<T, R>(
     items: &[T],
     f: impl Fn(&T) -> R + Sync,
     on_panic: impl Fn(String) -> R + Sync,

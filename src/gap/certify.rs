@@ -85,7 +85,12 @@ impl SideGap<'_> {
     /// Certifies that no point of the gap at `pose` lies lower than `best` (the lowest of the
     /// `known` minima) by more than the tolerance (module docs), or finds the lowest such
     /// point: a scan for basins at `pose` first, then the certificate on what the scan saw.
-    pub fn certify(&self, pose: &SidePose, best: GapPoint, known: &[GapPoint]) -> Certificate {
+    pub(crate) fn certify(
+        &self,
+        pose: &SidePose,
+        best: GapPoint,
+        known: &[GapPoint],
+    ) -> Certificate {
         let (mut pose_box, mut scanned) = (PoseBox::default(), Scanned::default());
         self.basins(pose, &mut pose_box, &mut scanned, &mut Vec::new());
         self.certify_scanned(pose, best, known, &mut pose_box, &mut scanned)

@@ -15,6 +15,16 @@
 //! searches report (`contact.rs`). The rigid search's minimum is certified global at the
 //! solution (`certify.rs`, on the bounds of `bound.rs`): no point of the gap lies lower by
 //! more than a stated tolerance.
+//!
+//! Public here: the pose of a side ([`SidePose`]), the gap at one wheel point
+//! ([`SideGap::new`], [`SideGap::at`], giving a [`GapPoint`]), for checks of a search from
+//! outside (the reference tests' brute-force minima), and the [`ContactPoint`] the searches
+//! report. The scans, minima, tolerances and the certificate are the searches' own.
+//!
+//! # Units and frames
+//!
+//! Millimetres and radians, in the side frame of the crate docs (`sign` +1 for the left
+//! side, -1 for the right).
 
 mod bound;
 mod certify;
@@ -28,28 +38,26 @@ mod scan;
 mod tabulated;
 #[cfg(test)]
 pub(crate) mod tests;
-mod yaw;
+pub(crate) mod yaw;
 
 use crate::track::{PlacedRail, PlacedWheel, RailPoint, SidePair, WheelPoint};
 use scan::SCAN_BLOCK;
 use tabulated::Tables;
 
-pub use bound::CERTIFY_TOL_MM;
-pub use certify::Certificate;
 pub use contact::ContactPoint;
 pub(crate) use pose_box::PoseBox;
 pub(crate) use scan::Scanned;
-pub use yaw::{MAX_SLOPE_TAN, MIN_DY_DS, Yaw, YawModel};
+pub(crate) use yaw::{Yaw, YawModel};
 
 /// Step of the coarse scan of the wheel that finds the basins of the gap (mm). Refinement
 /// then finds each minimum exactly; see [`COARSE_MARGIN_MM`].
-pub const COARSE_STEP_MM: f64 = 0.25;
+pub(crate) const COARSE_STEP_MM: f64 = 0.25;
 /// Coarse minima within this margin of the lowest coarse minimum are all refined. It bounds
 /// the error of the coarse values (kappa h^2 / 2 = 0.006 mm for a relative curvature of
 /// 1/5 mm^-1 at 0.25 mm) with a safety factor of 8.
-pub const COARSE_MARGIN_MM: f64 = 0.05;
+pub(crate) const COARSE_MARGIN_MM: f64 = 0.05;
 /// Two minima closer than this in the wheel coordinate are one basin (mm).
-pub const SAME_BASIN_MM: f64 = 0.5;
+pub(crate) const SAME_BASIN_MM: f64 = 0.5;
 
 /// The pose of one side: shift and roll as seen in the side frame.
 ///
@@ -60,9 +68,9 @@ pub const SAME_BASIN_MM: f64 = 0.5;
 /// loop does not use.
 ///
 /// The yaw is not applied here: it changes which points of the wheel the rail sees (its
-/// outline, [`Yaw`]), which the side's [`SideGap`] holds for one yaw at a time
-/// ([`SideGap::set_yaw`]); `yaw` names that yaw, so that a pose of another yaw is never
-/// mistaken for this one.
+/// outline), which the side's [`SideGap`] holds for one yaw at a time (no yaw unless the
+/// searches set one); `yaw` names that yaw, so that a pose of another yaw is never mistaken
+/// for this one.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SidePose {
     /// `sign * y_ws` (mm).
@@ -71,7 +79,7 @@ pub struct SidePose {
     pub cos: f64,
     /// `sin(sign * roll)`.
     pub sin: f64,
-    /// `sign * yaw` (rad): the side's yaw ([`Yaw::psi`]).
+    /// `sign * yaw` (rad): the side's yaw.
     pub yaw: f64,
 }
 

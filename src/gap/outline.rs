@@ -32,7 +32,7 @@ const NO_CELL: WheelCell = WheelCell {
 
 impl SideGap<'_> {
     /// The yaw the side's outline is for.
-    pub fn yaw(&self) -> &Yaw {
+    pub(crate) fn yaw(&self) -> &Yaw {
         &self.yaw
     }
 
@@ -51,7 +51,7 @@ impl SideGap<'_> {
 
     /// The pose of this side for a wheelset shift and roll at the side's yaw.
     #[inline]
-    pub fn pose(&self, y_ws: f64, roll: f64) -> super::SidePose {
+    pub(crate) fn pose(&self, y_ws: f64, roll: f64) -> super::SidePose {
         super::SidePose {
             yaw: self.yaw.psi(),
             ..super::SidePose::new(self.sign, y_ws, roll)
@@ -110,7 +110,7 @@ impl SideGap<'_> {
     /// its domain as [`crate::profile::Profile::eval`] clamps) without yaw, the outline's
     /// with yaw, `None` outside the part of the wheel that takes part.
     #[inline]
-    pub fn wheel_point(&self, s: f64) -> Option<WheelPoint> {
+    pub(crate) fn wheel_point(&self, s: f64) -> Option<WheelPoint> {
         if !self.yawed() {
             return Some(self.pair.wheel.at(s));
         }
@@ -123,7 +123,7 @@ impl SideGap<'_> {
     /// Says whether the side's yaw will change from pose to pose (a sweep whose yaw grows
     /// with the shift): its boxes of poses then span nearby yaws, at the price of looser
     /// bounds, instead of holding one yaw each.
-    pub fn set_yaw_varies(&mut self, varies: bool) {
+    pub(crate) fn set_yaw_varies(&mut self, varies: bool) {
         self.yaw_varies = varies;
     }
 
@@ -131,7 +131,7 @@ impl SideGap<'_> {
     /// [`Yaw::new`]); poses of this side must then carry its [`Yaw::psi`]. Costs a pass
     /// over the coarse samples (four at a time) and the blocks when the yaw changes,
     /// nothing otherwise.
-    pub fn set_yaw(&mut self, yaw: Yaw) {
+    pub(crate) fn set_yaw(&mut self, yaw: Yaw) {
         if yaw == self.yaw {
             return;
         }

@@ -72,7 +72,6 @@ pub fn paper_ratio_error(a_over_b_curv: f64) -> (f64, u32) {
 
 /// Errors of the paper's Hertz numerics on fixed grids (scene-independent).
 #[derive(Debug, Clone)]
-#[doc(hidden)] // public for the report's accuracy table, the CLI tests and the Python binding
 pub struct HertzAccuracy {
     /// `(e, relative error of K, relative error of E)` of the paper's series.
     pub series: Vec<(f64, f64, f64)>,

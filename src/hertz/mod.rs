@@ -67,9 +67,6 @@
 //! * B. C. Carlson (1995), Numerical computation of real or complex elliptic integrals,
 //!   Numerical Algorithms 10, 13-26: `R_D`, for the cancellation-free ratio.
 
-// The paper's Hertz numerics against the exact ones: public for the reference tests
-// (`tests/hertz.rs`); the study's result is `HertzAccuracy`.
-#[doc(hidden)]
 pub mod accuracy;
 mod elliptic;
 mod exact;

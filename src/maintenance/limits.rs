@@ -31,7 +31,6 @@ use std::fmt;
 
 /// One limit of a flange dimension: its value and where it comes from.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the report's and the fleet's maintenance tables (one limit of `Limits`)
 pub struct Limit {
     /// The limit (mm).
     pub value_mm: f64,
@@ -56,7 +55,6 @@ pub struct Limits {
 
 /// Values set by a scene's `[limits]`, each overriding the standard's (mm).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-#[doc(hidden)] // public for the scene's `[limits]` (what `Limits::with_overrides` takes)
 pub struct LimitOverrides {
     /// `sh_min_mm`.
     pub sh_min_mm: Option<f64>,
@@ -203,7 +201,6 @@ impl Limits {
 
 /// A flange dimension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[doc(hidden)] // public for the maintenance tables (the dimension a `Breach` names)
 pub enum Dimension {
     /// Flange height.
     Sh,
@@ -226,7 +223,6 @@ impl Dimension {
 
 /// Which side of its range a value left.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[doc(hidden)] // public for the maintenance tables (the side of a `Limit` a `Breach` breaks)
 pub enum Bound {
     /// Below the least value.
     Min,

@@ -27,7 +27,6 @@ use crate::track::{Inclination, Placement};
 
 /// One wheel's flange dimensions, its limits and the limits it breaks.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the report's and the fleet's maintenance tables
 pub struct WheelAssessment {
     /// Sh, Sd, qR, or why they cannot be measured.
     pub dimensions: Result<FlangeDimensions, DimensionError>,
@@ -66,7 +65,6 @@ pub(crate) struct NominalRails {
 
 /// The maintenance view of a placement's profiles.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the report's and the fleet's maintenance tables
 pub struct Assessment {
     /// Left and right wheels.
     pub wheels: [WheelAssessment; 2],

@@ -16,9 +16,6 @@
 pub(crate) mod bounds;
 pub mod read;
 mod s1002;
-// The profile spline: public for the readers' reference tests (`tests/profile_read.rs`), not
-// part of the API.
-#[doc(hidden)]
 pub mod spline;
 mod uic60;
 
@@ -47,7 +44,6 @@ impl std::fmt::Display for ProfileKind {
 
 /// Where a profile comes from, for the report's provenance table.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the report's provenance table (what `Profile::source` returns)
 pub enum Source {
     /// A definition built into wheelrail, described in words.
     Definition(&'static str),
@@ -397,8 +393,7 @@ impl ProfileScan<'_> {
 /// towards the other body (`-v'' / (1 + v'^2)^(3/2)`; both side frames have `v''` < 0 on a
 /// convex bump).
 #[inline]
-#[doc(hidden)] // public for the profile and regression tests
-pub fn convex_curvature(d1: f64, d2: f64) -> f64 {
+pub(crate) fn convex_curvature(d1: f64, d2: f64) -> f64 {
     -d2 / (1.0 + d1 * d1).powf(1.5)
 }
 

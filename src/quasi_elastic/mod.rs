@@ -34,7 +34,6 @@ mod settings;
 mod trapezoid;
 
 use gauss::gauss_region;
-#[doc(hidden)] // public for the reference tests of the quadrature and the pipeline benchmark
 pub use trapezoid::average;
 use trapezoid::trapezoid_region;
 pub(crate) use trapezoid::{MIN_STEP_MM, TRAPEZOID_STEPS_PER_WIDTH};
@@ -560,7 +559,6 @@ fn barrier_scan(gaps: &[f64], barrier: f64) -> Vec<usize> {
 /// One patch of `average`: the weight-averaged fields, the integral of the weight, and
 /// the smallest gap in the patch.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the reference tests of the quadrature
 pub struct Average<const N: usize> {
     /// Weighted means of the fields.
     pub mean: [f64; N],

@@ -80,7 +80,6 @@ pub(super) fn trapezoid_region(
 /// assert_eq!(a.len(), 1);
 /// assert!(a[0].mean[0].abs() < 1e-15);
 /// ```
-#[doc(hidden)] // public for the reference tests of the quadrature and the pipeline benchmark
 pub fn average<const N: usize>(
     nodes: &[f64],
     gaps: &[f64],

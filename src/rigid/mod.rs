@@ -284,7 +284,6 @@ impl JumpKind {
 /// two-point contact of the committed scenes (5 µm and more) and the tread jump of S1002 on
 /// UIC60 1:40 (3.9 µm, analytic; 4.3 µm in the Manchester benchmark's sampled files).
 /// Built-in (analytic) profiles have no sampling: their jumps are always jumps.
-#[doc(hidden)] // public for the jump tests
 pub const ARTEFACT_HOLLOW_MM: f64 = 2e-3;
 
 /// An interval of `y_ws` across which the contact point of one wheel jumps.

@@ -131,7 +131,6 @@ impl std::error::Error for SceneError {}
 
 /// Where a profile comes from: a built-in definition or a file.
 #[derive(Debug, Clone, PartialEq)]
-#[doc(hidden)] // public for the Python binding and the fuzz tests (a scene's profile as written)
 pub enum ProfileRef {
     /// A built-in profile by name.
     BuiltIn(String),
@@ -141,7 +140,6 @@ pub enum ProfileRef {
 
 /// Image formats a figure can be written in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[doc(hidden)] // public for the Python binding and the scene benchmark (the report's image format)
 pub enum ImageFormat {
     /// Scalable vector graphics.
     Svg,
@@ -218,7 +216,6 @@ pub struct Scene {
 
 /// `[fleet]`: what `wheelrail fleet` does beyond the scene's own stages.
 #[derive(Debug, Clone, Default, PartialEq)]
-#[doc(hidden)] // public for `wheelrail fleet` (what `Scene::fleet` gives the CLI)
 pub struct FleetSettings {
     pub(crate) conicity_limit: Option<f64>,
 }

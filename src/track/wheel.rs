@@ -88,9 +88,10 @@ impl WheelCell {
     }
 }
 
-/// A point of a placed wheel relative to the wheelset centre (side frame, no roll).
+/// A point of a placed wheel relative to the wheelset centre (side frame, no roll), as
+/// [`PlacedWheel::at`] gives it and [`crate::gap::GapPoint`] carries it; `Y`, `Z` and their
+/// derivatives in mm.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the reference tests (what `PlacedWheel::at` gives the gap)
 pub struct WheelPoint {
     /// Lateral `Y` from the wheelset centre (mm).
     pub y: f64,
@@ -100,8 +101,8 @@ pub struct WheelPoint {
     pub slope: f64,
     /// `d2Z/dY2` (= `-d2F/ds2`, 1/mm).
     pub d2: f64,
-    /// `dY/ds`: 1 for a profile point; the rate at which a yawed wheel's outline
-    /// ([`crate::gap::Yaw::outline`]) moves sideways along the profile.
+    /// `dY/ds`: 1 for a profile point; the rate at which a yawed wheel's outline (the
+    /// points the rail sees) moves sideways along the profile.
     pub dy_ds: f64,
 }
 

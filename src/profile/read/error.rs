@@ -6,7 +6,6 @@ use crate::profile::ProfileKind;
 
 /// Where a bad value sits on its line: a numbered column or a `key = value` entry.
 #[derive(Debug, Clone, PartialEq, Eq)]
-#[doc(hidden)] // public for the reader tests (the field a `ReadError` names)
 pub enum Field {
     /// 1-based column of a data row.
     Column(usize),
@@ -25,7 +24,6 @@ impl fmt::Display for Field {
 
 /// Which extent of a profile is implausible.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[doc(hidden)] // public for the reader tests (the axis a `ReadError` names)
 pub enum Axis {
     /// The lateral coordinate (`s` of a wheel, `y` of a rail).
     Lateral,

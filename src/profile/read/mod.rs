@@ -143,7 +143,6 @@ use crate::profile::ProfileKind;
 
 /// A supported profile file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[doc(hidden)] // public for the reader and fuzz tests that parse text in a named format
 pub enum ProfileFormat {
     /// The project's CSV (`.csv`), see the [module docs](self).
     Csv,
@@ -229,7 +228,6 @@ impl ReadOptions {
 
 /// Where a profile came from: enough to tell two runs apart that read different files.
 #[derive(Debug, Clone, PartialEq, Eq)]
-#[doc(hidden)] // public for the report's provenance table (a read profile's file and format)
 pub struct ProfileSource {
     /// The path as given to [`read_profile`], or the origin given to `parse_str`.
     pub path: String,
@@ -442,7 +440,6 @@ pub fn read_profile_with(
 /// assert_eq!(rail.source.sha256.len(), 64);
 /// # Ok::<(), wheelrail::profile::read::ReadError>(())
 /// ```
-#[doc(hidden)] // public for the reader, profile and stress tests (text in a named format)
 pub fn parse_str(
     text: &str,
     format: ProfileFormat,
@@ -458,7 +455,6 @@ pub fn parse_str(
 ///
 /// As `parse_str`; with [`StepBack::Drop`] no [`ReadError::NonMonotonic`] or
 /// [`ReadError::DuplicatePoint`], but [`ReadError::TooFewPoints`] when too few remain.
-#[doc(hidden)] // public for the reader tests and the fuzz target
 pub fn parse_str_with(
     text: &str,
     format: ProfileFormat,

@@ -31,9 +31,9 @@ const PLACEMENT_SCAN_STEP_MM: f64 = 0.01;
 /// as part of the running surface: a vertical or undercut face cannot be written as Z(Y).
 pub(crate) const MAX_RAIL_SLOPE: f64 = 50.0;
 
-/// A point of a placed rail, in the side frame.
+/// A point of a placed rail in the side frame, as [`PlacedRail::at`] gives it and
+/// [`crate::gap::GapPoint`] carries it.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[doc(hidden)] // public for the reference tests (what `PlacedRail::at` gives the gap)
 pub struct RailPoint {
     /// Height `Z` (mm).
     pub z: f64,
