@@ -293,3 +293,24 @@ fn clock_reference() -> u64 {
     }
     x
 }
+
+/// The EN 15302 reference pair (R-UIC519A on S-UIC519A 1:20, 141 positions:
+/// `benches/data/en15302_e1_delta_r.toml`) as the numerics compute it: the scene and its two
+/// 1000-point files read, fitted and placed, the rigid sweep and the equivalent conicity
+/// (no tables, figures or files: `cargo bench --bench scene` renders them too).
+#[divan::bench(sample_count = 30)]
+fn en15302_e1_profiles_and_sweep(bencher: divan::Bencher) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/data/en15302_e1_delta_r.toml");
+    bencher.bench(|| {
+        let scene = Scene::load(black_box(&path)).unwrap();
+        pipeline::run(&scene).unwrap()
+    });
+}
+
+/// The EN 15302 pair's profiles alone: the two files read, fitted and placed.
+#[divan::bench(sample_count = 30)]
+fn en15302_e1_profiles(bencher: divan::Bencher) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/data/en15302_e1_delta_r.toml");
+    let scene = Scene::load(&path).unwrap();
+    bencher.bench(|| pipeline::place(black_box(&scene)).unwrap());
+}

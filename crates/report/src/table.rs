@@ -170,7 +170,7 @@ impl std::error::Error for TableError {}
 /// assert_eq!(back.numeric("y_ws_mm"), Some(&[0.0, 0.5, 9.5][..]));
 /// assert!(back.numeric("delta_r_mm").unwrap()[2].is_nan());
 /// assert_eq!(back.text("status").unwrap()[2], "no contact");
-/// # Ok::<(), crate::table::TableError>(())
+/// # Ok::<(), wheelrail_report::table::TableError>(())
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Table {

@@ -44,7 +44,7 @@
 //! assert!(svg.contains("Rolling radius difference"));
 //! let png = render_png(&figure)?;
 //! assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
-//! # Ok::<(), crate::chart::ChartError>(())
+//! # Ok::<(), wheelrail_report::chart::ChartError>(())
 //! ```
 
 use std::fmt;

@@ -161,7 +161,7 @@ impl Comparison {
 /// let diff = compare(&golden, &far, &policy);
 /// assert!(!diff.is_match());
 /// assert!(diff.to_string().contains("x_mm: 1 of 2 rows outside"));
-/// # Ok::<(), crate::table::TableError>(())
+/// # Ok::<(), wheelrail_report::table::TableError>(())
 /// ```
 pub fn compare(expected: &Table, actual: &Table, policy: &TolerancePolicy) -> Comparison {
     let mut out = Comparison {

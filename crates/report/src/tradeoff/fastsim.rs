@@ -38,7 +38,7 @@ pub const DEFAULT_MARK: &str = " (default)";
 ///
 /// ```
 /// use wheelrail::creep::{DEFAULT_GRID, Grid};
-/// use wheelrail::tradeoff::fastsim::label;
+/// use wheelrail_report::tradeoff::fastsim::label;
 /// assert_eq!(label(Grid { strips: 8, elements: 16 }), "8x16");
 /// assert_eq!(label(DEFAULT_GRID), "32x32 (default)");
 /// ```
