@@ -62,19 +62,19 @@ fn patch_at(c: &CreepSweep, side: Side, y_ws: f64) -> wheelrail::creep::PatchFor
 }
 
 /// The six given wheel-cases of from the Manchester scene as committed (FASTSIM,
-/// heaviest quasi-elastic patch, free rolling): ξ and η within 10 % or 2e-4, FN within 5 %,
-/// `√(Fx² + Fy²)` within 10 % + 0.05 μ FN of CONTACT's. Measured: ξ within 0.4 % except the
+/// heaviest quasi-elastic patch, free rolling). Measured: ξ within 0.45 % except the
 /// centred wheelset (ours 0 by symmetry, CONTACT's -5.7e-5: its reference point lies
-/// 0.03 mm lower than the profile's surface), η within 0.5 %, FN within 0.3 %, the
-/// tangential force within 17 N except the centred wheelset, where it is spin alone and
-/// ours is 265 N against CONTACT's 254 N (the quasi-elastic patch's contact angle is larger
-/// than the point's; the rigid contact gives 198 N).
+/// 0.03 mm lower than the profile's surface), η within 0.47 %, FN within 0.23 %, the
+/// tangential force within 0.15 % (6.3 N) except the centred wheelset, where it is spin
+/// alone and ours is 265.6 N against CONTACT's 254.0 N (the quasi-elastic patch's contact
+/// angle is larger than the point's; the rigid contact gives 198 N). Bounds about twice
+/// these: ξ and η within 1 % (1.2e-4 more at the centred wheelset), FN within 0.5 %, the
+/// tangential force within 0.3 % (25 N more at the centred wheelset).
 #[test]
 fn manchester_given_wheel_cases_agree_with_contact() {
     let scene = manchester_scene();
     let c = creep_of(&scene);
     assert_eq!(c.kinematics().pitch_rate, PitchRate::FreeRolling);
-    let mu = c.settings().friction();
     eprintln!(
         "{:5} {:>5} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8} {:>7} {:>7}",
         "side", "y_ws", "xi", "CONTACT", "eta", "CONTACT", "FN", "CONTACT", "Ft", "CONTACT"
@@ -98,12 +98,15 @@ fn manchester_given_wheel_cases_agree_with_contact() {
             ft_contact
         );
         let at = format!("{} at y_ws = {}", g.side.name(), g.y_ws);
-        let creepage = |got: f64, want: f64| (got - want).abs() <= (0.1 * want.abs()).max(2e-4);
+        let centred = g.y_ws == 0.0;
+        let creepage = |got: f64, want: f64| {
+            (got - want).abs() <= 0.01 * want.abs() + if centred { 1.2e-4 } else { 0.0 }
+        };
         assert!(creepage(f.creepages.xi, g.xi), "{at}: xi");
         assert!(creepage(f.creepages.eta, g.eta), "{at}: eta");
-        assert!((f.normal_force_n / g.fn_n - 1.0).abs() <= 0.05, "{at}: FN");
+        assert!((f.normal_force_n / g.fn_n - 1.0).abs() <= 5e-3, "{at}: FN");
         assert!(
-            (ft - ft_contact).abs() <= 0.1 * ft_contact + 0.05 * mu * g.fn_n,
+            (ft - ft_contact).abs() <= 3e-3 * ft_contact + if centred { 25.0 } else { 0.0 },
             "{at}: tangential force {ft} against {ft_contact}"
         );
     }
@@ -263,7 +266,9 @@ fn the_contact_tables_zero_yaw_row_is_the_ordinary_sweep() {
 
 /// The row at -ψ is the mirror image of the row at +ψ on a symmetric wheelset: at -y_ws the
 /// wheels swap, the roll and lateral positions change sign, the lead, x, contact angle,
-/// radius, ellipse and coefficients stay (to the solver's accuracy).
+/// radius, ellipse and coefficients stay (to the solver's accuracy). Measured: rolls
+/// 3.2e-15 rad apart, contact angles 2.9e-12 rad, positions and radii 2.7e-11 mm, the
+/// ellipses and coefficients 7.0e-12 relative; bounds about twice these.
 #[test]
 fn the_contact_table_at_minus_yaw_mirrors_plus_yaw() {
     let table = pipeline::run(&table_scene())
@@ -280,7 +285,7 @@ fn the_contact_table_at_minus_yaw_mirrors_plus_yaw() {
             let (p, q) = (&a.rigid.positions()[j], &b.rigid.positions()[m - 1 - j]);
             assert!((p.y_ws + q.y_ws).abs() < 1e-12);
             assert!(
-                (p.roll + q.roll).abs() < 1e-12,
+                (p.roll + q.roll).abs() < 1e-14,
                 "roll at {} {}",
                 a.yaw_rad,
                 p.y_ws
@@ -296,7 +301,7 @@ fn the_contact_table_at_minus_yaw_mirrors_plus_yaw() {
                 ] {
                     worst_mm = worst_mm.max((u - v).abs());
                 }
-                assert!((c.gamma - d.gamma).abs() < 1e-9);
+                assert!((c.gamma - d.gamma).abs() < 6e-12);
                 let (e, f) = (
                     a.hertz.positions()[j].sides[k].ellipse().unwrap(),
                     b.hertz.positions()[m - 1 - j].sides[1 - k]
@@ -322,7 +327,7 @@ fn the_contact_table_at_minus_yaw_mirrors_plus_yaw() {
     }
     eprintln!("mirror: largest difference {worst_mm:e} mm, relative {worst_rel:e}");
     assert!(
-        worst_mm < 1e-7 && worst_rel < 1e-7,
+        worst_mm < 6e-11 && worst_rel < 1.5e-11,
         "{worst_mm:e} {worst_rel:e}"
     );
 }

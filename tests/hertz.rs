@@ -26,8 +26,9 @@ fn rel(x: f64, reference: f64) -> f64 {
 /// at 50 digits, textbook equations solved independently of the Rust code).
 #[test]
 fn exact_matches_mpmath_references() {
-    // The brief's target: 1e-12 relative for a, b, p0 and the approach.
-    const TOL: f64 = 1e-12;
+    // Measured at most 8.9e-16 (b) over the 54 cases: the rounding of the AGM, the Newton
+    // solve and the closing products; twice that. (The brief asked for 1e-12.)
+    const TOL: f64 = 2e-15;
     let data = include_str!("data/hertz_reference.csv");
     let mut rows = 0;
     let mut worst = [0.0f64; 4];
@@ -73,11 +74,15 @@ fn classical_coefficients_m_n() {
         (90.0, 1.0, 1.0),
     ];
     let (load, b) = (1000.0, 0.01);
+    let mut worst: f64 = 0.0;
     for (theta_deg, m, n) in table {
         let cos: f64 = f64::to_radians(theta_deg).cos();
         let a = b * (1.0 - cos) / (1.0 + cos);
         let c = solve(a, b, load, E_STEEL, EllipseMethod::Exact);
         let scale = (3.0 * load / (4.0 * E_STEEL * (a + b))).cbrt();
+        worst = worst
+            .max((c.a_mm / scale - m).abs())
+            .max((c.b_mm / scale - n).abs());
         assert!(
             (c.a_mm / scale - m).abs() <= 5e-5,
             "θ = {theta_deg}: m = {}",
@@ -89,10 +94,12 @@ fn classical_coefficients_m_n() {
             c.b_mm / scale
         );
     }
+    println!("m, n against the classical table: max deviation {worst:e}");
 }
 
 /// Sphere on plane, A = B = 1/(2R): a = (3PR/(4E*))^(1/3), δ = a²/R, p0 = 3P/(2πa²)
-/// (Johnson 1985, §4.2). 1e-14: a few roundings in cbrt and the products.
+/// (Johnson 1985, §4.2). Measured at most 5.4e-16 (the mean pressure): a few roundings in
+/// cbrt and the products; 1.5e-15 allows them and another libm's cbrt.
 #[test]
 fn sphere_on_plane_closed_form() {
     for (r, load, e_star) in [
@@ -102,10 +109,11 @@ fn sphere_on_plane_closed_form() {
     ] {
         let c = solve(0.5 / r, 0.5 / r, load, e_star, EllipseMethod::Exact);
         let a = (3.0 * load * r / (4.0 * e_star)).cbrt();
-        assert!(rel(c.a_mm, a) <= 1e-14 && rel(c.b_mm, a) <= 1e-14);
-        assert!(rel(c.approach_mm, a * a / r) <= 1e-14);
-        assert!(rel(c.p0_mpa, 3.0 * load / (2.0 * PI * a * a)) <= 1e-14);
-        assert!(rel(c.mean_pressure_mpa, load / (PI * a * a)) <= 1e-14);
+        const TOL: f64 = 1.5e-15;
+        assert!(rel(c.a_mm, a) <= TOL && rel(c.b_mm, a) <= TOL);
+        assert!(rel(c.approach_mm, a * a / r) <= TOL);
+        assert!(rel(c.p0_mpa, 3.0 * load / (2.0 * PI * a * a)) <= TOL);
+        assert!(rel(c.mean_pressure_mpa, load / (PI * a * a)) <= TOL);
         assert!(c.eccentricity.abs() <= 1e-15);
         assert_eq!((c.iterations, c.stop), (0, Stop::Converged));
     }
@@ -113,15 +121,16 @@ fn sphere_on_plane_closed_form() {
 
 /// Near the circle the exact method stays exact: the approach to the circle is smooth
 /// (checked against the circle itself: at A/B = 1 - 1e-12 the semi-axes differ from the
-/// circle's by ~ (1e-12)·(1/3, 2/3), so 1e-12 is the reference accuracy).
+/// circle's by a fraction of 1e-12). Measured: a 5.0e-13, b 1.7e-13, the approach 1.7e-13;
+/// the bounds are about twice these.
 #[test]
 fn near_circle_is_continuous() {
     let b = 0.01;
     let circle = solve(b, b, 1e3, E_STEEL, EllipseMethod::Exact);
     let near = solve(b * (1.0 - 1e-12), b, 1e3, E_STEEL, EllipseMethod::Exact);
     assert!(rel(near.a_mm, circle.a_mm) <= 1e-12 && near.a_mm > circle.a_mm);
-    assert!(rel(near.b_mm, circle.b_mm) <= 1e-12);
-    assert!(rel(near.approach_mm, circle.approach_mm) <= 1e-12);
+    assert!(rel(near.b_mm, circle.b_mm) <= 4e-13);
+    assert!(rel(near.approach_mm, circle.approach_mm) <= 4e-13);
 }
 
 /// Down to A/B = 1e-300 the exact method returns finite, converged ellipses with b/a
@@ -225,7 +234,7 @@ fn relative_curvatures_at_psi_zero_are_the_sums() {
         b.to_bits(),
         (0.5 * (-1.0_f64 / 100.0 + 1.0 / 13.0)).to_bits()
     );
-    // ψ = π/2 swaps the rail's axes.
+    // ψ = π/2 swaps the rail's axes (measured: exact; 1e-15 allows a rounding or two).
     let (a, b) = relative_curvatures(&k, PI / 2.0);
     assert!(rel(a, 0.5 * (1.0 / 460.0 + 1.0 / 13.0)) <= 1e-15);
     assert!(rel(b, 0.5 * (-1.0 / 100.0)) <= 1e-15);
@@ -240,7 +249,8 @@ proptest! {
     #![proptest_config(ProptestConfig { failure_persistence: None, ..ProptestConfig::default() })]
 
     /// Paper Eqs. 12-13: A + B is half the sum of the four curvatures; |B - A| the Eq. 13
-    /// root. 1e-14 absolute on curvatures up to 0.1/mm: a few roundings.
+    /// root. Absolute on curvatures up to 0.1/mm: measured at most 2.8e-17 and 4.9e-17 over
+    /// 3000 draws (a few roundings); 1e-16.
     #[test]
     fn relative_curvatures_satisfy_eqs_12_13(
         k1x in curvature(), k1y in curvature(), k2x in curvature(), k2y in curvature(),
@@ -250,10 +260,10 @@ proptest! {
             wheel_rolling: k1x, wheel_lateral: k1y, rail_rolling: k2x, rail_lateral: k2y,
         };
         let (a, b) = relative_curvatures(&k, psi);
-        prop_assert!((a + b - 0.5 * (k1x + k1y + k2x + k2y)).abs() <= 1e-14);
+        prop_assert!((a + b - 0.5 * (k1x + k1y + k2x + k2y)).abs() <= 1e-16);
         let (d1, d2) = (k1x - k1y, k2x - k2y);
         let diff = 0.5 * (d1 * d1 + d2 * d2 + 2.0 * d1 * d2 * (2.0 * psi).cos()).max(0.0).sqrt();
-        prop_assert!(((b - a).abs() - diff).abs() <= 1e-14);
+        prop_assert!(((b - a).abs() - diff).abs() <= 1e-16);
     }
 
     /// A stays with the rolling direction: a small ψ moves A by O(ψ²) from its ψ = 0 value
@@ -277,7 +287,8 @@ proptest! {
     }
 
     /// Swapping A and B swaps a and b (the physics is symmetric; the implementation orders the
-    /// curvatures first, so the values agree to 1 ulp-level, 4e-16 relative).
+    /// curvatures first, so both run the same operations: equal to the bit, as measured over
+    /// 3000 draws).
     #[test]
     fn swapping_a_and_b_swaps_the_axes(
         a in 1e-6..1.0f64, b in 1e-6..1.0f64, load in 1.0..1e6f64,
@@ -285,13 +296,16 @@ proptest! {
     ) {
         let x = solve(a, b, load, E_STEEL, method);
         let y = solve(b, a, load, E_STEEL, method);
-        prop_assert!(rel(x.a_mm, y.b_mm) <= 4e-16 && rel(x.b_mm, y.a_mm) <= 4e-16);
-        prop_assert!(rel(x.p0_mpa, y.p0_mpa) <= 4e-16);
-        prop_assert!(rel(x.approach_mm, y.approach_mm) <= 4e-16);
+        prop_assert_eq!(x.a_mm.to_bits(), y.b_mm.to_bits());
+        prop_assert_eq!(x.b_mm.to_bits(), y.a_mm.to_bits());
+        prop_assert_eq!(x.p0_mpa.to_bits(), y.p0_mpa.to_bits());
+        prop_assert_eq!(x.approach_mm.to_bits(), y.approach_mm.to_bits());
     }
 
     /// Hertz scaling: a, b ∝ P^(1/3), p0 ∝ P^(1/3), δ ∝ P^(2/3), so 8 P doubles a, b and p0
-    /// and quadruples δ (Johnson 1985, §4.2). 1e-15: cbrt and a few roundings.
+    /// and quadruples δ (Johnson 1985, §4.2). Measured exact over 3000 draws (8 is a power of
+    /// two and cbrt(8x) = 2 cbrt(x) to the bit here); 4.5e-16, two ulps, allows another
+    /// libm's cbrt.
     #[test]
     fn eight_times_the_load_doubles_a_b_p0(
         a in 1e-6..1.0f64, b in 1e-6..1.0f64, load in 1.0..1e6f64,
@@ -299,10 +313,11 @@ proptest! {
     ) {
         let x = solve(a, b, load, E_STEEL, method);
         let y = solve(a, b, 8.0 * load, E_STEEL, method);
-        prop_assert!(rel(y.a_mm, 2.0 * x.a_mm) <= 1e-15);
-        prop_assert!(rel(y.b_mm, 2.0 * x.b_mm) <= 1e-15);
-        prop_assert!(rel(y.p0_mpa, 2.0 * x.p0_mpa) <= 1e-15);
-        prop_assert!(rel(y.approach_mm, 4.0 * x.approach_mm) <= 1e-15);
+        const TOL: f64 = 4.5e-16;
+        prop_assert!(rel(y.a_mm, 2.0 * x.a_mm) <= TOL);
+        prop_assert!(rel(y.b_mm, 2.0 * x.b_mm) <= TOL);
+        prop_assert!(rel(y.p0_mpa, 2.0 * x.p0_mpa) <= TOL);
+        prop_assert!(rel(y.approach_mm, 4.0 * x.approach_mm) <= TOL);
     }
 
     /// The paper's method never panics or returns NaN for valid input: every result is finite
@@ -323,8 +338,9 @@ proptest! {
 #[test]
 fn paper_series_error() {
     let (k0, e0) = accuracy::series_error(0.3);
-    // e = 0.3: the terms fall below 1e-3 after three terms; the tail is ~1e-4 relative.
-    assert!(k0.abs() < 1e-3 && e0.abs() < 1e-3, "{k0} {e0}");
+    // e = 0.3: the terms fall below 1e-3 after three terms; the tail is what is left,
+    // measured -5.2e-6 (K) and 1.5e-5 (E) relative; bound about twice the larger.
+    assert!(k0.abs() < 3e-5 && e0.abs() < 3e-5, "{k0} {e0}");
     let (k1, e1) = accuracy::series_error(0.99);
     // Measured: K -1.0 %, E +0.8 % (the K series is too small, E too large; hertz.md's 31 %
     // and 6 % are for four fixed terms, the 1e-3 threshold sums ~100 terms here).
@@ -366,7 +382,9 @@ fn paper_error_table() {
         );
         // accuracy::paper_ratio_error is the same number (it is what a chart would use).
         let (err_helper, iterations) = accuracy::paper_ratio_error(ratio);
-        assert!((err_helper - err_g).abs() <= 1e-12 && iterations == p.iterations);
+        // Measured at most 1.1e-14 apart: the helper takes b/a from the shapes, the table
+        // from the semi-axes, each with its roundings.
+        assert!((err_helper - err_g).abs() <= 3e-14 && iterations == p.iterations);
         rows.push((ratio, err_g, err_p0, p.stop));
     }
     let at = |r: f64| {
@@ -382,9 +400,9 @@ fn paper_error_table() {
         at(1e-3)
     );
     assert!(at(1e-6).1.abs() > at(1e-3).1.abs());
-    // Moderate ratios: per-cent level.
+    // Moderate ratios: per-cent level (measured 1.3 % at A/B = 0.1).
     assert!(
-        at(0.1).1.abs() > 1e-3 && at(0.1).1.abs() < 0.05,
+        at(0.1).1.abs() > 1e-3 && at(0.1).1.abs() < 0.03,
         "{:?}",
         at(0.1)
     );

@@ -135,7 +135,8 @@ fn check(placement: &Placement, name: &str) -> usize {
                 c.rail_curvature,
             ];
             assert!(values.iter().all(|v| v.is_finite()), "{at}: {c:?}");
-            // No wheel point below the rail (sampled every 0.05 mm).
+            // No wheel point below the rail (sampled every 0.05 mm) by more than the residual
+            // the issue allows (measured: every point at least 3.6e-12 mm above it).
             let sign = side.sign();
             let gap = SideGap::new(placement.side(side), sign);
             let pose = SidePose::new(sign, pos.y_ws, pos.roll);
@@ -145,13 +146,14 @@ fn check(placement: &Placement, name: &str) -> usize {
                 let s = (lo + 0.05 * i as f64).min(hi);
                 if let Some(p) = gap.at(s, &pose) {
                     let d = p.g + pos.axle_height;
-                    assert!(d >= -1e-6, "{at}: {side:?} penetrates by {d} at s = {s}");
+                    assert!(d >= -1e-9, "{at}: {side:?} penetrates by {d} at s = {s}");
                 }
             }
             let patches = &q.side(side).patches;
             assert!(!patches.is_empty(), "{at}: {side:?} without patch");
+            // Normalised shares: measured within 1.1e-16 of 1, bound two ulps of 1.
             let total: f64 = patches.iter().map(|p| p.weight_share).sum();
-            assert!((total - 1.0).abs() < 1e-12, "{at}: shares {total}");
+            assert!((total - 1.0).abs() < 4.5e-16, "{at}: shares {total}");
             for p in patches {
                 assert!(
                     [p.s, p.r, p.gamma, p.wheel_curvature, p.rail_curvature]
@@ -175,9 +177,9 @@ fn measured_wheels_run_on_uic60() {
         );
         let converged = check(&placement, name);
         println!("{name} on UIC60 1:40: {converged} of 101 positions converged");
-        // Tread and flange contact of a worn wheel: at least the positions within the
-        // flangeway clearance (+-5 mm, 21 positions) converge.
-        assert!(converged >= 21, "{name}: {converged}");
+        // Tread and flange contact of a worn wheel: measured 101 of 101 for each wheel (the
+        // flangeway clearance alone, +-5 mm, is 21 positions).
+        assert!(converged >= 90, "{name}: {converged}");
     }
 }
 
@@ -196,6 +198,7 @@ fn measured_rails_run_under_s1002() {
         );
         let converged = check(&placement, name);
         println!("S1002 on {name}: {converged} of 101 positions converged");
-        assert!(converged >= 21, "{name}: {converged}");
+        // Measured: 101 of 101 for each rail.
+        assert!(converged >= 90, "{name}: {converged}");
     }
 }

@@ -52,9 +52,10 @@ fn assert_names_place(err: &ReadError, path: &Path, line: Option<usize>) {
 // EN 13715 S1002 and UIC60 from the Manchester benchmark files
 // ---------------------------------------------------------------------------------------
 
-/// EN 13715 check values are given to 1e-3 mm in the brief; the benchmark file agrees with
-/// the standard's piecewise definition to about 2e-6 mm (NOTICE.md) and the interpolating
-/// spline adds less than 1e-5 mm at its 0.39 mm spacing.
+/// EN 13715 check values are given to 1e-3 mm in the brief (kept: the brief's requirement);
+/// the benchmark file agrees with the standard's piecewise definition to about 2e-6 mm
+/// (NOTICE.md) and the interpolating spline adds less than 1e-5 mm at its 0.39 mm spacing
+/// (measured at most 3.0e-6 mm at the four check values).
 const EN13715_CHECK_TOL_MM: f64 = 1e-3;
 
 #[test]
@@ -74,9 +75,11 @@ fn s1002_prw_gives_en13715_check_values() {
             "F({s_mm}) = {f}, EN 13715: {f_mm}"
         );
     }
-    // Tread slope at the taping line, profiles.md: F'(0) = -0.03359 (given to 4 digits).
+    // Tread slope at the taping line, profiles.md: F'(0) = -0.03359 (given to 4 digits;
+    // measured 4.6e-6 off).
     assert!((s.eval(0.0)[1] + 0.03359).abs() < 1e-5);
-    // The flange tip is the highest point, at s = -55 (within the 0.39 mm point spacing).
+    // The flange tip is the highest point, at s = -55 (within the 0.39 mm point spacing;
+    // measured 0.11 mm, 4.8e-4 mm in height).
     let tip = highest(&wheel);
     assert!((tip[0] + 55.0).abs() < 0.2 && (tip[1] - 28.0).abs() < EN13715_CHECK_TOL_MM);
 }
@@ -113,9 +116,9 @@ fn gauge_point(rail: &PointProfile, z_top: f64) -> f64 {
 }
 
 /// Reference value (the project's reference notes, outside this repository): the MBench
-/// UIC60 file (inclined 1:40) has its gauge point at y = -43.031;
-/// 0.002 mm allows the linear interpolation across the 0.03 mm point spacing on the face.
-const GAUGE_POINT_TOL_MM: f64 = 0.002;
+/// UIC60 file (inclined 1:40) has its gauge point at y = -43.031; the linear interpolation
+/// across the 0.03 mm point spacing on the face puts it 4.4e-4 mm off (measured).
+const GAUGE_POINT_TOL_MM: f64 = 1e-3;
 
 #[test]
 fn uic60_prr_has_top_at_origin_and_gauge_point_at_43_031() {
@@ -124,10 +127,12 @@ fn uic60_prr_has_top_at_origin_and_gauge_point_at_43_031() {
     let s = spline(&rail, 0.0);
     let y_top = crown(&s, -5.0, 5.0);
     let z_top = s.eval(y_top)[0];
-    // NOTICE.md: origin at the highest point of the inclined head. Measured: y_top = 0.006 mm,
-    // z_top = 1e-7 mm (the points are printed to 1e-6 mm near the top).
+    // NOTICE.md: origin at the highest point of the inclined head. Measured: y_top =
+    // 0.006 mm (the crown is flat: 1e-7 mm of height per 0.006 mm there), z_top = 7.3e-8 mm,
+    // within the rounding of the file's points (printed to 1e-6 mm near the top), which
+    // is the bound.
     assert!(y_top.abs() < 0.01, "crown at y = {y_top}");
-    assert!(z_top.abs() < 1e-5, "crown at z = {z_top}");
+    assert!(z_top.abs() < 5e-7, "crown at z = {z_top}");
     // The gauge side is at y < 0 and z is up: the foot of the gauge face is 38.5 mm down.
     assert!(rail.points[0][0] < -43.0 && rail.points[0][1] < -38.0);
     let y_gauge = gauge_point(&rail, z_top);

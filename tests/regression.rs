@@ -45,8 +45,13 @@ fn quasi_elastic_regions_share_the_rigid_minimum() {
                     .iter()
                     .map(|p| p.gap_above_min)
                     .fold(f64::INFINITY, f64::min);
-                // The quadrature resolves the weight here: a node lies close to the rigid minimum.
-                assert!(lowest <= 0.1 * eps, "y_ws {}: {side:?} {patches:?}", p.y_ws);
+                // The quadrature resolves the weight here: a node lies close to the rigid
+                // minimum (measured within 0.034 eps).
+                assert!(
+                    lowest <= 0.07 * eps,
+                    "y_ws {}: {side:?} {patches:?}",
+                    p.y_ws
+                );
                 for patch in patches {
                     assert!(
                         patch.gap_above_min - lowest <= settings.cutoff() * eps,
@@ -77,9 +82,10 @@ fn s1002_end_of_definition_has_finite_derivatives() {
         f.is_finite() && d1.is_finite() && d2.is_finite(),
         "{d1} {d2}"
     );
-    // The arc's curvature at its vertical tangent is 1/20.5 (convex towards the rail).
+    // The arc's curvature at its vertical tangent is 1/20.5 (convex towards the rail;
+    // measured 7.3e-14 1/mm off: the rounding of the arc's closed form).
     let k = wheel.convex_curvature(-70.0);
-    assert!((k - 1.0 / 20.5).abs() < 1e-9, "{k}");
+    assert!((k - 1.0 / 20.5).abs() < 2e-13, "{k}");
     // The run that showed it (from the stress suite's shrunk case).
     let placement = place(
         "[wheel]\nnominal_radius_mm = 300.0\n[rail]\ninclination = \"vertical\"\n\
@@ -145,10 +151,12 @@ fn quasi_elastic_always_has_a_patch_at_a_converged_contact() {
                     assert!((-70.0..=60.0).contains(&patch.s), "{patch:?}");
                     assert!(patch.gap_above_min >= -1e-9, "{patch:?}");
                 }
+                // Normalised shares: measured exact, 4.5e-16 (two ulps of 1) allows rounding.
                 let total: f64 = patches.iter().map(|p| p.weight_share).sum();
-                assert!((total - 1.0).abs() < 1e-12, "{total}");
+                assert!((total - 1.0).abs() < 4.5e-16, "{total}");
             }
         }
+        // Measured: 25 of 25 at both eps.
         assert!(
             converged >= 20,
             "only {converged} of {} positions converged",
@@ -218,17 +226,19 @@ fn quasi_elastic_patch_where_the_weight_is_narrower_than_any_node() {
                 "y_ws {}: {side:?} has no patch",
                 p.y_ws
             );
-            // Where the fallback applies, the patch is the rigid point itself.
+            // Where the fallback applies, the patch is the rigid point itself; elsewhere the
+            // average lies within 1.8e-3 mm of it (measured).
             let rigid_s = p.contact[k].unwrap().s;
             assert!(
-                patches.iter().any(|x| (x.s - rigid_s).abs() < 0.1),
+                patches.iter().any(|x| (x.s - rigid_s).abs() < 4e-3),
                 "y_ws {}: {patches:?}",
                 p.y_ws
             );
             checked += 1;
         }
     }
-    assert!(checked > 0);
+    // Measured: 44 converged wheel contacts.
+    assert!(checked >= 40, "{checked} contacts checked");
 }
 
 /// A contact held at the end of the rail's running surface (where it turns steeper than the

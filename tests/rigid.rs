@@ -72,11 +72,12 @@ fn contact_roll_sensitivity(pos: &rigid::RigidPosition, side: Side) -> (f64, f64
 
 #[test]
 fn every_position_converges_touches_and_does_not_penetrate() {
-    // Default solver: residual <= 1e-9 mm (issue), gaps >= -1e-9 mm over wheel points every
-    // 0.01 mm, and the smallest gap is 0 to within the 0.01 mm sampling (a point of the
-    // sampled wheel lies within 0.005 mm of the contact point, where the gap grows at most
-    // quadratically: 1/2 * 0.2 1/mm * 0.005^2 = 2.5e-6 mm; flank contact with a slope
-    // mismatch makes it linear: 0.005 mm * 3 = 0.015 mm).
+    // Default solver: residual <= 1e-9 mm and gaps >= -1e-9 mm over wheel points every
+    // 0.01 mm (the issue's requirements; measured: residual at most 9.3e-12 mm, no gap
+    // below +4e-12 mm), and the smallest gap is 0 to within the 0.01 mm sampling: a point
+    // of the sampled wheel lies within 0.005 mm of the contact point, where the gap grows
+    // quadratically (1/2 * 0.2 1/mm * 0.005^2 = 2.5e-6 mm on the tread) or, at a flank
+    // contact with a slope mismatch, faster. Measured at most 2.1e-5 mm; bound 5e-5 mm.
     for pos in paper_sweep(Solver::default()).positions() {
         assert_eq!(pos.stop, Stop::Converged, "y_ws = {}", pos.y_ws);
         assert!(
@@ -93,7 +94,7 @@ fn every_position_converges_touches_and_does_not_penetrate() {
                 pos.y_ws
             );
             assert!(
-                g <= 0.015,
+                g <= 5e-5,
                 "{side:?} lifts off by {g} at y_ws = {}",
                 pos.y_ws
             );
@@ -107,7 +108,8 @@ fn paper_solver_touches_within_its_tolerance() {
     // rail interpolated linearly). The interpolation errs vertically by Z'' h^2 / 8 with
     // Z'' = kappa (1 + tan^2 gamma)^1.5: 1e-4 mm on the crown, but 1/13 * 25 * 0.01 / 8 =
     // 2.4e-3 mm on the 70 degree flank. Over its own table points, evaluated exactly, the
-    // gaps therefore lie within 3e-3 mm of zero: a measured property of the method.
+    // gaps therefore lie within 3e-3 mm of zero: a measured property of the method
+    // (measured at most 1.8e-3 mm).
     for pos in paper_sweep(Solver::Paper).positions() {
         assert_eq!(pos.stop, Stop::Converged, "y_ws = {}", pos.y_ws);
         for side in [Side::Left, Side::Right] {
@@ -174,7 +176,9 @@ fn brute_force(y_ws: f64) -> (f64, [f64; 2]) {
 #[test]
 fn default_solver_agrees_with_brute_force() {
     // Positions away from the contact jumps (0.226, 4.992, 6.26 mm) where the contact point
-    // is well defined. Issue: 1e-6 mm in contact position, 1e-9 rad in roll.
+    // is well defined. The issue's requirements: 1e-6 mm in contact position, 1e-9 rad in
+    // roll (measured at most 8.3e-12 mm and 2.2e-15 rad: the rounding of g' over g'' on
+    // the flat tread).
     let shifts = [
         -12.3, -7.7, -3.3, -1.05, 0.0, 0.55, 2.7, 4.4, 5.6, 8.9, 14.2,
     ];
@@ -261,23 +265,30 @@ fn known_features_of_s1002_on_uic60_at_1_in_40() {
 fn paper_solver_error_against_default_is_bounded() {
     // Measured, not assumed: the paper's tabulated minimum puts the contact point on its
     // 0.1 mm table, so away from the jumps its error is at most half a table step (0.05 mm)
-    // plus the motion its 1e-4 mm residual allows; roll error below 1e-6 rad.
+    // plus the motion its 1e-4 mm residual allows: measured 0.0498 mm, and 7.2e-6 rad in
+    // roll. Bounds about twice and 1.4 times these (the roll's bound was set first).
     let d = paper_sweep(Solver::default());
     let p = paper_sweep(Solver::Paper);
     let near_jump = |y: f64| d.jumps().iter().any(|j| (y - j.y_from).abs() < 0.15);
     let mut worst_s: f64 = 0.0;
     let mut worst_roll: f64 = 0.0;
+    let mut compared = 0;
     for (a, b) in d.positions().iter().zip(p.positions()) {
         if near_jump(a.y_ws) {
             continue;
         }
+        compared += 1;
         worst_roll = worst_roll.max((a.roll - b.roll).abs());
         for side in [Side::Left, Side::Right] {
             worst_s = worst_s.max((a.side(side).unwrap().s - b.side(side).unwrap().s).abs());
         }
     }
-    println!("paper vs default: max |ds| = {worst_s:.3e} mm, max |droll| = {worst_roll:.3e} rad");
-    assert!(worst_s < 0.2, "{worst_s}");
+    println!(
+        "paper vs default: max |ds| = {worst_s:.3e} mm, max |droll| = {worst_roll:.3e} rad over {compared} positions"
+    );
+    // Measured: 283 of the 301 positions lie away from the jumps.
+    assert!(compared >= 250, "{compared} positions compared");
+    assert!(worst_s < 0.1, "{worst_s}");
     assert!(worst_roll < 1e-5, "{worst_roll}");
     assert!(
         worst_s > 1e-3,
@@ -290,9 +301,11 @@ fn paper_solver_error_against_default_is_bounded() {
 /// the solution at `y` onto `-y`).
 fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     // A symmetric scene: results at -y equal those at +y with sides swapped and roll
-    // flipped, to 1e-9 (both solves converge to 1e-11 mm residual), except where a
-    // near-conformal contact makes its position ill-conditioned. The contact point is the
-    // root of `g'`, and two things move it:
+    // flipped (both solves converge to 1e-11 mm residual). Over 1200 draws (three seeds):
+    // rolls at most 3.5e-14 rad apart, axle heights 2.4e-11 mm, contact angles 3.2e-14 rad,
+    // contact positions 1.7e-11 mm; bounds about twice these (positions 4e-11 mm), except
+    // where a near-conformal contact makes its position ill-conditioned. The contact point
+    // is the root of `g'`, and two things move it:
     // - the roll: the two rolls are one root found from different starts and differ by the
     //   solver's tolerance (about 1e-14 rad); the point moves by `contact_roll_sensitivity`
     //   per radian;
@@ -302,7 +315,8 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     // At y = 6.2546749581041965 mm the flange contact (relative curvature 1.5e-3 1/mm,
     // g'' = 2.8e-3 1/mm) moves 2.5e4 mm per radian, and the two solves' contacts differ by
     // 1.44e-9 mm for rolls 1.6e-14 rad apart: 4.1e-10 mm from the roll, 7e-10 mm per
-    // side from the rounding. Positions are compared within 1e-9 mm plus twice both.
+    // side from the rounding. Positions are compared within 4e-11 mm plus twice both (over
+    // the draws, no position differed by more than 1.1e-11 mm beyond twice both).
     let s = rigid::search(
         paper_placement_unmirrored(),
         &Sweep::from_slice(&[-y, y]).unwrap(),
@@ -310,8 +324,8 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     );
     let (m, p) = (&s.positions()[0], &s.positions()[1]);
     let d_roll = (m.roll + p.roll).abs();
-    prop_assert!(d_roll < 1e-9);
-    prop_assert!((m.axle_height - p.axle_height).abs() < 1e-9);
+    prop_assert!(d_roll < 1e-13);
+    prop_assert!((m.axle_height - p.axle_height).abs() < 5e-11);
     let (ml, mr) = (m.side(Side::Left).unwrap(), m.side(Side::Right).unwrap());
     let (pl, pr) = (p.side(Side::Left).unwrap(), p.side(Side::Right).unwrap());
     let tol = |a: Side, b: Side| {
@@ -319,7 +333,7 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
             contact_roll_sensitivity(m, a),
             contact_roll_sensitivity(p, b),
         );
-        1e-9 + 2.0 * k_a.max(k_b) * d_roll + 2.0 * 2e-12 / dd_a.min(dd_b)
+        4e-11 + 2.0 * k_a.max(k_b) * d_roll + 2.0 * 2e-12 / dd_a.min(dd_b)
     };
     let (tol_lr, tol_rl) = (tol(Side::Left, Side::Right), tol(Side::Right, Side::Left));
     prop_assert!(
@@ -336,7 +350,7 @@ fn assert_mirrored(y: f64) -> Result<(), TestCaseError> {
     );
     // dY/ds = cos(phi) + sin(phi) F' is within 1e-3 of 1 here.
     prop_assert!((ml.y + pr.y).abs() < tol_lr);
-    prop_assert!((ml.gamma - pr.gamma).abs() < 1e-9);
+    prop_assert!((ml.gamma - pr.gamma).abs() < 1e-13);
     // dr/ds is the wheel's slope, at most 1 where contact is possible (45 degrees):
     // each difference is within its side's tolerance.
     prop_assert!(((ml.r - mr.r) + (pl.r - pr.r)).abs() < tol_lr + tol_rl);
@@ -398,7 +412,8 @@ fn contact_positions_converge_with_profile_resolution() {
     // slope error of the spline (5e-6 at 0.1 mm) over the relative curvature of the gap:
     // about 1e-3 mm on the tread, more where the gap is flat (conformal flange root).
     // Measured: 2.5e-3 mm in position; 3.6e-6 rad in roll, growing towards the flange onset
-    // where the roll changes by 7e-3 rad per mm of shift (ill-conditioned there).
+    // where the roll changes by 7e-3 rad per mm of shift (ill-conditioned there). Bounds
+    // twice and 1.4 times these.
     let sweep: Vec<f64> = (0..=300).map(|i| -15.0 + 0.1 * f64::from(i)).collect();
     let exact = paper_sweep(Solver::default());
     let resampled = rigid::search(
@@ -409,19 +424,23 @@ fn contact_positions_converge_with_profile_resolution() {
     let near_jump = |y: f64| exact.jumps().iter().any(|j| (y - j.y_from).abs() < 0.3);
     let mut worst_s: f64 = 0.0;
     let mut worst_roll: f64 = 0.0;
+    let mut compared = 0;
     for (a, b) in exact.positions().iter().zip(resampled.positions()) {
         assert_eq!(b.stop, Stop::Converged, "y_ws = {}", b.y_ws);
         if near_jump(a.y_ws) {
             continue;
         }
+        compared += 1;
         worst_roll = worst_roll.max((a.roll - b.roll).abs());
         for side in [Side::Left, Side::Right] {
             worst_s = worst_s.max((a.side(side).unwrap().s - b.side(side).unwrap().s).abs());
         }
     }
     println!(
-        "analytic vs 0.1 mm resampled: max |ds| = {worst_s:.2e} mm, max |droll| = {worst_roll:.2e} rad"
+        "analytic vs 0.1 mm resampled: max |ds| = {worst_s:.2e} mm, max |droll| = {worst_roll:.2e} rad over {compared} positions"
     );
+    // Measured: 266 of the 301 positions lie 0.3 mm or more from the jumps.
+    assert!(compared >= 240, "{compared} positions compared");
     assert!(worst_s < 5e-3, "{worst_s}");
     assert!(worst_roll < 5e-6, "{worst_roll}");
 }
@@ -496,7 +515,7 @@ fn equal_placements_built_any_way_give_the_same_results() {
 /// tread (s > -25 mm: the flange root of the S1002 family begins at about -26 mm) and the
 /// flange (s < -30 mm) has the kind `jump`, and the sampled profiles' hops are counted
 /// (the EN 15302 reference wheel R-UIC519A has 34 in ±7.5 mm, each across a hollow below
-/// 2 µm).
+/// 2 µm). Measured over the committed reports: 10 tread-to-flange jumps, 106 artefacts.
 #[test]
 fn tread_to_flange_jumps_of_the_committed_reports_stay_jumps() {
     let reports = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports");
@@ -530,7 +549,7 @@ fn tread_to_flange_jumps_of_the_committed_reports_stay_jumps() {
         }
     }
     assert!(
-        tread_to_flange >= 10,
+        tread_to_flange >= 8,
         "{tread_to_flange} tread-to-flange jumps"
     );
     assert!(artefacts >= 34, "{artefacts} artefacts");

@@ -574,7 +574,8 @@ mod tests {
 
     #[test]
     fn piece_integral_matches_quadrature() {
-        // Against a fine midpoint rule on a piece away from any root, every case of hm.
+        // Against a fine midpoint rule on a piece away from any root, every case of hm
+        // (measured at most 1.4e-13 apart: the midpoint rule's error at 200 000 steps).
         for (g0, hm) in [
             (0.3, 0.2),
             (0.3, -0.05),
@@ -602,7 +603,7 @@ mod tests {
             let mid: f64 = (0..n)
                 .map(|i| dt / (h - p.s_at((f64::from(i) + 0.5) * dt)).sqrt())
                 .sum();
-            assert!((exact - mid).abs() < 1e-10, "{g0} {hm}: {exact} {mid}");
+            assert!((exact - mid).abs() < 3e-13, "{g0} {hm}: {exact} {mid}");
         }
     }
 
@@ -649,6 +650,7 @@ mod tests {
             }
         }
         assert!(tested >= 50 && largest_w > 0.01, "{tested} {largest_w}");
+        // Measured 1.9 ε.
         assert!(worst < 4.0 * f64::EPSILON, "{worst:e}");
     }
 

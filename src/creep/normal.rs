@@ -290,7 +290,8 @@ mod tests {
                 panic!("{out:?}")
             };
             let exact = fz / (delta.cos() - sign * mu * delta.sin());
-            assert!((normal_force_n / exact - 1.0).abs() < 1e-11, "{sign}");
+            // Measured 1.6e-15 (the solve stops at 1e-12 of FZ, here well inside it).
+            assert!((normal_force_n / exact - 1.0).abs() < 4e-15, "{sign}");
         }
     }
 

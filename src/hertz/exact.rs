@@ -254,15 +254,16 @@ mod tests {
             let s = shape(ln_ratio);
             let i = integrals(s.g);
             let residual = 2.0 * s.g.ln() + (i.d / i.dp).ln() - ln_ratio;
-            // 4e-16: a few rounding errors of ln of numbers near 1 and of 2 ln g.
+            // A few rounding errors of ln of numbers near 1 and of 2 ln g: measured up to
+            // 3.6e-16 (1 + |ln(A/B)|); bound about twice that.
             assert!(
-                residual.abs() <= 4e-16 * (1.0 + ln_ratio.abs()),
+                residual.abs() <= 8e-16 * (1.0 + ln_ratio.abs()),
                 "{ln_ratio}: {residual}"
             );
             // Carried-over K and D agree with a fresh evaluation (first-order carry is exact
-            // to O(h²) ≤ 1e-16).
-            assert!((s.k - i.k).abs() <= 2e-15 * i.k);
-            assert!((s.d - i.d).abs() <= 2e-15 * i.d);
+            // to O(h²) ≤ 1e-16; measured 2.1e-16 and 3.8e-16 relative).
+            assert!((s.k - i.k).abs() <= 8e-16 * i.k);
+            assert!((s.d - i.d).abs() <= 8e-16 * i.d);
         }
     }
 }

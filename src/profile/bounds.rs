@@ -178,8 +178,8 @@ mod tests {
         // Not loose: on 0.25 mm cells the second-derivative range is hardly wider than the
         // profile's own (the arcs' are attained exactly, the polynomials' remainder is small),
         // relative to its magnitude where that exceeds 1/mm (the flange back's vertical
-        // tangent).
-        assert!(worst_excess < 0.05, "{}: {worst_excess}", profile.name());
+        // tangent). Measured at most 3.5e-4 (the sampled profiles); bound about three times.
+        assert!(worst_excess < 1e-3, "{}: {worst_excess}", profile.name());
     }
 
     #[test]

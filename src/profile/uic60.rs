@@ -157,13 +157,14 @@ mod tests {
 
     #[test]
     fn arcs_are_tangent() {
-        // Value continuity to the drawing's 6 decimals, slope continuity to 1e-5.
+        // Value continuity to the drawing's 6 decimals (measured 2.6e-7 mm), slope
+        // continuity measured 6.2e-7 (the arcs' centres are drawn to 6 decimals).
         for j in joints() {
             let a = eval(j - 1e-9);
             let b = eval(j + 1e-9);
             assert!((a[0] - b[0]).abs() < DRAWING_TOL_MM, "value at {j}");
             assert!(
-                (a[1] - b[1]).abs() < 1e-5,
+                (a[1] - b[1]).abs() < 1.5e-6,
                 "slope at {j}: {} {}",
                 a[1],
                 b[1]

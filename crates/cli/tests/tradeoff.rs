@@ -43,12 +43,14 @@ fn reference_has_zero_error_and_a_coarse_setting_does_not() {
         assert!(e.abs() < 1e-300, "{r:?}");
     }
     // Profiles sampled every 1 mm cannot carry the S1002 flange geometry: errors above a
-    // floor (measured on the paper sweep: 8 mm in contact position, 2.2 in a and b).
+    // floor (measured on this sweep: 0.19 mm in contact position, 1.66 in a; on the paper
+    // sweep 8 mm and 2.2). Floors about a third of the measured errors.
     let c = &m[1].errors;
-    assert!(c.contact_mm > 1e-3 && c.a_rel.max(c.b_rel) > 1e-3, "{c:?}");
-    // The paper's settings differ measurably from the reference too.
+    assert!(c.contact_mm > 0.05 && c.a_rel.max(c.b_rel) > 0.5, "{c:?}");
+    // The paper's settings differ measurably from the reference too (measured 4.5e-6 rad
+    // in roll, 2.7 % in a and b).
     let p = &m[2].errors;
-    assert!(p.roll_rad > 1e-8 && p.a_rel.max(p.b_rel) > 1e-4, "{p:?}");
+    assert!(p.roll_rad > 1.5e-6 && p.a_rel.max(p.b_rel) > 1e-2, "{p:?}");
     assert!(
         m.iter()
             .all(|x| x.median_s > 0.0 && x.range_s.0 <= x.median_s && x.median_s <= x.range_s.1)
