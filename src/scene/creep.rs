@@ -205,7 +205,7 @@ pub(super) fn table(raw: &RawTable, model: YawModel) -> Result<Grid, Invalid> {
     let from = need("table.from_mm", raw.from_mm)?;
     let to = need("table.to_mm", raw.to_mm)?;
     let step = need("table.step_mm", raw.step_mm)?;
-    let shifts = super::check::shifts(
+    let shifts = super::sweep::shifts(
         from,
         to,
         step,
