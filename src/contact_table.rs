@@ -37,6 +37,7 @@ pub struct Grid {
 
 /// A grid that cannot be computed.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum GridError {
     /// No yaw, more than 401 (`MAX_YAWS`), or yaws that do not increase.
     Yaws {

@@ -33,6 +33,7 @@ const MIRRORED_SHIFT_MM: f64 = 1e-12;
 
 /// Why shifts are no sweep.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum SweepError {
     /// No shifts at all.
     Empty,

@@ -228,6 +228,7 @@ pub(crate) fn creep_forces<'py>(
             input(range.refusal(name, value))
         }
         CommandError::Creep(e) => input(e),
+        e => input(e),
     })?;
     let d = PyDict::new(py);
     d.set_item("method", method.to_string())?;

@@ -14,6 +14,7 @@ fn resolved(mut delta_r: Vec<f64>) -> Vec<f64> {
 
 /// Why a Δr function cannot be used.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum DeltaRError {
     /// Fewer than 3 points.
     TooFewPoints {
@@ -73,6 +74,7 @@ pub struct DeltaRCsvError {
 }
 
 /// What is wrong with a Δr table's text.
+#[non_exhaustive]
 #[derive(Debug, Clone, PartialEq)]
 pub enum CsvProblem {
     /// The first row is no header with the columns `y_mm` (or `y_ws_mm`) and `delta_r_mm`.

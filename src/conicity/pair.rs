@@ -62,6 +62,7 @@ impl Default for ConicitySettings {
 
 /// Why equivalent-conicity amplitudes are not accepted.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum ConicitySettingsError {
     /// No amplitudes, or more than 100001.
     Count {

@@ -144,6 +144,7 @@ pub const RANGES: [Range; 9] = [
 
 /// A value outside its [`Range`], or input the creep model refuses.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum CommandError {
     /// `value` of `range.key` is outside the range (or not finite).
     Implausible {

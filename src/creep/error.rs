@@ -11,6 +11,7 @@ use std::fmt;
 /// Invalid input to the creep stage; each variant names the quantity, so that a caller (a
 /// scene, the command line) can name its key.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum CreepError {
     /// A value that must be finite is NaN or infinite.
     NonFinite {

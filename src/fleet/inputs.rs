@@ -156,6 +156,7 @@ const PAIR_COLUMNS: [&str; 5] = ["id", "left_wheel", "right_wheel", "left_rail",
 
 /// Why the inputs of a fleet cannot be used.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum FleetError {
     /// A pairs file that is not one: the file, the line where known, what is wrong.
     Pairs {
@@ -175,6 +176,7 @@ pub enum FleetError {
 }
 
 /// What is wrong with a pairs file.
+#[non_exhaustive]
 #[derive(Debug, Clone, PartialEq)]
 pub enum PairsProblem {
     /// Not CSV (the parser's message).

@@ -349,6 +349,7 @@ impl Contact {
 
 /// Invalid input to the Hertz stage.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum HertzError {
     /// A value that must be finite is NaN or infinite.
     NonFinite {

@@ -91,6 +91,7 @@ pub struct FlangeDimensions {
 
 /// Why a profile's flange dimensions cannot be measured.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum DimensionError {
     /// The profile is a rail.
     NotAWheel {

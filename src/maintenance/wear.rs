@@ -60,6 +60,7 @@ pub struct RailWear {
 
 /// Why a rail's wear cannot be measured.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum WearError {
     /// A profile is a wheel.
     NotARail {

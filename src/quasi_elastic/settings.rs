@@ -40,6 +40,7 @@ pub(crate) const TRAPEZOID_STEP_RANGE_MM: (f64, f64) = (1e-4, 10.0);
 /// Why quasi-elastic settings are not accepted; each variant names the setting, so that a
 /// caller (the scene file) can name the key it came from.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum QuasiElasticSettingsError {
     /// eps outside `EPSILON_RANGE_MM` (or not finite).
     Epsilon {

@@ -34,6 +34,7 @@ pub struct RollSettings {
 
 /// Why roll-solver settings are not accepted.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum RollSettingsError {
     /// A tolerance that is not a finite number above 0 (the setting's name and value).
     NotPositive {

@@ -76,6 +76,7 @@ pub(crate) const DEFAULT_EPSILON_SENSITIVITY_MM: [f64; 5] = [0.001, 0.003, 0.01,
 
 /// An error in a scene: the file, the key (dotted path) where known, and what was expected.
 #[derive(Debug)]
+#[non_exhaustive]
 pub enum SceneError {
     /// The scene file could not be read.
     Io {

@@ -33,6 +33,7 @@ pub(crate) const INCLINATION_RANGE_RAD: (f64, f64) = (0.0, 0.2);
 /// Why a track layout or an inclination is not accepted. Each variant names the quantity,
 /// so that a caller (the scene file) can name the key it came from.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum LayoutError {
     /// An inclination's text is none of the accepted forms.
     InclinationText {

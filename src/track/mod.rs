@@ -36,6 +36,7 @@ pub(crate) use wheel::{WheelCell, WheelCells};
 
 /// Why a rail could not be placed.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum PlacementError {
     /// The profile has no point within the gauge-point depth below its top.
     NoGaugePoint {

@@ -48,6 +48,7 @@ impl fmt::Display for Axis {
 /// `line`, so that [`Display`](fmt::Display) reads like a compiler message:
 /// `profiles/w.csv:12: non-numeric value "abc" in column 2 (expected a number in mm)`.
 #[derive(Debug)]
+#[non_exhaustive]
 pub enum ReadError {
     /// The file could not be read from disk.
     Io {

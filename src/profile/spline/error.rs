@@ -4,6 +4,7 @@ use std::fmt;
 
 /// Why a spline could not be fitted.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum SplineError {
     /// Fewer than two points.
     TooFewPoints {
