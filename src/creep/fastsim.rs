@@ -391,10 +391,9 @@ impl Strips {
     /// One step of the four strips to the cell centre `centre` (in cells from the leading
     /// edge): the rigid slip integrated over the step (`sy = η/L2`, `sphi = φ/L3`), the
     /// traction scaled back onto `bound` where it slips, and the sums.
-    // Inlined always (and `TractionBound::at`): with a plain `#[inline]` the march of
-    // Kalker's scheme took 7 % longer (median 4.16 against 3.89 µs, `cargo bench --bench
-    // creep -- fastsim_kalker_scheme`, the two builds alternated), as fast as the
-    // unsplit loop otherwise.
+    // Inlined always (and `TractionBound::at`): the march of four strips is the innermost
+    // loop of every FASTSIM patch, and a plain `#[inline]` left the call in Kalker's
+    // scheme (`cargo bench --bench creep -- fastsim_kalker_scheme` compares the two).
     #[inline(always)]
     fn step(
         &mut self,

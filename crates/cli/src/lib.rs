@@ -290,8 +290,8 @@ fn report(
 
 /// The number of threads rayon's global pool starts with, by rayon's own rule
 /// (`RAYON_NUM_THREADS` when a positive number, else the available parallelism), found
-/// without starting the pool: asking rayon would spawn its threads, 0.13 ms of a 6 ms
-/// report on one thread (medians of 100 interleaved runs).
+/// without starting the pool: asking rayon would spawn its threads, which a run on one
+/// thread does not need.
 fn pool_threads() -> usize {
     std::env::var("RAYON_NUM_THREADS")
         .ok()

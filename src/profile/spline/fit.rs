@@ -85,8 +85,7 @@ fn second_derivatives(h: &[f64], y: &[f64], lambda: f64) -> Result<Vec<f64>, Spl
     // row by row as each row is made: the same operations in the same order as building
     // the matrix, factoring it and substituting one after the other (the test
     // `one_pass_solve_is_the_textbook_solve_to_the_bit`), without keeping the matrix: 5
-    // vectors of n and 3 passes fewer, the two 1001-point EN 15302 fits 0.76 -> 0.65 M
-    // instructions (callgrind).
+    // vectors of n and 3 passes fewer.
     let mut l1 = vec![0.0; m];
     let mut l2 = vec![0.0; m];
     // The solution in gamma[1..=m]: first the forward substitution's values divided by D.
