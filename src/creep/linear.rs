@@ -11,7 +11,7 @@
 //! ```
 //!
 //! The forces grow without bound: this is the slope every saturating model must start
-//! with (tests `small_creepage_tends_to_linear_theory` in `tests/creep.rs`). The spin moment
+//! with (tests `small_creepage_tends_to_linear_theory` in `tests/creep_theory.rs`). The spin moment
 //! `Mz = G c³ C23 η - G c⁴ C33 φ` needs `C33`, which the committed copy of Table E.3 does not
 //! hold: `mz_nmm` is NaN rather than a number without a source.
 

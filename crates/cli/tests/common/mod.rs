@@ -5,6 +5,8 @@
 #[path = "../../../../tests/common/mod.rs"]
 mod shared;
 
+pub mod fleet;
+
 pub use shared::*;
 use std::path::Path;
 use std::process::{Command, Output};
