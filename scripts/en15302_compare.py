@@ -17,7 +17,7 @@ across a contact-point jump). Prints the largest |delta_r_run - delta_r_annexE|:
 * inner: over |y| <= inner-mm (5), leaving out positions within exclude-mm (0.3) of a jump
   of the Annex E table itself: a step between neighbouring points more than jump-ratio (20)
   times the larger adjacent step, placed at the middle of its interval (the rule of
-  tests/en15302.rs);
+  crates/cli/tests/en15302.rs);
 * inner, all points: the same without leaving anything out;
 * whole: over the whole table (-6.8..6.8 mm), nothing left out;
 * whole, jumps excluded.

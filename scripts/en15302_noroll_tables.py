@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes tests/data/en15302/noroll/E{1..9}_delta_r.csv: the rolling radius difference of the
 nine EN 15302 reference cases by the independent no-roll model of scripts/en15302_noroll.py,
-as tests/en15302.rs compares wheelrail's with it.
+as crates/cli/tests/en15302.rs compares wheelrail's with it.
 
 Usage (from the project's root; Python 3 standard library; a few minutes):
     python3 scripts/en15302_noroll_tables.py

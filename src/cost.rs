@@ -27,7 +27,7 @@ const CSV_BYTES_PER_VALUE: f64 = 15.0;
 /// Values per row of the tables that have one row per position (`outputs::tables`: the
 /// column counts of `rigid.csv`, `quasi_elastic.csv`, `hertz.csv`; `qe_epsilon.csv` has
 /// 4 plus 2 per value of eps). The counts are upper ones, so the estimate errs high
-/// (`tests/robustness.rs` holds it above what a long sweep writes, by less than a third).
+/// (`crates/cli/tests/robustness.rs` holds it above what a long sweep writes, by less than a third).
 const RIGID_VALUES: f64 = 30.0;
 const QUASI_ELASTIC_VALUES: f64 = 25.0;
 const HERTZ_VALUES: f64 = 17.0;

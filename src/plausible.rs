@@ -175,7 +175,7 @@ impl fmt::Display for Implausible {
 impl std::error::Error for Implausible {}
 
 /// The wheel load of a scene (`load.wheel_load_kN`, kN): 1 N, the lower end of the loads the
-/// Hertz solution is tested at (`tests/stress.rs`; a lighter wheel only touches its rail),
+/// Hertz solution is tested at (`tests/stress_hertz.rs`; a lighter wheel only touches its rail),
 /// to 1 MN, ten times the heaviest axle loads. A value above reads as newtons.
 pub const WHEEL_LOAD_KN: Range = Range {
     what: "a wheel load",

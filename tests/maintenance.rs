@@ -154,7 +154,7 @@ fn measured_wheels_match_the_independent_script() {
     assert_eq!((compared, undefined), (304, 1));
 }
 
-/// The committed example fleet (`reports/fleet/fleet.csv`, which `tests/fleet.rs` checks is
+/// The committed example fleet (`reports/fleet/fleet.csv`, which `crates/cli/tests/fleet.rs` checks is
 /// what the fleet writes) reports the script's dimensions for each of its wheels, matched
 /// by the SHA-256 of the file: within the script's rounding and the table's ten
 /// significant digits, NaN where the script finds no flange to measure.

@@ -21,7 +21,7 @@
 //! `V_r = ½ t_x·(v_c - ω e × d) ≈ ½ (V + ω r)`. Dividing by `V` instead would differ by the
 //! factor `1 + ξ/2`: 1.1 % at the 2.3 % longitudinal creepage of A-2.2's left wheel at 8 mm,
 //! where CONTACT's creepages agree with `V_r` to 0.13 % (test
-//! `manchester_creepages_from_the_motion` in `tests/creep.rs`).
+//! `manchester_creepages_from_the_motion` in `crates/cli/tests/creep.rs`).
 //!
 //! # Frames and signs
 //!

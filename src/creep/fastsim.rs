@@ -79,7 +79,7 @@
 //! FASTSIM is an approximation of Kalker's exact theory. On CONTACT's FASTSIM example
 //! (`a = 8, b = 4` mm, FN = 82 kN, η = -6.25e-4, φ = 6.25e-4 /mm) the parabolic bound gives
 //! `Fy` 5.7 % above CONTACT's exact solution in magnitude and the spin moment 22 % below it;
-//! the elliptic bound 2.5 % and 7.1 % below (test `fastsim_example` in `tests/creep.rs`).
+//! the elliptic bound 2.5 % and 7.1 % below (test `fastsim_example` in `crates/cli/tests/creep.rs`).
 
 use super::coefficients::{self, Coefficients};
 use super::creepage::Creepages;

@@ -13,7 +13,7 @@ use wheelrail_report::{Tolerance, TolerancePolicy, compare_files};
 /// The tolerances of golden comparisons: what the results may differ by on another platform
 /// (another C library's `sin`, `cos`, `exp` and `sqrt` differ by an ulp; the code is the
 /// same). A rounding-level perturbation of that kind, the paper scene's mirrored half solved
-/// position by position instead of mirrored (`tests/golden_tolerances.rs`, which checks that
+/// position by position instead of mirrored (`crates/cli/tests/golden_tolerances.rs`, which checks that
 /// this policy accepts it), moves lengths by at most 1.4e-11 mm, angles 5e-14 rad,
 /// curvatures 6e-16 1/mm, pressures and loads 1e-12 relative and iteration counts by one,
 /// outside the conformal region below. The tolerances are about a hundred times that, and

@@ -135,7 +135,7 @@ fn the_committed_reports_regenerate() {
         let scene = dir.join("scene.toml");
         let name = dir.file_name().unwrap().to_string_lossy().into_owned();
         if !scene.exists() || name == "fleet" {
-            continue; // the fleet has its own test (tests/fleet.rs)
+            continue; // the fleet has its own test (fleet.rs)
         }
         let out = scratch(&format!("committed_{name}"));
         for tradeoff in TRADEOFF_FILES {
